@@ -1,0 +1,348 @@
+package gfx.tick1.scene;
+
+import gfx.tick1.math.Vector3;
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.regex.Pattern;
+import javax.xml.XMLConstants;
+import javax.xml.parsers.ParserConfigurationException;
+import javax.xml.parsers.SAXParser;
+import javax.xml.parsers.SAXParserFactory;
+import org.xml.sax.Attributes;
+import org.xml.sax.InputSource;
+import org.xml.sax.Locator;
+import org.xml.sax.SAXException;
+import org.xml.sax.SAXParseException;
+import org.xml.sax.helpers.DefaultHandler;
+
+/**
+ * Reads a Tick 1 scene file: {@code <scene>} holding {@code sphere}, {@code ambient-light} and
+ * {@code point-light} elements, read in document order at any depth.
+ *
+ * <p>Defaults are the starter code's (x, y, z = 0; radius = 1; intensity = 100; no ambient-light
+ * means white ambient light; of several point lights the last is kept). Where the starter code
+ * silently used a default for an unparsable number, or crashed on a bad colour, this loader
+ * rejects the file with one line naming the file, line and column, and what it expected.
+ *
+ * <p>It parses with the JDK's SAX parser rather than DOM because SAX reports where each element
+ * is, and a DOM tree forgets it. The parser refuses any DOCTYPE, which closes off external
+ * entities and entity-expansion bombs at once (OWASP's XXE advice for the JDK).
+ */
+public final class SceneLoader {
+
+    /** Files larger than this are refused before parsing. */
+    public static final long MAX_FILE_BYTES = 64L * 1024 * 1024;
+    /** Scenes with more elements than this are refused rather than exhausting memory. */
+    public static final int MAX_ELEMENTS = 1_000_000;
+    /** The largest magnitude accepted for any coordinate, radius or intensity. */
+    public static final double MAX_MAGNITUDE = 1e9;
+
+    private static final Map<String, Set<String>> ATTRIBUTES = Map.of(
+            "sphere", Set.of("x", "y", "z", "radius", "colour"),
+            "point-light", Set.of("x", "y", "z", "colour", "intensity"),
+            "ambient-light", Set.of("colour"));
+
+    // A plain decimal number as people write it in a scene file. Java's own parser would also
+    // take "NaN", "0x1p3", "1d" and "Infinity", none of which belongs in a scene.
+    private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
+    private static final Pattern NON_FINITE = Pattern.compile("[+-]?(nan|inf|infinity)", Pattern.CASE_INSENSITIVE);
+    private static final Pattern COLOUR = Pattern.compile("#[0-9A-Fa-f]{6}");
+
+    private final String fileName;
+    private final boolean strict;
+    private final Scene scene = new Scene();
+    private final List<String> warnings = new ArrayList<>();
+
+    /** The starter code's constructor: loads the file or throws {@link SceneException}. */
+    public SceneLoader(String filename) {
+        this(toPath(filename), false);
+    }
+
+    /** Loads {@code file}; with {@code strict}, anything that would be a warning is an error. */
+    public SceneLoader(Path file, boolean strict) {
+        this.fileName = file.toString();
+        this.strict = strict;
+        byte[] bytes = readBounded(file);
+        parse(bytes);
+    }
+
+    public Scene getScene() {
+        return scene;
+    }
+
+    /** One line each, in the same file:line:column form as errors; the render goes on. */
+    public List<String> getWarnings() {
+        return List.copyOf(warnings);
+    }
+
+    private static Path toPath(String filename) {
+        try {
+            return Path.of(filename);
+        } catch (InvalidPathException e) {
+            throw new SceneException(filename + ": not a valid file name");
+        }
+    }
+
+    private byte[] readBounded(Path file) {
+        try {
+            if (Files.isDirectory(file)) {
+                throw new SceneException(fileName + ": is a directory, expected a scene file");
+            }
+            long size = Files.size(file);
+            if (size > MAX_FILE_BYTES) {
+                throw new SceneException(fileName + ": file is " + size + " bytes, expected at most "
+                        + MAX_FILE_BYTES + " (64 MiB)");
+            }
+            try (InputStream in = Files.newInputStream(file)) {
+                // Read one byte past the limit in case the file grew after it was measured.
+                byte[] bytes = in.readNBytes((int) MAX_FILE_BYTES + 1);
+                if (bytes.length > MAX_FILE_BYTES) {
+                    throw new SceneException(fileName + ": file is larger than " + MAX_FILE_BYTES + " bytes (64 MiB)");
+                }
+                return bytes;
+            }
+        } catch (NoSuchFileException e) {
+            throw new SceneException(fileName + ": no such file");
+        } catch (AccessDeniedException e) {
+            throw new SceneException(fileName + ": permission denied");
+        } catch (IOException e) {
+            throw new SceneException(fileName + ": cannot read: " + e.getMessage());
+        }
+    }
+
+    private void parse(byte[] bytes) {
+        if (bytes.length == 0) {
+            throw new SceneException(fileName + ": file is empty, expected a <scene> element");
+        }
+        SourcePositions positions = new SourcePositions(decodeLeniently(bytes));
+        try {
+            InputSource source = new InputSource(new ByteArrayInputStream(bytes));
+            newSecureParser().parse(source, new Handler(positions));
+        } catch (SceneException e) {
+            throw e;
+        } catch (SAXParseException e) {
+            throw new SceneException(fileName + ":" + e.getLineNumber() + ":" + e.getColumnNumber()
+                    + ": " + describeParseError(e));
+        } catch (SAXException | IOException | ParserConfigurationException e) {
+            throw new SceneException(fileName + ": malformed XML: " + oneLine(e.getMessage()));
+        }
+    }
+
+    private static String decodeLeniently(byte[] bytes) {
+        try {
+            return StandardCharsets.UTF_8.newDecoder()
+                    .onMalformedInput(CodingErrorAction.REPLACE)
+                    .onUnmappableCharacter(CodingErrorAction.REPLACE)
+                    .decode(java.nio.ByteBuffer.wrap(bytes)).toString();
+        } catch (java.nio.charset.CharacterCodingException e) {
+            return "";
+        }
+    }
+
+    private static SAXParser newSecureParser() throws ParserConfigurationException, SAXException {
+        SAXParserFactory factory = SAXParserFactory.newInstance();
+        factory.setNamespaceAware(false);
+        factory.setValidating(false);
+        factory.setXIncludeAware(false);
+        factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
+        factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+        factory.setFeature("http://xml.org/sax/features/external-general-entities", false);
+        factory.setFeature("http://xml.org/sax/features/external-parameter-entities", false);
+        factory.setFeature("http://apache.org/xml/features/nonvalidating/load-external-dtd", false);
+        return factory.newSAXParser();
+    }
+
+    private static String describeParseError(SAXParseException e) {
+        String message = oneLine(e.getMessage());
+        if (message.contains("disallow-doctype-decl") || message.contains("DOCTYPE")) {
+            return "DOCTYPE declaration: not allowed in scene files (no DTDs or entities), expected <scene>";
+        }
+        return "malformed XML: " + message;
+    }
+
+    private static String oneLine(String message) {
+        return message == null ? "unknown error" : message.replaceAll("\\s+", " ").trim();
+    }
+
+    /** Turns SAX events into scene objects, checking each element and attribute as it comes. */
+    private final class Handler extends DefaultHandler {
+
+        private final SourcePositions positions;
+        private Locator locator;
+        private int depth;
+        private int elements;
+        private boolean seenPointLight;
+
+        Handler(SourcePositions positions) {
+            this.positions = positions;
+        }
+
+        @Override
+        public void setDocumentLocator(Locator locator) {
+            this.locator = locator;
+        }
+
+        @Override
+        public void startElement(String uri, String localName, String name, Attributes attributes) {
+            SourcePositions.Position at = positions.tagStart(locator.getLineNumber(), locator.getColumnNumber());
+            depth++;
+            if (++elements > MAX_ELEMENTS) {
+                throw error(at, "more than " + MAX_ELEMENTS + " elements: scene is too large");
+            }
+            if (depth == 1) {
+                if (!name.equals("scene")) {
+                    throw error(at, "root element <" + name + ">: expected <scene>");
+                }
+                checkAttributes(at, name, attributes, Set.of());
+                return;
+            }
+            if (!ATTRIBUTES.containsKey(name)) {
+                throw error(at, "unknown element <" + name + ">: expected sphere, ambient-light or point-light");
+            }
+            if (depth > 2) {
+                warn(at, "<" + name + "> is nested inside another element: read as if directly inside <scene>");
+            }
+            checkAttributes(at, name, attributes, ATTRIBUTES.get(name));
+            switch (name) {
+                case "sphere" -> scene.addObject(new Sphere(position(at, name, attributes),
+                        positiveNumber(at, name, attributes, "radius", 1), colour(at, name, attributes)));
+                case "ambient-light" -> scene.setAmbientLight(colour(at, name, attributes));
+                case "point-light" -> {
+                    if (seenPointLight) {
+                        warn(at, "another <point-light>: Tick 1 models one light, the last one in the file is used");
+                    }
+                    seenPointLight = true;
+                    scene.setPointLight(new PointLight(position(at, name, attributes), colour(at, name, attributes),
+                            nonNegativeNumber(at, name, attributes, "intensity", 100)));
+                }
+                default -> throw new IllegalStateException(name);
+            }
+        }
+
+        @Override
+        public void endElement(String uri, String localName, String name) {
+            depth--;
+        }
+
+        @Override
+        public void endDocument() {
+            if (!seenPointLight) {
+                warn(null, "no <point-light>: the spheres are lit by the ambient light only");
+            }
+        }
+
+        private void checkAttributes(SourcePositions.Position at, String element, Attributes attributes,
+                Set<String> known) {
+            for (int i = 0; i < attributes.getLength(); i++) {
+                String attribute = attributes.getQName(i);
+                if (!known.contains(attribute)) {
+                    warn(positions.attribute(at, attribute), element + " attribute \"" + attribute
+                            + "\": not part of Tick 1 scenes, ignored"
+                            + (known.isEmpty() ? "" : " (expected " + String.join(", ", sorted(known)) + ")"));
+                }
+            }
+        }
+
+        private Vector3 position(SourcePositions.Position at, String element, Attributes attributes) {
+            return new Vector3(number(at, element, attributes, "x", 0), number(at, element, attributes, "y", 0),
+                    number(at, element, attributes, "z", 0));
+        }
+
+        private double positiveNumber(SourcePositions.Position at, String element, Attributes attributes,
+                String attribute, double fallback) {
+            double value = number(at, element, attributes, attribute, fallback);
+            if (!(value > 0)) {
+                throw attributeError(at, element, attribute, attributes.getValue(attribute),
+                        "must be a number greater than 0");
+            }
+            return value;
+        }
+
+        private double nonNegativeNumber(SourcePositions.Position at, String element, Attributes attributes,
+                String attribute, double fallback) {
+            double value = number(at, element, attributes, attribute, fallback);
+            if (value < 0) {
+                throw attributeError(at, element, attribute, attributes.getValue(attribute),
+                        "must be a number of at least 0");
+            }
+            return value;
+        }
+
+        private double number(SourcePositions.Position at, String element, Attributes attributes, String attribute,
+                double fallback) {
+            String text = attributes.getValue(attribute);
+            if (text == null) {
+                return fallback;
+            }
+            String trimmed = text.strip();
+            if (NON_FINITE.matcher(trimmed).matches()) {
+                throw attributeError(at, element, attribute, text, "must be a finite decimal number");
+            }
+            if (!DECIMAL.matcher(trimmed).matches()) {
+                throw attributeError(at, element, attribute, text, "must be a decimal number such as 1.5 or -2e3");
+            }
+            double value = Double.parseDouble(trimmed);
+            if (!(Math.abs(value) <= MAX_MAGNITUDE)) {
+                throw attributeError(at, element, attribute, text,
+                        "must be a number between -1e9 and 1e9 (the range the renderer is tested for)");
+            }
+            return value;
+        }
+
+        private Vector3 colour(SourcePositions.Position at, String element, Attributes attributes) {
+            String text = attributes.getValue("colour");
+            if (text == null) {
+                throw error(at, element + " has no colour: expected colour=\"#RRGGBB\"");
+            }
+            if (!COLOUR.matcher(text).matches()) {
+                throw attributeError(at, element, "colour", text,
+                        "must be # followed by six hexadecimal digits, as in #FF8800");
+            }
+            // Each channel is value / 255.0 (the starter code's conversion).
+            int rgb = Integer.parseInt(text.substring(1), 16);
+            return new Vector3((rgb >> 16 & 0xFF) / 255.0, (rgb >> 8 & 0xFF) / 255.0, (rgb & 0xFF) / 255.0);
+        }
+
+        private SceneException attributeError(SourcePositions.Position at, String element, String attribute,
+                String value, String expected) {
+            return error(positions.attribute(at, attribute), element + " " + attribute + " \"" + printable(value)
+                    + "\": " + expected);
+        }
+
+        private SceneException error(SourcePositions.Position at, String message) {
+            return new SceneException(fileName + (at == null ? "" : ":" + at) + ": " + message);
+        }
+
+        private void warn(SourcePositions.Position at, String message) {
+            if (strict) {
+                throw error(at, message + " (an error under --strict)");
+            }
+            warnings.add(fileName + (at == null ? "" : ":" + at) + ": warning: " + message);
+        }
+    }
+
+    private static List<String> sorted(Set<String> names) {
+        List<String> list = new ArrayList<>(names);
+        list.sort(null);
+        return list;
+    }
+
+    /** Keeps a quoted value on one short line, whatever the file held. */
+    private static String printable(String value) {
+        String flat = value.replaceAll("\\p{Cntrl}", "?");
+        return flat.length() <= 40 ? flat : flat.substring(0, 37) + "...";
+    }
+
+}
