@@ -25,8 +25,11 @@ public final class Camera {
     }
 
     /**
-     * The unit ray through the centre of pixel (x, y), y = 0 being the top row: half a step in
-     * from the plane's left edge, then whole steps; the same from the top edge downwards.
+     * The unit ray for pixel (x, y), y = 0 being the top row. Across, it passes through the
+     * pixel's centre: half a step in from the left edge, then whole steps. Down, the starter
+     * code starts at (y_step + height_m) / 2, half a step above the top edge, so every row is
+     * cast one step higher than its centre. That is kept on purpose: the handout's figures are
+     * reproduced pixel for pixel only with it.
      */
     public Ray castRay(int x, int y) {
         double x_pos = (x_step_m - width_m) / 2 + x * x_step_m;
