@@ -1,7 +1,8 @@
 package gfx.tick1;
 
+import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.PngOutput;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
@@ -62,6 +63,12 @@ public final class Tick1 implements Callable<Integer> {
     @Option(names = "--height", paramLabel = "PIXELS", defaultValue = "480",
             description = "Image height (default: ${DEFAULT-VALUE}, at most " + MAX_DIMENSION + ").")
     private int height;
+
+    @Option(names = "--samples", paramLabel = "N", defaultValue = "1",
+            description = "Rays per pixel, averaged before the conversion to bytes (default: ${DEFAULT-VALUE}, the "
+                    + "faithful image through pixel centres; at most " + SamplePattern.MAX_SAMPLES + "). The same "
+                    + "image on every run.")
+    private int samples;
 
     @Option(names = "--threads", paramLabel = "N",
             description = "Threads to render with (default: all ${sys:tick1.cores} cores). The image is the same "
@@ -144,6 +151,9 @@ public final class Tick1 implements Callable<Integer> {
         if (height < 1 || height > MAX_DIMENSION) {
             return "--height " + height + ": must be from 1 to " + MAX_DIMENSION;
         }
+        if (samples < 1 || samples > SamplePattern.MAX_SAMPLES) {
+            return "--samples " + samples + ": must be from 1 to " + SamplePattern.MAX_SAMPLES;
+        }
         int cores = Runtime.getRuntime().availableProcessors();
         if (threads != null && (threads < 1 || threads > 256)) {
             return "--threads " + threads + ": must be from 1 to 256";
@@ -163,7 +173,7 @@ public final class Tick1 implements Callable<Integer> {
     }
 
     private BufferedImage render(Scene scene, PrintWriter err) {
-        Renderer renderer = new Renderer(width, height);
+        FastRenderer renderer = new FastRenderer(width, height, new SamplePattern(samples));
         Progress progress = new Progress(err, height, !quiet && System.console() != null);
         ForkJoinPool pool = new ForkJoinPool(threads);
         try {
