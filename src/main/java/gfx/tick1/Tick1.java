@@ -81,6 +81,11 @@ public final class Tick1 implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
     private boolean quiet;
 
+    @Option(names = "--timings", hidden = true, description = "Print where the run's time went.")
+    private boolean showTimings;
+
+    private final Timings timings = new Timings();
+
     private final OutputStream binaryOut;
 
     public Tick1() {
@@ -93,6 +98,7 @@ public final class Tick1 implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
+        Timings.mainStarted();
         System.exit(commandLine(new Tick1()).execute(args));
     }
 
@@ -118,6 +124,7 @@ public final class Tick1 implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
+        timings.end("command line");
         String usage = checkOptions();
         if (usage != null) {
             err.println("tick1: " + usage + " (see tick1 --help)");
@@ -139,8 +146,15 @@ public final class Tick1 implements Callable<Integer> {
             return EXIT_BAD_SCENE;
         }
 
+        timings.end("scene");
         BufferedImage image = render(scene, err);
-        return write(image, err);
+        timings.end("render");
+        int status = write(image, err);
+        timings.end("png");
+        if (showTimings) {
+            timings.print(err);
+        }
+        return status;
     }
 
     /** Checks what picocli's types cannot: ranges, and that the frame fits in memory. */

@@ -93,18 +93,23 @@ final class SphereBvh {
 
     /**
      * The index of the sphere the ray from the origin along unit D meets first, or -1.
-     * {@code stack} is scratch space of at least 64 entries, one per thread.
+     * {@code nodeStack} and {@code entryStack} are scratch space of at least 64 entries each,
+     * one pair per thread: the nodes still to visit and where the ray enters their boxes.
      */
-    int closest(double dx, double dy, double dz, double a, int[] stack) {
+    int closest(double dx, double dy, double dz, double a, int[] nodeStack, double[] entryStack) {
         double invX = 1 / dx, invY = 1 / dy, invZ = 1 / dz;
         double best = Double.POSITIVE_INFINITY;
         int winner = -1;
         int top = 0;
-        stack[top++] = 0;
+        double rootEntry = entry(0, invX, invY, invZ);
+        if (rootEntry == rootEntry) { // not NaN: the ray meets the root box
+            nodeStack[top] = 0;
+            entryStack[top++] = rootEntry;
+        }
         while (top > 0) {
-            int node = stack[--top];
-            if (!(entry(node, invX, invY, invZ) <= best)) { // a miss is NaN, never <= best
-                continue;
+            int node = nodeStack[--top];
+            if (entryStack[top] > best) {
+                continue; // found something nearer since this node was pushed
             }
             int n = count[node];
             if (n > 0) {
@@ -116,16 +121,27 @@ final class SphereBvh {
                         winner = i;
                     }
                 }
-            } else {
-                // Visit the nearer child first so that the far one is more often pruned.
-                int near = node + 1, far = right[node];
-                if (entry(far, invX, invY, invZ) < entry(near, invX, invY, invZ)) { // false on NaN: order kept
-                    int swap = near;
-                    near = far;
-                    far = swap;
-                }
-                stack[top++] = far;
-                stack[top++] = near;
+                continue;
+            }
+            int near = node + 1, far = right[node];
+            double nearEntry = entry(near, invX, invY, invZ), farEntry = entry(far, invX, invY, invZ);
+            if (farEntry < nearEntry) {
+                int swap = near;
+                near = far;
+                far = swap;
+                double swapEntry = nearEntry;
+                nearEntry = farEntry;
+                farEntry = swapEntry;
+            }
+            // Push the far child first so that the near one is visited first; a miss (NaN) or a
+            // box that starts beyond the best hit is not pushed at all.
+            if (farEntry <= best) {
+                nodeStack[top] = far;
+                entryStack[top++] = farEntry;
+            }
+            if (nearEntry <= best) {
+                nodeStack[top] = near;
+                entryStack[top++] = nearEntry;
             }
         }
         return winner;
