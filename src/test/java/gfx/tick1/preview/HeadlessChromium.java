@@ -37,11 +37,18 @@ final class HeadlessChromium implements AutoCloseable {
         this.profile = profile;
     }
 
-    /** Starts the browser, or skips the calling tests (a JUnit assumption) when it is not installed. */
-    static HeadlessChromium startOrSkip() throws IOException {
-        assumeTrue(Files.isExecutable(CHROMIUM) && Files.isExecutable(CHROMEDRIVER),
-                "browser tests skipped: no " + CHROMIUM + " or " + CHROMEDRIVER
-                        + "; enable them with: apt-get install chromium chromium-driver");
+    static boolean isInstalled() {
+        return Files.isExecutable(CHROMIUM) && Files.isExecutable(CHROMEDRIVER);
+    }
+
+    /** Skips the calling test (a JUnit assumption, so it is reported as skipped) when there is no browser. */
+    static void assumeInstalled() {
+        assumeTrue(isInstalled(), "browser test skipped: no " + CHROMIUM + " or " + CHROMEDRIVER
+                + "; enable the browser tests with: apt-get install chromium chromium-driver");
+    }
+
+    /** Starts the browser; see {@link #isInstalled()}. */
+    static HeadlessChromium start() throws IOException {
         System.setProperty(ChromeDriverService.CHROME_DRIVER_EXE_PROPERTY, CHROMEDRIVER.toString());
         ChromeDriverService service = new ChromeDriverService.Builder()
                 .usingDriverExecutable(CHROMEDRIVER.toFile())
