@@ -191,7 +191,8 @@ function sunTexture(colour) {
 
 /** Points the orbit camera at the scene from behind, above and to the left of the tick's camera, as the course's previewer does. */
 function frame(spheres, light) {
-  const box = new THREE.Box3().setFromPoints([new THREE.Vector3(), new THREE.Vector3(0, 0, -1)]);
+  // At least the camera and the space just in front of it, where the tick's scenes usually are.
+  const box = new THREE.Box3().setFromPoints([toThree([-1, -1, 0]), toThree([1, 1, 5])]);
   for (const s of spheres) {
     box.union(new THREE.Box3().setFromCenterAndSize(toThree(s.position), new THREE.Vector3().setScalar(2 * s.radius)));
   }
@@ -239,8 +240,10 @@ function showImage(blob, name) {
   if (!blob) {
     raytraced.removeAttribute('src');
     raytracedLink.removeAttribute('href');
+    raytracedCaption.textContent = 'Ray traced by tick1';
     return;
   }
+  raytracedCaption.textContent = 'Ray traced by tick1 (click to save)';
   const url = URL.createObjectURL(blob);
   raytraced.onload = () => {
     body.dataset.rendered = name;
@@ -281,11 +284,11 @@ async function load(name, request) {
     const render = await request('/api/render');
     if (mine !== generation) return;
     if (!render.ok) {
+      showImage(null);
       showMessage('error', [(await render.json()).error]);
       body.dataset.status = 'error';
       return;
     }
-    raytracedCaption.textContent = 'Ray traced by tick1 (640 x 480): click to save';
     showImage(await render.blob(), description.name);
   } catch (error) {
     if (mine !== generation) return;
