@@ -22,6 +22,7 @@ import picocli.CommandLine.Spec;
 /** {@code tick1 preview}: a web page on this machine that shows a scene in 3D beside its ray-traced image. */
 @Command(name = "preview", mixinStandardHelpOptions = true, versionProvider = Version.class,
         sortOptions = false, usageHelpAutoWidth = true,
+        header = "Shows a scene in 3D in the browser, beside its ray-traced image.",
         description = {
             "Serves a page, to this machine only, that shows a scene in 3D (ground grid, axes, the camera, "
                     + "the light, the spheres) with what the camera sees and the ray-traced image beside it. "
@@ -29,7 +30,6 @@ import picocli.CommandLine.Spec;
             "Runs until interrupted (Ctrl-C)."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {
-            "0:the previewer was stopped",
             "1:SCENE.xml does not exist",
             "2:the command line is wrong, or the port cannot be used"})
 public final class Preview implements Callable<Integer> {
