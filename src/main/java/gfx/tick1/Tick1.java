@@ -1,5 +1,7 @@
 package gfx.tick1;
 
+import gfx.tick1.compare.CompareCommand;
+import gfx.tick1.diagnose.DiagnoseCommand;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.scene.Scene;
@@ -23,6 +25,7 @@ import picocli.CommandLine.Spec;
 /** The command line: renders a Tick 1 scene file to a PNG image. */
 @Command(name = "tick1", mixinStandardHelpOptions = true, versionProvider = Version.class,
         sortOptions = false, usageHelpAutoWidth = true,
+        subcommands = {CompareCommand.class, DiagnoseCommand.class},
         description = "Renders a Tick 1 scene (spheres, an ambient light, one point light, Phong shading) "
                 + "to a PNG image, pixel for pixel as the Cambridge Computer Graphics course expects.",
         exitCodeListHeading = "%nExit status:%n",
@@ -95,7 +98,8 @@ public final class Tick1 implements Callable<Integer> {
         CommandLine commandLine = new CommandLine(command);
         commandLine.setParameterExceptionHandler((e, args) -> {
             PrintWriter err = e.getCommandLine().getErr();
-            err.println("tick1: " + e.getMessage() + " (see tick1 --help)");
+            String name = e.getCommandLine().getCommandSpec().qualifiedName();
+            err.println(name + ": " + e.getMessage() + " (see " + name + " --help)");
             err.flush();
             return EXIT_USAGE;
         });
