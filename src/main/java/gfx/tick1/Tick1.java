@@ -2,11 +2,13 @@ package gfx.tick1;
 
 import gfx.tick1.compare.CompareCommand;
 import gfx.tick1.diagnose.DiagnoseCommand;
+import gfx.tick1.grade.GradeCommand;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
+import gfx.tick1.starter.StarterCommand;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -25,7 +27,7 @@ import picocli.CommandLine.Spec;
 /** The command line: renders a Tick 1 scene file to a PNG image. */
 @Command(name = "tick1", mixinStandardHelpOptions = true, versionProvider = Version.class,
         sortOptions = false, usageHelpAutoWidth = true,
-        subcommands = {CompareCommand.class, DiagnoseCommand.class},
+        subcommands = {CompareCommand.class, DiagnoseCommand.class, GradeCommand.class, StarterCommand.class},
         description = "Renders a Tick 1 scene (spheres, an ambient light, one point light, Phong shading) "
                 + "to a PNG image, pixel for pixel as the Cambridge Computer Graphics course expects.",
         exitCodeListHeading = "%nExit status:%n",
