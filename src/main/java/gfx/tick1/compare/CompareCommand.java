@@ -79,14 +79,19 @@ public final class CompareCommand implements Callable<Integer> {
             out.println("heat map: " + heatMapFile);
         }
         boolean same = difference.isWithin(tolerance);
-        out.println(same ? verdictSame(difference) : "DIFFERENT: some pixels differ by more than " + tolerance
-                + (tolerance == 1 ? " level" : " levels"));
+        out.println(same ? verdictSame(difference) : verdictDifferent(difference));
         return same ? EXIT_SAME : EXIT_DIFFERENT;
     }
 
     private String verdictSame(ImageDifference difference) {
         return difference.differingPixels() == 0 ? "SAME: identical pixel for pixel"
                 : "SAME within the tolerance of " + tolerance + (tolerance == 1 ? " level" : " levels");
+    }
+
+    private String verdictDifferent(ImageDifference difference) {
+        int beyond = difference.totalPixels() - difference.pixelsWithin(tolerance);
+        return "DIFFERENT: " + beyond + (beyond == 1 ? " pixel differs" : " pixels differ")
+                + (tolerance == 0 ? "" : " by more than " + tolerance + (tolerance == 1 ? " level" : " levels"));
     }
 
     /** The figures, one per line, in the order a person reads them. */

@@ -77,13 +77,16 @@ public final class StudentHarness {
         }
     }
 
-    /** The exception, then the stack frames in the starter and student code (package gfx.tick1). */
+    /**
+     * The exception, then its stack frames in the student's and the starter's code: the classes
+     * of package gfx.tick1 itself, not of this harness in gfx.tick1.grade.
+     */
     private static String describe(Throwable failure) {
         Throwable cause = failure instanceof StudentCodeException ? failure.getCause() : failure;
         List<String> lines = new ArrayList<>();
         lines.add(cause instanceof OutOfMemoryError ? cause + " (the memory limit was reached)" : cause.toString());
         for (StackTraceElement frame : cause.getStackTrace()) {
-            if (frame.getClassName().startsWith("gfx.tick1.") && lines.size() <= 8) {
+            if (frame.getClassName().matches("gfx\\.tick1\\.[^.]+") && lines.size() <= 8) {
                 lines.add("at " + frame);
             }
         }

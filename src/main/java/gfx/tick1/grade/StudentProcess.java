@@ -59,7 +59,7 @@ public final class StudentProcess {
                 "-XX:+UseSerialGC",               // one GC thread: the student's code is single-threaded
                 "-XX:TieredStopAtLevel=1",        // quick start; small renders are over before C2 pays
                 "-Djava.awt.headless=true",
-                "-cp", System.getProperty("java.class.path"),
+                "-cp", harnessClassPath(),
                 StudentHarness.class.getName(),
                 classes.toAbsolutePath().toString(), work.toAbsolutePath().toString(),
                 Integer.toString(width), Integer.toString(height)));
@@ -85,6 +85,18 @@ public final class StudentProcess {
             outcomes.add(outcome(work, i, progress, finished, process.exitValue()));
         }
         return new Result(outcomes, tail.text());
+    }
+
+    /**
+     * Where this program's classes are (its jar, or a classes folder in a build): the harness needs
+     * nothing else, and java.class.path is not it under every launcher (test runners, IDEs).
+     */
+    private static String harnessClassPath() throws IOException {
+        try {
+            return Path.of(StudentHarness.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
+        } catch (java.net.URISyntaxException | RuntimeException e) {
+            throw new IOException("cannot find this program's own classes to run the student's code with", e);
+        }
     }
 
     private Outcome outcome(Path work, int index, List<String> progress, boolean finished, int exitStatus)

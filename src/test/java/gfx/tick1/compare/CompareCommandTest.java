@@ -49,7 +49,7 @@ class CompareCommandTest {
         CliRun run = CliRun.of("compare", a.toString(), b.toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(CompareCommand.EXIT_DIFFERENT);
         assertThat(run.out()).contains("pixels differing: 1 of 48", "max difference:   R 0, G 0, B 6 levels",
-                "bounding box:     5,2 - 5,2", "DIFFERENT");
+                "bounding box:     5,2 - 5,2", "DIFFERENT: 1 pixel differs");
     }
 
     @Test
