@@ -57,6 +57,24 @@ class GradeCommandTest {
                 .doesNotContain("FAIL");
     }
 
+    /** The starter SceneLoader must read what the reference loader reads, defaults included. */
+    @Test
+    void theStarterLoaderReadsDefaultsNestingAndTheLastLightAsTheReferenceDoes() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Files.writeString(scenes.resolve("defaults.xml"), """
+                <scene>
+                  <point-light x="2" y="2" colour="#FF0000"/>
+                  <sphere z="5" colour="#00FF00">
+                    <sphere x="1.5" y="0.5" z="6" radius="0.5" colour="#0000FF"/>
+                  </sphere>
+                  <point-light x="-1" y="3" z="1" colour="#FFFFFF" intensity="80"/>
+                </scene>
+                """);
+        CliRun run = grade(StudentSolution.correct(), "--scenes", scenes.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("defaults.xml: PASS");
+    }
+
     /** Each mistake of the catalogue, made as a student would make it in Sphere.java or Renderer.java. */
     static Stream<Arguments> mistakes() {
         StudentSolution correct = StudentSolution.correct();
