@@ -96,6 +96,7 @@ public final class FastRenderer {
         private final SphereBvh tree;
         private final int[] nodeStack = new int[64];
         private final double[] entryStack = new double[64];
+        private final double[] inverse = new double[3];
         private double red, green, blue;
 
         Tracer(FlatScene scene, SphereBvh tree) {
@@ -132,7 +133,7 @@ public final class FastRenderer {
 
             int hit;
             if (tree != null) {
-                hit = tree.closest(dx, dy, dz, a, nodeStack, entryStack);
+                hit = tree.closest(dx, dy, dz, a, nodeStack, entryStack, inverse);
             } else {
                 hit = -1;
                 double best = Double.POSITIVE_INFINITY;
