@@ -2,6 +2,7 @@ package gfx.tick1;
 
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.render.Renderer;
+import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
@@ -68,6 +69,13 @@ public final class Tick1 implements Callable<Integer> {
                     + "for any number.")
     private Integer threads;
 
+    @Option(names = "--intersection", paramLabel = "METHOD", defaultValue = "robust",
+            description = "How rays meet spheres: robust (default: the handout's formula wherever it is accurate, "
+                    + "a numerically stable one where it is not, e.g. giant or far-away spheres), handout (the "
+                    + "handout's formula as it stands) or stable (the stable formula everywhere; not bit-identical "
+                    + "to the course's images). See docs/hard-cases.md.")
+    private Intersection intersection;
+
     @Option(names = "--strict", description = "Treat warnings about the scene file as errors.")
     private boolean strict;
 
@@ -93,6 +101,7 @@ public final class Tick1 implements Callable<Integer> {
     public static CommandLine commandLine(Tick1 command) {
         System.setProperty("tick1.cores", Integer.toString(Runtime.getRuntime().availableProcessors()));
         CommandLine commandLine = new CommandLine(command);
+        commandLine.setCaseInsensitiveEnumValuesAllowed(true);
         commandLine.setParameterExceptionHandler((e, args) -> {
             PrintWriter err = e.getCommandLine().getErr();
             err.println("tick1: " + e.getMessage() + " (see tick1 --help)");
@@ -163,7 +172,7 @@ public final class Tick1 implements Callable<Integer> {
     }
 
     private BufferedImage render(Scene scene, PrintWriter err) {
-        Renderer renderer = new Renderer(width, height);
+        Renderer renderer = new Renderer(width, height, intersection);
         Progress progress = new Progress(err, height, !quiet && System.console() != null);
         ForkJoinPool pool = new ForkJoinPool(threads);
         try {

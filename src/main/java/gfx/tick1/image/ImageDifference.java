@@ -56,6 +56,23 @@ public final class ImageDifference {
         return differingPixels;
     }
 
+    /** How many pixels differ by more than {@code levels} in some channel. */
+    public int pixelsDifferingByMoreThan(int levels) {
+        int count = 0;
+        for (int y = 0; y < expected.getHeight(); y++) {
+            for (int x = 0; x < expected.getWidth(); x++) {
+                int a = expected.getRGB(x, y), b = actual.getRGB(x, y);
+                for (int shift = 0; shift <= 16; shift += 8) {
+                    if (Math.abs((a >> shift & 0xFF) - (b >> shift & 0xFF)) > levels) {
+                        count++;
+                        break;
+                    }
+                }
+            }
+        }
+        return count;
+    }
+
     /** The largest difference in any channel of any pixel, in levels (0 to 255). */
     public int maxDifference() {
         return maxDifference;
