@@ -7,6 +7,7 @@ import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
 import java.awt.image.BufferedImage;
+import java.math.BigDecimal;
 import java.util.stream.IntStream;
 
 /**
@@ -17,7 +18,7 @@ import java.util.stream.IntStream;
  * exactly as {@link Camera#castRay} rounds it (that rounding is part of the spec, and a ray that
  * grazes a sphere within an ulp of its direction would otherwise decide hit or miss by chance).
  * From there it follows the spec's formulas literally, without any of the robust renderer's care,
- * in {@link DoubleDouble} arithmetic (106 bits): the handout's quadratic, the normal
+ * in {@link DoubleDouble} arithmetic (106 bits; c = |O - C|^2 - r^2 exactly): the quadratic, the normal
  * normalise(P - C), and Phong shading, truncating each channel of the exact colour. Cancellation
  * that costs a double all its 53 bits still leaves this about 50, which is far more than an 8-bit
  * pixel needs; {@code TruthRendererTest} checks it against closed-form answers and against
@@ -88,7 +89,7 @@ public final class TruthRenderer {
         DoubleDouble r = DoubleDouble.of(sphere.getRadius());
         DoubleDouble a = D.dot(D);
         DoubleDouble beta = D.dot(f);
-        DoubleDouble c = f.dot(f).subtract(r.multiply(r));
+        DoubleDouble c = exactC(ray.getOrigin(), sphere.getPosition(), sphere.getRadius());
         DoubleDouble quarterDiscriminant = beta.multiply(beta).subtract(a.multiply(c));
         if (quarterDiscriminant.signum() < 0) {
             return null;
@@ -102,6 +103,21 @@ public final class TruthRenderer {
         DoubleDouble near = t0.min(t1), far = t0.max(t1);
         DoubleDouble s = near.signum() > 0 ? near : far;
         return s.signum() > 0 ? s : null;
+    }
+
+    /**
+     * c = |O - C|^2 - r^2 exactly (then rounded to 106 bits). Under a giant floor sphere |O - C|^2
+     * and r^2 agree in 30 of their 32 digits, more than a double-double can hold, so this one
+     * quantity is computed in BigDecimal, whose sums and products of doubles are exact.
+     */
+    private static DoubleDouble exactC(Vector3 O, Vector3 C, double r) {
+        BigDecimal fx = new BigDecimal(O.x).subtract(new BigDecimal(C.x));
+        BigDecimal fy = new BigDecimal(O.y).subtract(new BigDecimal(C.y));
+        BigDecimal fz = new BigDecimal(O.z).subtract(new BigDecimal(C.z));
+        BigDecimal rr = new BigDecimal(r);
+        BigDecimal c = fx.multiply(fx).add(fy.multiply(fy)).add(fz.multiply(fz)).subtract(rr.multiply(rr));
+        double hi = c.doubleValue();
+        return DoubleDouble.twoSum(hi, c.subtract(new BigDecimal(hi)).doubleValue());
     }
 
     /** The spec's Phong model, term for term as {@link Renderer} computes it. */

@@ -37,13 +37,16 @@ import gfx.tick1.math.Vector3;
  * <p><b>The stable computation</b> (Ray Tracing Gems ch. 7, Haines et al. 2019; pbrt-v4's
  * sphere) removes both:
  * <ul>
- * <li>Delta = a r^2 - |D x f|^2, the geometric form. Each component of D x f is a difference of
- *   two products, computed by Kahan's fma algorithm to within 1.5 ulp of its exact value, so
- *   Delta's error is a few u times a r^2: no longer grows with |f|^2 / r^2. (It is as good as the
- *   inputs allow: changing r by one ulp changes Delta by 2u a r^2.)</li>
- * <li>beta and c with error-free transformations: every product f_i f_i, f_i D_i, r r is split
- *   exactly by fma into a double and its rounding error, and the sums are taken in double-double,
- *   so c keeps its relative accuracy even when f.f and r^2 agree in 40 of their 53 bits.</li>
+ * <li>a, beta and c with error-free transformations: every product D_i D_i, f_i D_i, f_i f_i, r r
+ *   is split exactly by fma into a double and its rounding error, and the sums are taken in
+ *   double-double, so c keeps its relative accuracy even when f.f and r^2 agree in 40 of their
+ *   53 bits (the giant floor).</li>
+ * <li>Delta either as beta^2 - a c in double-double from those, or in the geometric form
+ *   a r^2 - |D x f|^2 with each component of D x f computed by Kahan's fma difference of
+ *   products: whichever has the smaller error bound (see {@link #quarterDiscriminant}). The
+ *   geometric form's error is a few u times a r^2 however far away the sphere is, which is as
+ *   good as the inputs allow (one ulp more radius changes Delta by 2u a r^2); it is needed only
+ *   for spheres more than about 1e7 radii away.</li>
  * <li>q = -(beta + sign(beta) sqrt(Delta)) adds two numbers of the same sign, so it does not
  *   cancel; the roots are c / q and q / a (their product is c / a, as Vieta requires). Both are
  *   accurate to a few ulps.</li>
@@ -121,12 +124,15 @@ public final class RobustIntersection {
             return new RaycastHit();
         }
 
-        double delta = a * rr - squaredMagnitudeOfCross(D.x, D.y, D.z, fx, fy, fz);
+        DoubleDouble exactA = exactDot(D.x, D.y, D.z, D.x, D.y, D.z);
+        DoubleDouble exactBeta = exactDot(D.x, D.y, D.z, fx, fy, fz);
+        DoubleDouble exactC = exactDot(fx, fy, fz, fx, fy, fz).subtract(DoubleDouble.twoProduct(r, r));
+        double delta = quarterDiscriminant(exactA, exactBeta, exactC, a, D, fx, fy, fz, rr, ff);
         if (delta < -2 * E) {
             return new RaycastHit();
         }
-        double beta = exactDot(D.x, D.y, D.z, fx, fy, fz);
-        double c = exactSumOfSquares(fx, fy, fz).subtract(DoubleDouble.twoProduct(r, r)).doubleValue();
+        double beta = exactBeta.doubleValue();
+        double c = exactC.doubleValue();
 
         Roots roots = Roots.of(a, beta, c, delta);
         if (keepHandoutWhereAccurate && delta > 2 * E && handoutIsAccurate(roots, a, betaAbs, delta, E)) {
@@ -153,6 +159,26 @@ public final class RobustIntersection {
     }
 
     /**
+     * Delta = beta^2 - a c = a r^2 - |D x f|^2, by whichever of two evaluations has the smaller
+     * error bound here.
+     * <ul>
+     * <li>Algebraic, in double-double from the near-exact a, beta and c: off by at most about
+     *   2^-100 a (2 f.f + r^2). Under a giant floor, where Delta ~ beta^2 is large and c small,
+     *   that is far better than a double.</li>
+     * <li>Geometric, a r^2 - |D x f|^2: each component of D x f is Kahan's difference of products,
+     *   within 1.5 ulp of its exact value, so Delta is off by at most about 16u a r^2, however far
+     *   away the sphere is. It wins when r^2 &lt; 2^-48 f.f: spheres more than ten million radii away.</li>
+     * </ul>
+     */
+    private static double quarterDiscriminant(DoubleDouble exactA, DoubleDouble beta, DoubleDouble c, double a,
+            Vector3 D, double fx, double fy, double fz, double rr, double ff) {
+        if (16 * U * rr < 0x1p-100 * (2 * ff + rr)) {
+            return a * rr - squaredMagnitudeOfCross(D.x, D.y, D.z, fx, fy, fz);
+        }
+        return beta.multiply(beta).subtract(exactA.multiply(c)).doubleValue();
+    }
+
+    /**
      * |D x f|^2. Each component y1 z2 - z1 y2 is Kahan's difference of products: fma gives the
      * rounding error of one product exactly, so the result is within 1.5 ulp of the exact one
      * even when the two products nearly cancel (a ray almost through the centre).
@@ -172,14 +198,9 @@ public final class RobustIntersection {
         return difference + error;
     }
 
-    /** x1 y1 + x2 y2 + x3 y3 with every product split exactly and summed in double-double. */
-    static double exactDot(double x1, double x2, double x3, double y1, double y2, double y3) {
-        return DoubleDouble.twoProduct(x1, y1).add(DoubleDouble.twoProduct(x2, y2))
-                .add(DoubleDouble.twoProduct(x3, y3)).doubleValue();
-    }
-
-    private static DoubleDouble exactSumOfSquares(double x, double y, double z) {
-        return DoubleDouble.twoProduct(x, x).add(DoubleDouble.twoProduct(y, y)).add(DoubleDouble.twoProduct(z, z));
+    /** x1 y1 + x2 y2 + x3 y3 with every product split exactly by fma and summed in double-double. */
+    static DoubleDouble exactDot(double x1, double x2, double x3, double y1, double y2, double y3) {
+        return DoubleDouble.twoProduct(x1, y1).add(DoubleDouble.twoProduct(x2, y2)).add(DoubleDouble.twoProduct(x3, y3));
     }
 
     /** The two roots of a s^2 + 2 beta s + c = 0, near &lt;= far, from the stable q form. */
