@@ -1,5 +1,6 @@
 package gfx.tick1.fast;
 
+import gfx.tick1.math.DoubleDouble;
 import java.util.Arrays;
 import java.util.Comparator;
 
@@ -88,9 +89,11 @@ final class SphereBvh {
      * The index of the sphere the ray from the origin along unit D meets first, or -1.
      * {@code nodeStack} and {@code entryStack} are scratch space of at least 64 entries each,
      * one pair per thread: the nodes still to visit and where the ray enters their boxes;
-     * {@code inverse} is scratch for the three components of 1 / D.
+     * {@code inverse} is scratch for the three components of 1 / D; the winner's distance is
+     * left in {@code distance[0]}.
      */
-    int closest(double dx, double dy, double dz, double a, int[] nodeStack, double[] entryStack, double[] inverse) {
+    int closest(double dx, double dy, double dz, double a, DoubleDouble exactA, int[] nodeStack, double[] entryStack,
+            double[] inverse, double[] distance) {
         inverse[0] = 1 / dx;
         inverse[1] = 1 / dy;
         inverse[2] = 1 / dz;
@@ -111,7 +114,7 @@ final class SphereBvh {
             if (n > 0) {
                 for (int k = first[node], end = first[node] + n; k < end; k++) {
                     int i = order[k];
-                    double s = scene.nearestRoot(i, dx, dy, dz, a);
+                    double s = scene.nearestRoot(i, dx, dy, dz, a, exactA);
                     if (s < best || (s == best && i < winner)) {
                         best = s;
                         winner = i;
@@ -140,6 +143,7 @@ final class SphereBvh {
                 entryStack[top++] = nearEntry;
             }
         }
+        distance[0] = best;
         return winner;
     }
 
