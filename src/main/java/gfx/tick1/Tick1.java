@@ -1,5 +1,6 @@
 package gfx.tick1;
 
+import gfx.tick1.bench.Bench;
 import gfx.tick1.compare.CompareCommand;
 import gfx.tick1.diagnose.DiagnoseCommand;
 import gfx.tick1.fast.FastRenderer;
@@ -7,6 +8,7 @@ import gfx.tick1.grade.GradeCommand;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.preview.Preview;
 import gfx.tick1.render.SamplePattern;
+import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
@@ -28,7 +30,7 @@ import picocli.CommandLine.Spec;
 
 /** The command line: renders a Tick 1 scene file to a PNG image. */
 @Command(name = "tick1", mixinStandardHelpOptions = true, versionProvider = Version.class,
-        subcommands = {CompareCommand.class, DiagnoseCommand.class, GradeCommand.class, StarterCommand.class,
+        subcommands = {CompareCommand.class, DiagnoseCommand.class, GradeCommand.class, StarterCommand.class, Bench.class,
             Preview.class},
         sortOptions = false, usageHelpAutoWidth = true,
         description = "Renders a Tick 1 scene (spheres, an ambient light, one point light, Phong shading) "
@@ -82,6 +84,13 @@ public final class Tick1 implements Callable<Integer> {
                     + "for any number.")
     private Integer threads;
 
+    @Option(names = "--intersection", paramLabel = "METHOD", defaultValue = "robust",
+            description = "How rays meet spheres: robust (default: the handout's formula wherever it is accurate, "
+                    + "a numerically stable one where it is not, e.g. giant or far-away spheres), handout (the "
+                    + "handout's formula as it stands) or stable (the stable formula everywhere; not bit-identical "
+                    + "to the course's images). See docs/hard-cases.md.")
+    private Intersection intersection;
+
     @Option(names = "--strict", description = "Treat warnings about the scene file as errors.")
     private boolean strict;
 
@@ -113,6 +122,7 @@ public final class Tick1 implements Callable<Integer> {
     public static CommandLine commandLine(Tick1 command) {
         System.setProperty("tick1.cores", Integer.toString(Runtime.getRuntime().availableProcessors()));
         CommandLine commandLine = new CommandLine(command);
+        commandLine.setCaseInsensitiveEnumValuesAllowed(true);
         commandLine.setParameterExceptionHandler((e, args) -> {
             PrintWriter err = e.getCommandLine().getErr();
             String name = e.getCommandLine().getCommandSpec().qualifiedName();
@@ -195,7 +205,7 @@ public final class Tick1 implements Callable<Integer> {
     }
 
     private BufferedImage render(Scene scene, PrintWriter err) {
-        FastRenderer renderer = new FastRenderer(width, height, new SamplePattern(samples));
+        FastRenderer renderer = new FastRenderer(width, height, new SamplePattern(samples), null, intersection);
         Progress progress = new Progress(err, height, !quiet && System.console() != null);
         ForkJoinPool pool = new ForkJoinPool(threads);
         try {

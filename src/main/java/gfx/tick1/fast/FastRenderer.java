@@ -1,7 +1,10 @@
 package gfx.tick1.fast;
 
+import gfx.tick1.math.DoubleDouble;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.render.SamplePattern;
+import gfx.tick1.scene.Intersection;
+import gfx.tick1.scene.RobustIntersection;
 import gfx.tick1.scene.Scene;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
@@ -37,18 +40,23 @@ public final class FastRenderer {
     private final int width, height;
     private final SamplePattern samples;
     private final Boolean forceBvh;
+    private final Intersection intersection;
     private final double widthM, heightM, xStep, yStep;
 
     public FastRenderer(int width, int height, SamplePattern samples) {
-        this(width, height, samples, null);
+        this(width, height, samples, null, Intersection.DEFAULT);
     }
 
-    /** @param bvh force the BVH on (true) or off (false), or null to choose by scene size */
-    public FastRenderer(int width, int height, SamplePattern samples, Boolean bvh) {
+    /**
+     * @param bvh force the BVH on (true) or off (false), or null to choose by scene size
+     * @param intersection how rays meet spheres, as in {@code Renderer(width, height, intersection)}
+     */
+    public FastRenderer(int width, int height, SamplePattern samples, Boolean bvh, Intersection intersection) {
         this.width = width;
         this.height = height;
         this.samples = samples;
         this.forceBvh = bvh;
+        this.intersection = intersection;
         // The Camera's arithmetic, step for step.
         double aspectRatio = (double) width / (double) height;
         widthM = 2 * Math.tan(Math.toRadians(45) / 2);
@@ -63,13 +71,14 @@ public final class FastRenderer {
 
     /** Renders on the current pool's threads; {@code rowsDone} hears each finished row's count. */
     public BufferedImage render(Scene scene, IntConsumer rowsDone) {
-        FlatScene flat = new FlatScene(scene);
+        FlatScene flat = new FlatScene(scene, intersection);
         boolean bvh = forceBvh != null ? forceBvh : flat.size >= BVH_THRESHOLD;
         SphereBvh tree = bvh && flat.size > 0 ? new SphereBvh(flat) : null;
+        ScreenBounds bounds = new ScreenBounds(flat, widthM, heightM, xStep, yStep);
         int[] pixels = new int[width * height];
         AtomicInteger finished = new AtomicInteger();
         IntStream.range(0, height).parallel().forEach(y -> {
-            Tracer tracer = new Tracer(flat, tree);
+            Tracer tracer = new Tracer(flat, tree, bounds);
             for (int x = 0; x < width; x++) {
                 pixels[y * width + x] = tracer.pixel(x, y);
             }
@@ -94,13 +103,17 @@ public final class FastRenderer {
 
         private final FlatScene scene;
         private final SphereBvh tree;
+        private final ScreenBounds bounds;
         private final int[] nodeStack = new int[64];
         private final double[] entryStack = new double[64];
+        private final double[] inverse = new double[3];
+        private final double[] distance = new double[1];
         private double red, green, blue;
 
-        Tracer(FlatScene scene, SphereBvh tree) {
+        Tracer(FlatScene scene, SphereBvh tree, ScreenBounds bounds) {
             this.scene = scene;
             this.tree = tree;
+            this.bounds = bounds;
         }
 
         int pixel(int x, int y) {
@@ -129,15 +142,26 @@ public final class FastRenderer {
             double length = Math.sqrt(px * px + py * py + 1 * 1);
             double dx = px / length, dy = py / length, dz = 1 / length;
             double a = dx * dx + dy * dy + dz * dz;
+            // The robust method's exact D.D, computed only for a ray that may hit something.
+            boolean robust = scene.intersection != Intersection.HANDOUT;
+            DoubleDouble exactA = robust && tree != null ? RobustIntersection.exactLengthSquared(dx, dy, dz) : null;
 
             int hit;
+            double best;
             if (tree != null) {
-                hit = tree.closest(dx, dy, dz, a, nodeStack, entryStack);
+                hit = tree.closest(dx, dy, dz, a, exactA, nodeStack, entryStack, inverse, distance);
+                best = distance[0];
             } else {
                 hit = -1;
-                double best = Double.POSITIVE_INFINITY;
+                best = Double.POSITIVE_INFINITY;
                 for (int i = 0; i < scene.size; i++) {
-                    double s = scene.nearestRoot(i, dx, dy, dz, a);
+                    if (!bounds.mayHit(i, x, y)) {
+                        continue;
+                    }
+                    if (robust && exactA == null) {
+                        exactA = RobustIntersection.exactLengthSquared(dx, dy, dz);
+                    }
+                    double s = scene.nearestRoot(i, dx, dy, dz, a, exactA);
                     if (s < best) {
                         best = s;
                         hit = i;
@@ -147,7 +171,7 @@ public final class FastRenderer {
             if (hit < 0) {
                 return false;
             }
-            shade(hit, scene.nearestRoot(hit, dx, dy, dz, a), dx, dy, dz);
+            shade(hit, best, dx, dy, dz);
             return true;
         }
 
@@ -189,7 +213,9 @@ public final class FastRenderer {
             double NdotL = nx * lx + ny * ly + nz * lz;
             double RdotV = rx * vx + ry * vy + rz * vz;
             double diffuse = 0.8 * Math.max(0, NdotL);
-            double specular = 0.8 * Math.pow(Math.max(0, RdotV), 10);
+            // pow(max(0, R.V), n) is 0 whenever R.V <= 0, as it is on most of a sphere: skip the
+            // costly pow there (the same value; a NaN still goes through pow and stays NaN).
+            double specular = RdotV <= 0 ? 0.8 * 0.0 : 0.8 * Math.pow(Math.max(0, RdotV), 10);
 
             red = ambientRed + diffuse * (f.red[i] * iRed) + specular * (1 * iRed);
             green = ambientGreen + diffuse * (f.green[i] * iGreen) + specular * (1 * iGreen);

@@ -1,7 +1,10 @@
 package gfx.tick1.fast;
 
+import gfx.tick1.math.DoubleDouble;
 import gfx.tick1.math.Vector3;
+import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.PointLight;
+import gfx.tick1.scene.RobustIntersection;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
 import java.util.List;
@@ -16,10 +19,13 @@ import java.util.List;
 final class FlatScene {
 
     final int size;
+    final Intersection intersection;
     /** f = O - C for O = 0. */
     final double[] fx, fy, fz;
     /** The constant term of the quadratic, f.f - r^2. */
     final double[] c;
+    /** The ray-independent terms of the robust method, per sphere. */
+    final RobustIntersection.Offset[] offsets;
     final double[] cx, cy, cz, radius;
     /** C_diff. */
     final double[] red, green, blue;
@@ -27,13 +33,15 @@ final class FlatScene {
     final boolean lit;
     final double lightX, lightY, lightZ, lightRed, lightGreen, lightBlue, intensity;
 
-    FlatScene(Scene scene) {
+    FlatScene(Scene scene, Intersection intersection) {
+        this.intersection = intersection;
         List<Sphere> spheres = scene.getObjects();
         size = spheres.size();
         fx = new double[size];
         fy = new double[size];
         fz = new double[size];
         c = new double[size];
+        offsets = new RobustIntersection.Offset[size];
         cx = new double[size];
         cy = new double[size];
         cz = new double[size];
@@ -52,6 +60,7 @@ final class FlatScene {
             fy[i] = 0 - centre.y;
             fz[i] = 0 - centre.z;
             c[i] = (fx[i] * fx[i] + fy[i] * fy[i] + fz[i] * fz[i]) - Math.pow(radius[i], 2);
+            offsets[i] = RobustIntersection.Offset.of(fx[i], fy[i], fz[i], radius[i]);
             red[i] = sphere.getColour().x;
             green[i] = sphere.getColour().y;
             blue[i] = sphere.getColour().z;
@@ -73,10 +82,28 @@ final class FlatScene {
 
     /**
      * The nearest root s &gt; 0 of sphere i along the unit direction D from the origin, or
-     * +infinity: the handout's quadratic, term for term as {@code Sphere.intersectionWith}
-     * computes it, with a = D.D passed in because it is the same for every sphere.
+     * +infinity, as {@link Intersection#find} decides it: for {@link Intersection#HANDOUT} the
+     * handout's quadratic; otherwise {@link RobustIntersection#nearestRoot}, the same decision
+     * code the readable path runs, which defers to the handout's quadratic where that is accurate.
+     * a = D.D and its double-double value (null for the handout's method) are passed in because
+     * they are the same for every sphere.
      */
-    double nearestRoot(int i, double dx, double dy, double dz, double a) {
+    double nearestRoot(int i, double dx, double dy, double dz, double a, DoubleDouble exactA) {
+        if (intersection == Intersection.HANDOUT) {
+            return handoutRoot(i, dx, dy, dz, a);
+        }
+        double s = RobustIntersection.nearestRoot(dx, dy, dz, a, exactA, offsets[i], intersection == Intersection.ROBUST);
+        if (s == RobustIntersection.HANDOUT_IS_ACCURATE) {
+            return handoutRoot(i, dx, dy, dz, a);
+        }
+        return s > 0 ? s : Double.POSITIVE_INFINITY;
+    }
+
+    /**
+     * The handout's quadratic, term for term as {@code Sphere.intersectionWith} computes it:
+     * the nearest root s &gt; 0, or +infinity.
+     */
+    private double handoutRoot(int i, double dx, double dy, double dz, double a) {
         double b = 2 * (dx * fx[i] + dy * fy[i] + dz * fz[i]);
         double discriminant = b * b - 4 * a * c[i];
         if (discriminant < 0) {

@@ -1,5 +1,6 @@
 package gfx.tick1.fast;
 
+import gfx.tick1.math.DoubleDouble;
 import java.util.Arrays;
 import java.util.Comparator;
 
@@ -22,21 +23,17 @@ final class SphereBvh {
     private final FlatScene scene;
     /** Sphere indices, grouped so that every node owns a contiguous range. */
     private final int[] order;
-    // Node arrays: box bounds; for a leaf, first index into order and count; for an inner
-    // node, count = 0 and the children are at node + 1 and right[node].
-    private double[] minX, minY, minZ, maxX, maxY, maxZ;
-    private int[] first, count, right;
+    // Node arrays: box bounds, six a node (min x, y, z, then max x, y, z); for a leaf, the first
+    // index into order and the count; for an inner node, count = 0 and the children are at
+    // node + 1 and right[node].
+    private final double[] bounds;
+    private final int[] first, count, right;
     private int nodes;
 
     SphereBvh(FlatScene scene) {
         this.scene = scene;
         int capacity = Math.max(1, 2 * scene.size);
-        minX = new double[capacity];
-        minY = new double[capacity];
-        minZ = new double[capacity];
-        maxX = new double[capacity];
-        maxY = new double[capacity];
-        maxZ = new double[capacity];
+        bounds = new double[6 * capacity];
         first = new int[capacity];
         count = new int[capacity];
         right = new int[capacity];
@@ -50,8 +47,11 @@ final class SphereBvh {
 
     private int build(Integer[] spheres, int from, int to) {
         int node = nodes++;
-        double[] bounds = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-            Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        int box = 6 * node;
+        for (int axis = 0; axis < 3; axis++) {
+            bounds[box + axis] = Double.POSITIVE_INFINITY;
+            bounds[box + 3 + axis] = Double.NEGATIVE_INFINITY;
+        }
         double[] centroids = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
             Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         for (int k = from; k < to; k++) {
@@ -60,18 +60,12 @@ final class SphereBvh {
             double pad = 1e-9 * (Math.abs(scene.cx[i]) + Math.abs(scene.cy[i]) + Math.abs(scene.cz[i]) + r) + Double.MIN_NORMAL;
             double[] centre = {scene.cx[i], scene.cy[i], scene.cz[i]};
             for (int axis = 0; axis < 3; axis++) {
-                bounds[axis] = Math.min(bounds[axis], centre[axis] - r - pad);
-                bounds[axis + 3] = Math.max(bounds[axis + 3], centre[axis] + r + pad);
+                bounds[box + axis] = Math.min(bounds[box + axis], centre[axis] - r - pad);
+                bounds[box + 3 + axis] = Math.max(bounds[box + 3 + axis], centre[axis] + r + pad);
                 centroids[axis] = Math.min(centroids[axis], centre[axis]);
                 centroids[axis + 3] = Math.max(centroids[axis + 3], centre[axis]);
             }
         }
-        minX[node] = bounds[0];
-        minY[node] = bounds[1];
-        minZ[node] = bounds[2];
-        maxX[node] = bounds[3];
-        maxY[node] = bounds[4];
-        maxZ[node] = bounds[5];
         if (to - from <= LEAF_SIZE) {
             first[node] = from;
             count[node] = to - from;
@@ -94,14 +88,19 @@ final class SphereBvh {
     /**
      * The index of the sphere the ray from the origin along unit D meets first, or -1.
      * {@code nodeStack} and {@code entryStack} are scratch space of at least 64 entries each,
-     * one pair per thread: the nodes still to visit and where the ray enters their boxes.
+     * one pair per thread: the nodes still to visit and where the ray enters their boxes;
+     * {@code inverse} is scratch for the three components of 1 / D; the winner's distance is
+     * left in {@code distance[0]}.
      */
-    int closest(double dx, double dy, double dz, double a, int[] nodeStack, double[] entryStack) {
-        double invX = 1 / dx, invY = 1 / dy, invZ = 1 / dz;
+    int closest(double dx, double dy, double dz, double a, DoubleDouble exactA, int[] nodeStack, double[] entryStack,
+            double[] inverse, double[] distance) {
+        inverse[0] = 1 / dx;
+        inverse[1] = 1 / dy;
+        inverse[2] = 1 / dz;
         double best = Double.POSITIVE_INFINITY;
         int winner = -1;
         int top = 0;
-        double rootEntry = entry(0, invX, invY, invZ);
+        double rootEntry = entry(0, inverse);
         if (rootEntry == rootEntry) { // not NaN: the ray meets the root box
             nodeStack[top] = 0;
             entryStack[top++] = rootEntry;
@@ -115,7 +114,7 @@ final class SphereBvh {
             if (n > 0) {
                 for (int k = first[node], end = first[node] + n; k < end; k++) {
                     int i = order[k];
-                    double s = scene.nearestRoot(i, dx, dy, dz, a);
+                    double s = scene.nearestRoot(i, dx, dy, dz, a, exactA);
                     if (s < best || (s == best && i < winner)) {
                         best = s;
                         winner = i;
@@ -124,7 +123,7 @@ final class SphereBvh {
                 continue;
             }
             int near = node + 1, far = right[node];
-            double nearEntry = entry(near, invX, invY, invZ), farEntry = entry(far, invX, invY, invZ);
+            double nearEntry = entry(near, inverse), farEntry = entry(far, inverse);
             if (farEntry < nearEntry) {
                 int swap = near;
                 near = far;
@@ -144,6 +143,7 @@ final class SphereBvh {
                 entryStack[top++] = nearEntry;
             }
         }
+        distance[0] = best;
         return winner;
     }
 
@@ -152,45 +152,21 @@ final class SphereBvh {
      * misses: the slab test. A NaN from 0 * infinity (a direction component of 0 and a
      * box face at 0) never tightens the interval, which keeps the test conservative.
      */
-    private double entry(int node, double invX, double invY, double invZ) {
+    private double entry(int node, double[] inverse) {
         double near = 0, far = Double.POSITIVE_INFINITY;
-        double t1 = minX[node] * invX, t2 = maxX[node] * invX;
-        if (t1 > t2) {
-            double t = t1;
-            t1 = t2;
-            t2 = t;
-        }
-        if (t1 > near) {
-            near = t1;
-        }
-        if (t2 < far) {
-            far = t2;
-        }
-        t1 = minY[node] * invY;
-        t2 = maxY[node] * invY;
-        if (t1 > t2) {
-            double t = t1;
-            t1 = t2;
-            t2 = t;
-        }
-        if (t1 > near) {
-            near = t1;
-        }
-        if (t2 < far) {
-            far = t2;
-        }
-        t1 = minZ[node] * invZ;
-        t2 = maxZ[node] * invZ;
-        if (t1 > t2) {
-            double t = t1;
-            t1 = t2;
-            t2 = t;
-        }
-        if (t1 > near) {
-            near = t1;
-        }
-        if (t2 < far) {
-            far = t2;
+        for (int axis = 0; axis < 3; axis++) {
+            double t1 = bounds[6 * node + axis] * inverse[axis], t2 = bounds[6 * node + 3 + axis] * inverse[axis];
+            if (t1 > t2) {
+                double t = t1;
+                t1 = t2;
+                t2 = t;
+            }
+            if (t1 > near) {
+                near = t1;
+            }
+            if (t2 < far) {
+                far = t2;
+            }
         }
         // pbrt's robust slab test widens the far bound by 2 gamma(3) for the rounding above.
         return near <= far * (1 + 2 * GAMMA_3) ? near : Double.NaN;

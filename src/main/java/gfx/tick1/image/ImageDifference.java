@@ -95,6 +95,11 @@ public final class ImageDifference {
         return maxDifference() <= levels;
     }
 
+    /** How many pixels differ by more than {@code levels} in some channel. */
+    public int pixelsDifferingByMoreThan(int levels) {
+        return totalPixels() - pixelsWithin(levels);
+    }
+
     /** The largest difference in any channel of any pixel, in levels (0 to 255). */
     public int maxDifference() {
         return Math.max(maxPerChannel[0], Math.max(maxPerChannel[1], maxPerChannel[2]));

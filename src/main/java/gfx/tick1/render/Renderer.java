@@ -2,6 +2,7 @@ package gfx.tick1.render;
 
 import gfx.tick1.math.Ray;
 import gfx.tick1.math.Vector3;
+import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.RaycastHit;
 import gfx.tick1.scene.Scene;
@@ -18,15 +19,22 @@ public class Renderer {
     public static final Vector3 BACKGROUND_COLOUR = new Vector3(0.1);
 
     private final int width, height;
+    private final Intersection intersection;
 
     public Renderer(int width, int height) {
+        this(width, height, Intersection.DEFAULT);
+    }
+
+    /** A renderer that intersects rays with spheres by the given method. */
+    public Renderer(int width, int height, Intersection intersection) {
         this.width = width;
         this.height = height;
+        this.intersection = intersection;
     }
 
     /** The colour seen along a ray: the Phong shade of the nearest hit, or the background. */
     protected Vector3 trace(Scene scene, Ray ray) {
-        RaycastHit closestHit = scene.findClosestIntersection(ray);
+        RaycastHit closestHit = scene.findClosestIntersection(ray, intersection);
         Sphere objectHit = closestHit.getObjectHit();
         if (objectHit == null) {
             return BACKGROUND_COLOUR;

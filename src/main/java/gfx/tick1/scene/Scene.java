@@ -29,14 +29,19 @@ public final class Scene {
         return Collections.unmodifiableList(objects);
     }
 
+    /** The nearest hit over all spheres, found with the renderer's default {@link Intersection}. */
+    public RaycastHit findClosestIntersection(Ray ray) {
+        return findClosestIntersection(ray, Intersection.DEFAULT);
+    }
+
     /**
      * The nearest hit over all spheres. A later sphere replaces the current hit only when
      * strictly closer, so at equal distances the sphere earlier in the file wins.
      */
-    public RaycastHit findClosestIntersection(Ray ray) {
+    public RaycastHit findClosestIntersection(Ray ray, Intersection intersection) {
         RaycastHit closest = new RaycastHit();
         for (Sphere object : objects) {
-            RaycastHit hit = object.intersectionWith(ray);
+            RaycastHit hit = intersection.find(object, ray);
             if (hit.getDistance() < closest.getDistance()) {
                 closest = hit;
             }

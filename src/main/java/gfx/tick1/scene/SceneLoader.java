@@ -47,7 +47,7 @@ public final class SceneLoader {
     /** Scenes with more elements than this are refused rather than exhausting memory. */
     public static final int MAX_ELEMENTS = 1_000_000;
     /** The largest magnitude accepted for any coordinate, radius or intensity. */
-    public static final double MAX_MAGNITUDE = 1e9;
+    public static final double MAX_MAGNITUDE = 1e16;
 
     private static final Map<String, Set<String>> ATTRIBUTES = Map.of(
             "sphere", Set.of("x", "y", "z", "radius", "colour"),
@@ -310,7 +310,7 @@ public final class SceneLoader {
             double value = Double.parseDouble(trimmed);
             if (!(Math.abs(value) <= MAX_MAGNITUDE)) {
                 throw attributeError(at, element, attribute, text,
-                        "must be a number between -1e9 and 1e9 (the range the renderer is tested for)");
+                        "must be a number between -1e16 and 1e16 (the range the renderer is tested for)");
             }
             return value;
         }

@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
+import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
@@ -52,6 +53,20 @@ class FastRendererTest {
                 new FastRenderer(640, 480, new SamplePattern(1)).render(load(scene)), scene.toString());
     }
 
+    static List<Path> hardScenes() throws IOException {
+        return UpdateReferenceImages.scenesUnder(Path.of("scenes/hard"));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("hardScenes")
+    void matchesTheReadableRendererWithEveryIntersectionMethodOnTheHardCases(Path scene) {
+        for (Intersection intersection : Intersection.values()) {
+            assertSamePixels(new Renderer(320, 240, intersection).render(load(scene)),
+                    new FastRenderer(320, 240, new SamplePattern(1), null, intersection).render(load(scene)),
+                    scene + " with " + intersection);
+        }
+    }
+
     @ParameterizedTest(name = "{0} samples")
     @ValueSource(ints = {2, 4, 5, 16})
     void matchesTheReadableRendererWhenAntiAliasing(int samples) {
@@ -65,8 +80,8 @@ class FastRendererTest {
     @ValueSource(longs = {1, 2, 3})
     void bvhAndBruteForceAgreeOnLargeScenesIncludingExactTies(long seed) {
         Scene scene = crowd(seed, 1500);
-        BufferedImage brute = new FastRenderer(200, 150, new SamplePattern(1), false).render(scene);
-        BufferedImage bvh = new FastRenderer(200, 150, new SamplePattern(1), true).render(scene);
+        BufferedImage brute = new FastRenderer(200, 150, new SamplePattern(1), false, Intersection.DEFAULT).render(scene);
+        BufferedImage bvh = new FastRenderer(200, 150, new SamplePattern(1), true, Intersection.DEFAULT).render(scene);
         assertSamePixels(brute, bvh, "BVH vs brute force");
         assertSamePixels(new Renderer(200, 150).render(scene), bvh, "BVH vs readable");
     }
@@ -79,7 +94,7 @@ class FastRendererTest {
         }
         scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(1, 0, 0)));
         scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(0, 1, 0)));
-        int centre = new FastRenderer(64, 48, new SamplePattern(1), true).render(scene).getRGB(32, 24) & 0xFFFFFF;
+        int centre = new FastRenderer(64, 48, new SamplePattern(1), true, Intersection.DEFAULT).render(scene).getRGB(32, 24) & 0xFFFFFF;
         assertThat(centre).as("the red sphere comes first in the file").isEqualTo(0xFF0000);
     }
 

@@ -113,7 +113,7 @@ class SceneLoaderTest {
             empty number          | <scene><sphere y='' colour='#FF0000'/></scene>                | scene.xml:1:16: sphere y "": must be a decimal number such as 1.5 or -2e3
             not a number          | <scene><sphere z='NaN' colour='#FF0000'/></scene>             | scene.xml:1:16: sphere z "NaN": must be a finite decimal number
             infinity              | <scene><sphere z='-Infinity' colour='#FF0000'/></scene>       | scene.xml:1:16: sphere z "-Infinity": must be a finite decimal number
-            overflowing number    | <scene><sphere z='1e400' colour='#FF0000'/></scene>           | scene.xml:1:16: sphere z "1e400": must be a number between -1e9 and 1e9 (the range the renderer is tested for)
+            overflowing number    | <scene><sphere z='1e400' colour='#FF0000'/></scene>           | scene.xml:1:16: sphere z "1e400": must be a number between -1e16 and 1e16 (the range the renderer is tested for)
             hexadecimal number    | <scene><sphere z='0x10' colour='#FF0000'/></scene>            | scene.xml:1:16: sphere z "0x10": must be a decimal number such as 1.5 or -2e3
             zero radius           | <scene><sphere radius='0' colour='#FF0000'/></scene>          | scene.xml:1:16: sphere radius "0": must be a number greater than 0
             negative radius       | <scene><sphere radius='-1' colour='#FF0000'/></scene>         | scene.xml:1:16: sphere radius "-1": must be a number greater than 0

@@ -1,0 +1,221 @@
+package gfx.tick1.bench;
+
+import gfx.tick1.fast.FastRenderer;
+import gfx.tick1.image.ImageDifference;
+import gfx.tick1.image.PngEncoder;
+import gfx.tick1.render.Renderer;
+import gfx.tick1.render.SamplePattern;
+import gfx.tick1.render.TruthRenderer;
+import gfx.tick1.scene.Intersection;
+import gfx.tick1.scene.Scene;
+import gfx.tick1.scene.SceneLoader;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.zip.Deflater;
+import javax.imageio.ImageIO;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code tick1 bench}: every way of rendering side by side in one process, on the same scenes,
+ * with the time each takes and how far its image is from the right one; then whole runs of the
+ * program in fresh processes for start-up, scaling and end-to-end time. Writes report.md,
+ * results.csv and speed-vs-error.png.
+ */
+@Command(name = "bench", mixinStandardHelpOptions = true, sortOptions = false,
+        description = "Measures speed against accuracy for every renderer variant and writes a report "
+                + "(report.md, results.csv, speed-vs-error.png).")
+public final class Bench implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Option(names = "--quick", description = "Small frames and few runs: under a minute, for CI. "
+            + "The full run is for people.")
+    private boolean quick;
+
+    @Option(names = "--out", paramLabel = "DIR", defaultValue = "build/reports/bench",
+            description = "Where to write the report (default: ${DEFAULT-VALUE}).")
+    private Path out;
+
+    private PrintWriter log;
+
+    @Override
+    public Integer call() throws IOException {
+        log = spec.commandLine().getOut();
+        Files.createDirectories(out);
+        Settings settings = quick ? Settings.QUICK : Settings.FULL;
+        int cores = Runtime.getRuntime().availableProcessors();
+
+        String tick1Xml = bundledTick1Scene();
+        Path tick1File = out.resolve("tick1.xml");
+        Files.writeString(tick1File, tick1Xml);
+        Scene tick1 = load(tick1File);
+
+        List<Result> results = new ArrayList<>();
+        log.printf("tick1 bench (%s): %d cores, Java %s%n", quick ? "quick" : "full", cores,
+                System.getProperty("java.version"));
+
+        BufferedImage truth = new TruthRenderer(settings.errorWidth, settings.errorHeight).render(tick1);
+        BufferedImage manySamples = new FastRenderer(settings.errorWidth, settings.errorHeight,
+                new SamplePattern(256)).render(tick1);
+        for (Variant variant : tick1Variants(cores)) {
+            boolean antiAliased = variant.samples() > 1;
+            results.add(measure(variant, "tick1.xml", tick1, settings.width, settings.height, settings,
+                    antiAliased ? "256 samples" : "truth", antiAliased ? manySamples : truth));
+        }
+        for (int count : settings.crowds) {
+            Path file = out.resolve("crowd-" + count + ".xml");
+            Files.writeString(file, CrowdScene.xml(count));
+            Scene crowd = load(file);
+            BufferedImage bruteForce = new FastRenderer(settings.errorWidth, settings.errorHeight, new SamplePattern(1),
+                    false, Intersection.DEFAULT).render(crowd);
+            for (boolean bvh : new boolean[] {false, true}) {
+                Variant variant = new Variant(bvh ? "BVH" : "brute force", 1, cores,
+                        (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), bvh, Intersection.DEFAULT).render(s));
+                results.add(measure(variant, file.getFileName().toString(), crowd, 640, 480, settings,
+                        "brute force", bruteForce));
+            }
+        }
+
+        Map<String, String> png = pngEncoding(tick1, settings);
+        ProcessRuns runs = new ProcessRuns();
+        Whole whole = wholeRuns(runs, settings, tick1File);
+
+        BenchReport report = new BenchReport(quick, cores, results, png, runs.describe(), whole);
+        report.write(out);
+        log.printf("Wrote %s, %s and %s%n", out.resolve("report.md"), out.resolve("results.csv"),
+                out.resolve("speed-vs-error.png"));
+        return 0;
+    }
+
+    /** Frame sizes, repetitions and scenes for the two modes. */
+    private record Settings(int width, int height, int errorWidth, int errorHeight, int warmups, int runs,
+            int[] crowds, int processRuns) {
+        static final Settings FULL = new Settings(3840, 2160, 640, 480, 3, 7, new int[] {1_000, 10_000}, 7);
+        static final Settings QUICK = new Settings(640, 480, 160, 120, 1, 3, new int[] {1_000}, 3);
+    }
+
+    private static List<Variant> tick1Variants(int cores) {
+        List<Variant> variants = new ArrayList<>();
+        variants.add(new Variant("readable Renderer, handout formula", 1, 1,
+                (s, w, h) -> new Renderer(w, h, Intersection.HANDOUT).render(s)));
+        variants.add(new Variant("readable Renderer, robust", 1, cores, (s, w, h) -> new Renderer(w, h).render(s)));
+        for (Intersection intersection : new Intersection[] {Intersection.HANDOUT, Intersection.ROBUST}) {
+            for (int threads : new int[] {1, cores}) {
+                variants.add(new Variant("fast double, " + name(intersection), 1, threads,
+                        (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), null, intersection).render(s)));
+            }
+        }
+        variants.add(new Variant("float, handout formula", 1, cores,
+                (s, w, h) -> new FloatRenderer(w, h, FloatRenderer.Formula.HANDOUT).render(s)));
+        variants.add(new Variant("float, robust", 1, cores,
+                (s, w, h) -> new FloatRenderer(w, h, FloatRenderer.Formula.ROBUST).render(s)));
+        for (int samples : new int[] {4, 16}) {
+            variants.add(new Variant("fast double, robust, " + samples + " samples", samples, cores,
+                    (s, w, h) -> new FastRenderer(w, h, new SamplePattern(samples)).render(s)));
+        }
+        return variants;
+    }
+
+    private static String name(Intersection intersection) {
+        return intersection == Intersection.HANDOUT ? "handout formula" : "robust (default)";
+    }
+
+    private Result measure(Variant variant, String sceneName, Scene scene, int width, int height, Settings settings,
+            String errorAgainst, BufferedImage reference) {
+        Timing timing = Timing.of(() -> variant.frame().render(scene, width, height), variant.threads(),
+                settings.warmups, settings.runs);
+        BufferedImage small = variant.frame().render(scene, reference.getWidth(), reference.getHeight());
+        Result result = new Result(variant.name(), sceneName, width, height, variant.samples(), variant.threads(),
+                timing, errorAgainst, ImageDifference.between(reference, small), reference.getWidth(),
+                reference.getHeight());
+        log.printf("  %-45s %-16s %4d threads %9.1f ms %8.1f Mrays/s  max error %d levels%n", variant.name(), sceneName,
+                variant.threads(), timing.median(), result.megaRaysPerSecond(), result.error().maxDifference());
+        log.flush();
+        return result;
+    }
+
+    /** ImageIO's PNG writer against ours on the benchmark's largest tick1 frame: time and size. */
+    private Map<String, String> pngEncoding(Scene scene, Settings settings) throws IOException {
+        BufferedImage frame = new FastRenderer(settings.width, settings.height, new SamplePattern(1)).render(scene);
+        Map<String, String> rows = new LinkedHashMap<>();
+        Map<String, Encoder> encoders = new LinkedHashMap<>();
+        encoders.put("ImageIO, defaults", (image, stream) -> ImageIO.write(image, "png", stream));
+        encoders.put("tick1, Sub filter, deflate level 1 (default)", (image, stream) -> PngEncoder.write(image, stream));
+        encoders.put("tick1, Sub filter, deflate level 6", (image, stream) -> PngEncoder.write(image, stream, 6));
+        encoders.put("tick1, Sub filter, Huffman only", (image, stream) ->
+                PngEncoder.write(image, stream, Deflater.HUFFMAN_ONLY));
+        for (Map.Entry<String, Encoder> encoder : encoders.entrySet()) {
+            int[] size = new int[1];
+            Timing timing = Timing.of(() -> {
+                ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+                try {
+                    encoder.getValue().encode(frame, bytes);
+                } catch (IOException e) {
+                    throw new IllegalStateException(e);
+                }
+                size[0] = bytes.size();
+                return null;
+            }, Runtime.getRuntime().availableProcessors(), settings.warmups, settings.runs);
+            rows.put(encoder.getKey(), String.format("%.1f ms | %,d bytes", timing.median(), size[0]));
+            log.printf("  PNG %-45s %8.1f ms %,12d bytes%n", encoder.getKey(), timing.median(), size[0]);
+        }
+        return rows;
+    }
+
+    private interface Encoder {
+        void encode(BufferedImage image, ByteArrayOutputStream out) throws IOException;
+    }
+
+    /** Whole runs in fresh processes. */
+    record Whole(Map<String, Double> phases, Timing startup, Timing handoutStyle, Timing crowd10, Timing crowd10k,
+            Timing endToEnd, String endToEndSize) {
+    }
+
+    private Whole wholeRuns(ProcessRuns runs, Settings settings, Path tick1File) throws IOException {
+        String image = out.resolve("whole-run.png").toString();
+        String scene = tick1File.toString();
+        Map<String, Double> phases = runs.phases(settings.processRuns, "-q", "-i", scene, "-o", image);
+        Timing startup = runs.tick1(settings.processRuns, "-q", "-i", scene, "-o", image);
+        Timing handoutStyle = runs.java(settings.processRuns, HandoutStyleRender.class.getName(), scene, image);
+        Path crowd10 = out.resolve("crowd-10.xml"), crowd10k = out.resolve("crowd-10000.xml");
+        Files.writeString(crowd10, CrowdScene.xml(10));
+        Files.writeString(crowd10k, CrowdScene.xml(10_000));
+        Timing ten = runs.tick1(settings.processRuns, "-q", "-i", crowd10.toString(), "-o", image);
+        Timing tenThousand = runs.tick1(settings.processRuns, "-q", "-i", crowd10k.toString(), "-o", image);
+        int w = quick ? 1920 : 3840, h = quick ? 1080 : 2160;
+        Timing endToEnd = runs.tick1(quick ? 1 : 5, "-q", "-i", scene, "-o", image, "--width", "" + w, "--height",
+                "" + h, "--samples", "4");
+        log.printf("  whole runs: start-up %.0f ms (handout-style java run %.0f ms); 10 spheres %.0f ms, 10,000 "
+                + "spheres %.0f ms; %d x %d x 4 samples %.0f ms%n", startup.median(), handoutStyle.median(), ten.median(),
+                tenThousand.median(), w, h, endToEnd.median());
+        Files.deleteIfExists(Path.of(image));
+        return new Whole(phases, startup, handoutStyle, ten, tenThousand, endToEnd, w + " x " + h);
+    }
+
+    private static Scene load(Path file) {
+        return new SceneLoader(file, false).getScene();
+    }
+
+    private static String bundledTick1Scene() throws IOException {
+        try (InputStream in = Bench.class.getResourceAsStream("tick1.xml")) {
+            if (in == null) {
+                throw new IOException("the bundled tick1.xml is missing from the jar");
+            }
+            return new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        }
+    }
+}

@@ -1,0 +1,150 @@
+package gfx.tick1.bench;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.ZonedDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.style.Styler;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/** Writes the benchmark's three files: report.md, results.csv and speed-vs-error.png. */
+final class BenchReport {
+
+    /** The targets, so the report says plainly which hold on this machine. */
+    private static final double TARGET_MEGA_RAYS = 60;
+    private static final double TARGET_SCALING = 5;
+    private static final double TARGET_END_TO_END_MS = 1000;
+
+    private final boolean quick;
+    private final int cores;
+    private final List<Result> results;
+    private final Map<String, String> png;
+    private final String launcher;
+    private final Bench.Whole whole;
+
+    BenchReport(boolean quick, int cores, List<Result> results, Map<String, String> png, String launcher,
+            Bench.Whole whole) {
+        this.quick = quick;
+        this.cores = cores;
+        this.results = results;
+        this.png = png;
+        this.launcher = launcher;
+        this.whole = whole;
+    }
+
+    void write(Path out) throws IOException {
+        Files.writeString(out.resolve("results.csv"), csv());
+        Files.writeString(out.resolve("report.md"), markdown());
+        BitmapEncoder.saveBitmap(chart(), out.resolve("speed-vs-error.png").toString(), BitmapEncoder.BitmapFormat.PNG);
+    }
+
+    private String machine() {
+        return String.format(Locale.ROOT, "%s %s (%s), %d cores, %s %s, %s", System.getProperty("java.vm.name"),
+                System.getProperty("java.version"), System.getProperty("java.vendor"), cores,
+                System.getProperty("os.name"), System.getProperty("os.arch"),
+                ZonedDateTime.now().format(DateTimeFormatter.ISO_OFFSET_DATE_TIME));
+    }
+
+    private String csv() {
+        StringBuilder csv = new StringBuilder("variant,scene,width,height,samples,threads,median_ms,min_ms,max_ms,"
+                + "mrays_per_s,error_against,error_width,error_height,max_level_difference,differing_share,psnr_db,rms_levels\n");
+        for (Result r : results) {
+            csv.append(String.format(Locale.ROOT, "\"%s\",%s,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%s,%d,%d,%d,%.6f,%s,%.4f%n",
+                    r.variant(), r.scene(), r.width(), r.height(), r.samples(), r.threads(), r.timing().median(),
+                    r.timing().min(), r.timing().max(), r.megaRaysPerSecond(), r.errorAgainst(), r.errorWidth(),
+                    r.errorHeight(), r.error().maxDifference(), r.differingShare(), psnr(r), r.rmsError()));
+        }
+        return csv.toString();
+    }
+
+    private static String psnr(Result r) {
+        double psnr = r.error().psnr();
+        return Double.isInfinite(psnr) ? "inf" : String.format(Locale.ROOT, "%.2f", psnr);
+    }
+
+    private String markdown() {
+        StringBuilder md = new StringBuilder();
+        md.append("# tick1 benchmark").append(quick ? " (quick)" : "").append("\n\n");
+        md.append("Machine: ").append(machine()).append(".\n\n");
+        md.append("Each variant renders the same scene in one process; times are wall-clock per frame after warm-up "
+                + "(median, and the fastest and slowest run as the spread). Error is measured on a smaller frame "
+                + "against `truth` (the double-double TruthRenderer), against `256 samples` for anti-aliased "
+                + "variants, or against `brute force` for the BVH.\n\n");
+        md.append("| variant | scene | frame | threads | median ms | spread ms | Mrays/s | error against | max levels "
+                + "| pixels differing | PSNR dB |\n|---|---|---|---:|---:|---:|---:|---|---:|---:|---:|\n");
+        for (Result r : results) {
+            md.append(String.format(Locale.ROOT, "| %s | %s | %d x %d%s | %d | %.1f | %.1f - %.1f | %.1f | %s | %d | %.3f%% | %s |%n",
+                    r.variant(), r.scene(), r.width(), r.height(), r.samples() > 1 ? " x " + r.samples() : "", r.threads(),
+                    r.timing().median(), r.timing().min(), r.timing().max(), r.megaRaysPerSecond(), r.errorAgainst(),
+                    r.error().maxDifference(), 100 * r.differingShare(), psnr(r)));
+        }
+
+        md.append("\n## PNG encoding of one frame\n\n| encoder | median | size |\n|---|---:|---:|\n");
+        png.forEach((name, row) -> md.append("| ").append(name).append(" | ").append(row).append(" |\n"));
+
+        md.append("\n## Whole runs in fresh processes\n\nStarted through ").append(launcher)
+                .append("; JVM start and PNG encoding included; median of the runs.\n\n");
+        md.append("Where the time of one 640 x 480 render of tick1.xml goes (`tick1 --timings`, medians):\n\n"
+                + "| phase | ms |\n|---|---:|\n");
+        whole.phases().forEach((phase, ms) -> md.append(String.format(Locale.ROOT, "| %s | %.1f |%n", phase, ms)));
+        md.append(String.format(Locale.ROOT, "%n| run | median ms |%n|---|---:|%n"
+                + "| tick1, tick1.xml at 640 x 480 | %.0f |%n"
+                + "| plain `java` run of a handout-style single-threaded renderer, same scene | %.0f |%n"
+                + "| tick1, 10 spheres at 640 x 480 | %.0f |%n| tick1, 10,000 spheres at 640 x 480 | %.0f |%n"
+                + "| tick1, tick1.xml at %s with 4 samples | %.0f |%n",
+                whole.startup().median(), whole.handoutStyle().median(), whole.crowd10().median(),
+                whole.crowd10k().median(), whole.endToEndSize(), whole.endToEnd().median()));
+
+        md.append("\n## Targets\n\n");
+        Result fastest = results.stream().filter(r -> r.variant().startsWith("fast double, robust (default)")
+                && r.threads() == cores && r.scene().equals("tick1.xml")).findFirst().orElse(null);
+        if (fastest != null) {
+            md.append(target(String.format(Locale.ROOT, "default render of tick1.xml at %d x %d: %.1f Mrays/s (target %.0f)",
+                    fastest.width(), fastest.height(), fastest.megaRaysPerSecond(), TARGET_MEGA_RAYS),
+                    fastest.megaRaysPerSecond() >= TARGET_MEGA_RAYS));
+        }
+        double ratio = whole.crowd10k().median() / whole.crowd10().median();
+        md.append(target(String.format(Locale.ROOT, "whole run, 10,000 spheres / 10 spheres: %.2f (target at most %.0f)",
+                ratio, TARGET_SCALING), ratio <= TARGET_SCALING));
+        md.append(target(String.format(Locale.ROOT, "whole run at %s with 4 samples: %.0f ms (target about %.0f ms, a "
+                + "scalar C loop on one core)", whole.endToEndSize(), whole.endToEnd().median(), TARGET_END_TO_END_MS),
+                whole.endToEnd().median() <= TARGET_END_TO_END_MS));
+        md.append(target(String.format(Locale.ROOT, "start-up: tick1 %.0f ms against the handout-style java run %.0f ms",
+                whole.startup().median(), whole.handoutStyle().median()),
+                whole.startup().median() <= whole.handoutStyle().median()));
+        if (quick) {
+            md.append("\nA quick run uses small frames and few runs; its numbers are not the targets' measurements.\n");
+        }
+        md.append("\n![speed against error](speed-vs-error.png)\n");
+        return md.toString();
+    }
+
+    private static String target(String text, boolean met) {
+        return "- " + (met ? "met: " : "NOT met: ") + text + "\n";
+    }
+
+    /** Time per frame (log) against RMS error in levels, one point per variant. */
+    private XYChart chart() {
+        XYChart chart = new XYChartBuilder().width(1000).height(640).title("tick1: speed against error"
+                + (quick ? " (quick run)" : "")).xAxisTitle("time per frame, ms (log scale)")
+                .yAxisTitle("RMS error, levels").build();
+        chart.getStyler().setDefaultSeriesRenderStyle(org.knowm.xchart.XYSeries.XYSeriesRenderStyle.Scatter);
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.OutsideS);
+        chart.getStyler().setMarkerSize(10);
+        for (Result r : results) {
+            String label = String.format(Locale.ROOT, "%s, %d thread%s, %s %dx%d", r.variant(), r.threads(),
+                    r.threads() == 1 ? "" : "s", r.scene(), r.width(), r.height());
+            chart.addSeries(label, new double[] {r.timing().median()}, new double[] {r.rmsError()})
+                    .setMarker(r.scene().startsWith("crowd") ? SeriesMarkers.DIAMOND : SeriesMarkers.CIRCLE);
+        }
+        return chart;
+    }
+}
