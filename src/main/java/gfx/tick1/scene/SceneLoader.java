@@ -184,7 +184,7 @@ public final class SceneLoader {
             SourcePositions.Position at = positions.tagStart(locator.getLineNumber(), locator.getColumnNumber());
             depth++;
             if (++elements > MAX_ELEMENTS) {
-                throw error(at, "more than " + MAX_ELEMENTS + " elements: scene is too large");
+                throw error(at, "too many elements: scene files may have at most " + MAX_ELEMENTS);
             }
             if (depth == 1) {
                 if (!name.equals("scene")) {
