@@ -1,6 +1,7 @@
 package gfx.tick1;
 
 import gfx.tick1.image.PngOutput;
+import gfx.tick1.preview.Preview;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
@@ -22,6 +23,7 @@ import picocli.CommandLine.Spec;
 
 /** The command line: renders a Tick 1 scene file to a PNG image. */
 @Command(name = "tick1", mixinStandardHelpOptions = true, versionProvider = Version.class,
+        subcommands = {Preview.class},
         sortOptions = false, usageHelpAutoWidth = true,
         description = "Renders a Tick 1 scene (spheres, an ambient light, one point light, Phong shading) "
                 + "to a PNG image, pixel for pixel as the Cambridge Computer Graphics course expects.",

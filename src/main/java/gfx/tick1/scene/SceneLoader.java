@@ -83,6 +83,20 @@ public final class SceneLoader {
         parse(bytes);
     }
 
+    /**
+     * Loads a scene already in memory (the previewer's uploads, which touch no disk), naming it
+     * {@code fileName} in messages exactly as a file of that name would be named.
+     */
+    public SceneLoader(String fileName, byte[] contents, boolean strict) {
+        this.fileName = fileName;
+        this.strict = strict;
+        if (contents.length > MAX_FILE_BYTES) {
+            throw new SceneException(fileName + ": file is " + contents.length + " bytes, expected at most "
+                    + MAX_FILE_BYTES + " (64 MiB)");
+        }
+        parse(contents);
+    }
+
     public Scene getScene() {
         return scene;
     }

@@ -1,0 +1,243 @@
+package gfx.tick1.preview;
+
+import com.sun.net.httpserver.Headers;
+import com.sun.net.httpserver.HttpExchange;
+import com.sun.net.httpserver.HttpServer;
+import gfx.tick1.image.PngOutput;
+import gfx.tick1.render.Renderer;
+import gfx.tick1.scene.SceneException;
+import gfx.tick1.scene.SceneLoader;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.URI;
+import java.net.URLDecoder;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+
+/**
+ * The previewer's HTTP server, on 127.0.0.1 only. It answers:
+ * <ul>
+ *   <li>{@code GET /}, {@code /preview.js}, {@code /preview.css}: the page;</li>
+ *   <li>{@code GET /three/...}: three.js, from its WebJar;</li>
+ *   <li>{@code GET /api/scene} and {@code GET /api/render}: the scene named on the command line
+ *       (read afresh each time, so reloading the page shows the file as it is now), as JSON and as
+ *       the ray-traced PNG;</li>
+ *   <li>{@code POST /api/scene?name=N} and {@code POST /api/render?name=N}: the same for a scene
+ *       file the page uploads (the request body), parsed in memory: nothing is written to disk.</li>
+ * </ul>
+ * A scene the loader rejects is answered 422 with {@code {"error": message}}, the message being
+ * the CLI's own {@code file:line:column} line. The render is the CLI's: {@link Renderer} at the
+ * CLI's default 640 x 480.
+ */
+public final class PreviewServer implements AutoCloseable {
+
+    /** The CLI's default image size, so that the panel shows what {@code tick1 -i SCENE} writes. */
+    public static final int IMAGE_WIDTH = 640, IMAGE_HEIGHT = 480;
+    /** The name an upload is given in messages when the page sends none. */
+    private static final String UNNAMED = "scene.xml";
+
+    private final HttpServer server;
+    private final ExecutorService executor;
+    private final Path commandLineScene;
+    private final LoopbackGuard guard;
+    private final StaticFiles files = new StaticFiles();
+    private final String contentSecurityPolicy;
+
+    private PreviewServer(HttpServer server, ExecutorService executor, Path commandLineScene) {
+        this.server = server;
+        this.executor = executor;
+        this.commandLineScene = commandLineScene;
+        this.guard = new LoopbackGuard(server.getAddress().getPort());
+        // The page loads only its own files; its one inline script is the import map, allowed by hash.
+        this.contentSecurityPolicy = "default-src 'self'; script-src 'self' " + files.importMapHash()
+                + "; img-src 'self' blob: data:; object-src 'none'; base-uri 'none'; form-action 'none';"
+                + " frame-ancestors 'none'";
+    }
+
+    /**
+     * Starts a server on 127.0.0.1:{@code port} (0: any free port).
+     *
+     * @param commandLineScene the scene shown when the page opens, or null for none
+     * @throws IOException when the port cannot be bound (a {@link java.net.BindException} when taken)
+     */
+    public static PreviewServer start(Path commandLineScene, int port) throws IOException {
+        HttpServer server = HttpServer.create(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 0);
+        // A few threads, so that a long render does not hold up the page's other requests.
+        ExecutorService executor = Executors.newFixedThreadPool(4, task -> {
+            Thread thread = new Thread(task, "tick1-preview");
+            thread.setDaemon(true);
+            return thread;
+        });
+        PreviewServer preview = new PreviewServer(server, executor, commandLineScene);
+        server.createContext("/", preview::handle);
+        server.setExecutor(executor);
+        server.start();
+        return preview;
+    }
+
+    /** The page's address, e.g. {@code http://127.0.0.1:43125/}. */
+    public URI uri() {
+        return URI.create("http://127.0.0.1:" + server.getAddress().getPort() + "/");
+    }
+
+    @Override
+    public void close() {
+        server.stop(0);
+        executor.shutdownNow();
+    }
+
+    private void handle(HttpExchange exchange) throws IOException {
+        try {
+            route(exchange);
+        } catch (RuntimeException e) {
+            if (exchange.getResponseCode() != -1) {
+                throw e;   // the answer had begun: nothing better to do than drop the connection
+            }
+            // Reaches here only through a bug: say so on the page rather than drop the connection.
+            sendJson(exchange, 500, SceneJson.error("tick1 preview: internal error: " + e
+                    + " (please report this with the scene file)"));
+        } finally {
+            exchange.close();
+        }
+    }
+
+    private void route(HttpExchange exchange) throws IOException {
+        Headers headers = exchange.getResponseHeaders();
+        headers.set("X-Content-Type-Options", "nosniff");
+        headers.set("Referrer-Policy", "no-referrer");
+        String refusal = guard.refusal(exchange.getRequestHeaders());
+        if (refusal != null) {
+            sendText(exchange, 403, "Forbidden: " + refusal);
+            return;
+        }
+        String method = exchange.getRequestMethod();
+        String path = exchange.getRequestURI().getPath();
+        boolean api = path.equals("/api/scene") || path.equals("/api/render");
+        if (api && method.equals("GET")) {
+            answer(exchange, path, commandLineScene == null ? null : commandLineScene.toString(),
+                    () -> new SceneLoader(commandLineScene, false));
+        } else if (api && method.equals("POST")) {
+            String name = uploadName(exchange.getRequestURI().getRawQuery());
+            byte[] upload = readUpload(exchange, name);
+            if (upload != null) {
+                answer(exchange, path, name, () -> new SceneLoader(name, upload, false));
+            }
+        } else if (method.equals("GET")) {
+            StaticFiles.File file = files.find(path);
+            if (file == null) {
+                sendText(exchange, 404, "Not found");
+                return;
+            }
+            if (file.contentType().startsWith("text/html")) {
+                headers.set("Content-Security-Policy", contentSecurityPolicy);
+            }
+            send(exchange, 200, file.contentType(), file.bytes());
+        } else {
+            headers.set("Allow", api ? "GET, POST" : "GET");
+            sendText(exchange, 405, "Method not allowed");
+        }
+    }
+
+    /** A source of a loaded scene: the loader, which throws {@link SceneException} for a bad file. */
+    private interface SceneSource {
+        SceneLoader load();
+    }
+
+    /** Answers {@code /api/scene} with the scene as JSON, or {@code /api/render} with its PNG. */
+    private static void answer(HttpExchange exchange, String path, String name, SceneSource source)
+            throws IOException {
+        exchange.getResponseHeaders().set("Cache-Control", "no-store");
+        if (name == null) {
+            sendJson(exchange, 404, SceneJson.error("no scene was named on the command line"));
+            return;
+        }
+        SceneLoader loader;
+        try {
+            loader = source.load();
+        } catch (SceneException e) {
+            sendJson(exchange, 422, SceneJson.error(e.getMessage()));
+            return;
+        }
+        if (path.equals("/api/scene")) {
+            sendJson(exchange, 200, SceneJson.describe(name, loader.getScene(), loader.getWarnings()));
+        } else {
+            ByteArrayOutputStream png = new ByteArrayOutputStream();
+            PngOutput.write(new Renderer(IMAGE_WIDTH, IMAGE_HEIGHT).render(loader.getScene()), png);
+            send(exchange, 200, "image/png", png.toByteArray());
+        }
+    }
+
+    /**
+     * The request body, at most the loader's {@link SceneLoader#MAX_FILE_BYTES}. A larger one is
+     * answered 413 with the message the loader gives for a file that large, and null returned.
+     */
+    private static byte[] readUpload(HttpExchange exchange, String name) throws IOException {
+        String declared = exchange.getRequestHeaders().getFirst("Content-Length");
+        long length = declared == null ? 0 : parseLength(declared);
+        if (length > SceneLoader.MAX_FILE_BYTES) {
+            sendJson(exchange, 413, SceneJson.error(name + ": file is " + length + " bytes, expected at most "
+                    + SceneLoader.MAX_FILE_BYTES + " (64 MiB)"));
+            return null;
+        }
+        byte[] bytes;
+        try (InputStream in = exchange.getRequestBody()) {
+            // One byte past the limit tells a body that is too long from one just long enough.
+            bytes = in.readNBytes((int) SceneLoader.MAX_FILE_BYTES + 1);
+        }
+        if (bytes.length > SceneLoader.MAX_FILE_BYTES) {
+            sendJson(exchange, 413, SceneJson.error(name + ": file is larger than " + SceneLoader.MAX_FILE_BYTES
+                    + " bytes (64 MiB)"));
+            return null;
+        }
+        return bytes;
+    }
+
+    private static long parseLength(String declared) {
+        try {
+            return Long.parseLong(declared.strip());
+        } catch (NumberFormatException e) {
+            return Long.MAX_VALUE;
+        }
+    }
+
+    /**
+     * The uploaded file's name from {@code ?name=}, used only in messages: control characters
+     * replaced and the length bounded, as the loader does with values it quotes.
+     */
+    private static String uploadName(String rawQuery) {
+        if (rawQuery != null) {
+            for (String parameter : rawQuery.split("&")) {
+                if (parameter.startsWith("name=")) {
+                    String name = URLDecoder.decode(parameter.substring(5), StandardCharsets.UTF_8)
+                            .replaceAll("\\p{Cntrl}", "?");
+                    if (!name.isBlank()) {
+                        return name.length() <= 200 ? name : name.substring(0, 197) + "...";
+                    }
+                }
+            }
+        }
+        return UNNAMED;
+    }
+
+    private static void sendText(HttpExchange exchange, int status, String text) throws IOException {
+        send(exchange, status, "text/plain; charset=utf-8", text.getBytes(StandardCharsets.UTF_8));
+    }
+
+    private static void sendJson(HttpExchange exchange, int status, String json) throws IOException {
+        send(exchange, status, "application/json; charset=utf-8", json.getBytes(StandardCharsets.UTF_8));
+    }
+
+    private static void send(HttpExchange exchange, int status, String contentType, byte[] body) throws IOException {
+        exchange.getResponseHeaders().set("Content-Type", contentType);
+        exchange.sendResponseHeaders(status, body.length == 0 ? -1 : body.length);
+        try (OutputStream out = exchange.getResponseBody()) {
+            out.write(body);
+        }
+    }
+}
