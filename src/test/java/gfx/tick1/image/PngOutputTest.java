@@ -59,13 +59,10 @@ class PngOutputTest {
 
     @Test
     void replacesAnExistingFileAndLeavesNoTemporaryFile() throws IOException {
-        Path target = dir.resolve("a.png");
-        Files.writeString(target, "old");
+        // target already holds an earlier image (see writeAnEarlierImage).
         PngOutput.write(image(), target);
         assertThat(ImageIO.read(target.toFile())).isNotNull();
-        try (Stream<Path> files = Files.list(dir)) {
-            assertThat(files).containsExactly(target);
-        }
+        assertThat(filesInDir()).containsExactly(target);
     }
 
     @Test
