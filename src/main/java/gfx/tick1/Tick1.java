@@ -1,8 +1,9 @@
 package gfx.tick1;
 
+import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.preview.Preview;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
@@ -65,6 +66,12 @@ public final class Tick1 implements Callable<Integer> {
             description = "Image height (default: ${DEFAULT-VALUE}, at most " + MAX_DIMENSION + ").")
     private int height;
 
+    @Option(names = "--samples", paramLabel = "N", defaultValue = "1",
+            description = "Rays per pixel, averaged before the conversion to bytes (default: ${DEFAULT-VALUE}, the "
+                    + "faithful image through pixel centres; at most " + SamplePattern.MAX_SAMPLES + "). The same "
+                    + "image on every run.")
+    private int samples;
+
     @Option(names = "--threads", paramLabel = "N",
             description = "Threads to render with (default: all ${sys:tick1.cores} cores). The image is the same "
                     + "for any number.")
@@ -75,6 +82,11 @@ public final class Tick1 implements Callable<Integer> {
 
     @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
     private boolean quiet;
+
+    @Option(names = "--timings", hidden = true, description = "Print where the run's time went.")
+    private boolean showTimings;
+
+    private final Timings timings = new Timings();
 
     private final OutputStream binaryOut;
 
@@ -88,6 +100,7 @@ public final class Tick1 implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
+        Timings.mainStarted();
         System.exit(commandLine(new Tick1()).execute(args));
     }
 
@@ -113,6 +126,7 @@ public final class Tick1 implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
+        timings.end("command line");
         String usage = checkOptions();
         if (usage != null) {
             err.println("tick1: " + usage + " (see tick1 --help)");
@@ -134,8 +148,15 @@ public final class Tick1 implements Callable<Integer> {
             return EXIT_BAD_SCENE;
         }
 
+        timings.end("scene");
         BufferedImage image = render(scene, err);
-        return write(image, err);
+        timings.end("render");
+        int status = write(image, err);
+        timings.end("png");
+        if (showTimings) {
+            timings.print(err);
+        }
+        return status;
     }
 
     /** Checks what picocli's types cannot: ranges, and that the frame fits in memory. */
@@ -145,6 +166,9 @@ public final class Tick1 implements Callable<Integer> {
         }
         if (height < 1 || height > MAX_DIMENSION) {
             return "--height " + height + ": must be from 1 to " + MAX_DIMENSION;
+        }
+        if (samples < 1 || samples > SamplePattern.MAX_SAMPLES) {
+            return "--samples " + samples + ": must be from 1 to " + SamplePattern.MAX_SAMPLES;
         }
         int cores = Runtime.getRuntime().availableProcessors();
         if (threads != null && (threads < 1 || threads > 256)) {
@@ -166,7 +190,7 @@ public final class Tick1 implements Callable<Integer> {
     }
 
     private BufferedImage render(Scene scene, PrintWriter err) {
-        Renderer renderer = new Renderer(width, height);
+        FastRenderer renderer = new FastRenderer(width, height, new SamplePattern(samples));
         Progress progress = new Progress(err, height, !quiet && System.console() != null);
         ForkJoinPool pool = new ForkJoinPool(threads);
         try {

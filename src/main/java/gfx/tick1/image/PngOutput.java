@@ -11,7 +11,6 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.FileAttribute;
 import java.nio.file.attribute.PosixFilePermissions;
-import javax.imageio.ImageIO;
 
 /**
  * Writes PNG files so that a failure never leaves a half-written image: the PNG goes to a
@@ -103,9 +102,7 @@ public final class PngOutput {
 
     /** Encodes {@code image} as PNG onto a stream (standard output, for {@code --output -}). */
     public static void write(BufferedImage image, OutputStream out) throws IOException {
-        if (!ImageIO.write(image, "png", out)) {
-            throw new IOException("no PNG writer is available in this Java runtime");
-        }
+        PngEncoder.write(image, out);
         out.flush();
     }
 }

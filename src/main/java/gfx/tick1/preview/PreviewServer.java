@@ -4,7 +4,8 @@ import com.sun.net.httpserver.Headers;
 import com.sun.net.httpserver.HttpExchange;
 import com.sun.net.httpserver.HttpServer;
 import gfx.tick1.image.PngOutput;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.fast.FastRenderer;
+import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
 import java.io.ByteArrayOutputStream;
@@ -168,7 +169,7 @@ public final class PreviewServer implements AutoCloseable {
             sendJson(exchange, 200, SceneJson.describe(name, loader.getScene(), loader.getWarnings()));
         } else {
             ByteArrayOutputStream png = new ByteArrayOutputStream();
-            PngOutput.write(new Renderer(IMAGE_WIDTH, IMAGE_HEIGHT).render(loader.getScene()), png);
+            PngOutput.write(new FastRenderer(IMAGE_WIDTH, IMAGE_HEIGHT, new SamplePattern(1)).render(loader.getScene()), png);
             send(exchange, 200, "image/png", png.toByteArray());
         }
     }

@@ -32,6 +32,14 @@ public final class Camera {
      * reproduced pixel for pixel only with it.
      */
     public Ray castRay(int x, int y) {
+        return castRay((double) x, (double) y);
+    }
+
+    /**
+     * The ray through a point inside a pixel, for anti-aliasing: (x + dx, y + dy) with offsets
+     * in pixels. Whole numbers give exactly the rays of {@link #castRay(int, int)}.
+     */
+    public Ray castRay(double x, double y) {
         double x_pos = (x_step_m - width_m) / 2 + x * x_step_m;
         double y_pos = (y_step_m + height_m) / 2 - y * y_step_m;
         return new Ray(ORIGIN, new Vector3(x_pos, y_pos, 1).normalised());

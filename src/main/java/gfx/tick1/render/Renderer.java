@@ -72,25 +72,35 @@ public class Renderer {
 
     /** Renders the scene on all cores; each pixel is computed alone, so the image is the same. */
     public BufferedImage render(Scene scene) {
-        return render(scene, row -> { });
+        return render(scene, new SamplePattern(1), row -> { });
     }
 
     /**
-     * Renders the scene, one {@code castRay} per pixel, rows shared among the cores.
-     * {@code rowsDone} hears the running count of finished rows, from any thread.
+     * Renders the scene, rows shared among the cores. With one sample, one {@code castRay} per
+     * pixel through its centre; with more, the average of the samples' colours, taken before
+     * the conversion to bytes. {@code rowsDone} hears the count of finished rows, from any thread.
      */
-    public BufferedImage render(Scene scene, IntConsumer rowsDone) {
+    public BufferedImage render(Scene scene, SamplePattern samples, IntConsumer rowsDone) {
         Camera camera = new Camera(width, height);
         int[] pixels = new int[width * height];
         AtomicInteger finished = new AtomicInteger();
         IntStream.range(0, height).parallel().forEach(y -> {
             for (int x = 0; x < width; x++) {
-                pixels[y * width + x] = trace(scene, camera.castRay(x, y)).toRGB();
+                pixels[y * width + x] = pixel(scene, camera, samples, x, y).toRGB();
             }
             rowsDone.accept(finished.incrementAndGet());
         });
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
         image.setRGB(0, 0, width, height, pixels, 0, width);
         return image;
+    }
+
+    /** The mean colour of the pixel's samples; one sample is exactly the ray through its centre. */
+    private Vector3 pixel(Scene scene, Camera camera, SamplePattern samples, int x, int y) {
+        Vector3 sum = trace(scene, camera.castRay(x + samples.dx(0), y + samples.dy(0)));
+        for (int i = 1; i < samples.size(); i++) {
+            sum = sum.add(trace(scene, camera.castRay(x + samples.dx(i), y + samples.dy(i))));
+        }
+        return sum.scale(1.0 / samples.size());
     }
 }

@@ -3,9 +3,11 @@ package gfx.tick1.fuzz;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
+import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.render.Renderer;
+import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
@@ -28,7 +30,8 @@ import java.nio.file.Path;
  *
  * <p>The property fuzzed: whatever the bytes, the loader either returns a scene that respects every
  * documented bound or throws a {@link SceneException} with one printable line naming the file;
- * nothing else may escape, and a scene it accepts always renders and encodes.
+ * nothing else may escape, and a scene it accepts always renders (the fast renderer with and
+ * without its BVH giving the readable Renderer's pixels) and encodes.
  */
 class SceneFuzzTest {
 
@@ -45,7 +48,14 @@ class SceneFuzzTest {
         if (scene == null) {
             return;
         }
-        BufferedImage image = new Renderer(8, 6).render(scene);
+        // The CLI renders with the fast renderer; the readable Renderer is its oracle, and the two
+        // must agree pixel for pixel, with the BVH and without it.
+        BufferedImage image = new FastRenderer(8, 6, new SamplePattern(1), true).render(scene);
+        int[] pixels = image.getRGB(0, 0, 8, 6, null, 0, 8);
+        assertThat(new FastRenderer(8, 6, new SamplePattern(1), false).render(scene).getRGB(0, 0, 8, 6, null, 0, 8))
+                .as("fast renderer without the BVH").isEqualTo(pixels);
+        assertThat(new Renderer(8, 6).render(scene).getRGB(0, 0, 8, 6, null, 0, 8))
+                .as("readable renderer").isEqualTo(pixels);
         ByteArrayOutputStream png = new ByteArrayOutputStream();
         PngOutput.write(image, png);
         assertThat(png.size()).as("PNG bytes").isPositive();

@@ -1,0 +1,91 @@
+package gfx.tick1.fast;
+
+import gfx.tick1.math.Vector3;
+import gfx.tick1.scene.PointLight;
+import gfx.tick1.scene.Scene;
+import gfx.tick1.scene.Sphere;
+import java.util.List;
+
+/**
+ * A scene laid out as arrays of doubles for the fast kernel: one entry per sphere, in file order.
+ *
+ * <p>Every camera ray starts at the origin O = 0, so the handout's per-sphere terms that do not
+ * depend on the ray are computed once here, with the same operations the readable code performs
+ * per ray (f = O - C = 0 - C; c = f.f - r^2), which gives the same bits.
+ */
+final class FlatScene {
+
+    final int size;
+    /** f = O - C for O = 0. */
+    final double[] fx, fy, fz;
+    /** The constant term of the quadratic, f.f - r^2. */
+    final double[] c;
+    final double[] cx, cy, cz, radius;
+    /** C_diff. */
+    final double[] red, green, blue;
+    final double ambientRed, ambientGreen, ambientBlue;
+    final boolean lit;
+    final double lightX, lightY, lightZ, lightRed, lightGreen, lightBlue, intensity;
+
+    FlatScene(Scene scene) {
+        List<Sphere> spheres = scene.getObjects();
+        size = spheres.size();
+        fx = new double[size];
+        fy = new double[size];
+        fz = new double[size];
+        c = new double[size];
+        cx = new double[size];
+        cy = new double[size];
+        cz = new double[size];
+        radius = new double[size];
+        red = new double[size];
+        green = new double[size];
+        blue = new double[size];
+        for (int i = 0; i < size; i++) {
+            Sphere sphere = spheres.get(i);
+            Vector3 centre = sphere.getPosition();
+            cx[i] = centre.x;
+            cy[i] = centre.y;
+            cz[i] = centre.z;
+            radius[i] = sphere.getRadius();
+            fx[i] = 0 - centre.x;
+            fy[i] = 0 - centre.y;
+            fz[i] = 0 - centre.z;
+            c[i] = (fx[i] * fx[i] + fy[i] * fy[i] + fz[i] * fz[i]) - Math.pow(radius[i], 2);
+            red[i] = sphere.getColour().x;
+            green[i] = sphere.getColour().y;
+            blue[i] = sphere.getColour().z;
+        }
+        Vector3 ambient = scene.getAmbientLighting();
+        ambientRed = ambient.x;
+        ambientGreen = ambient.y;
+        ambientBlue = ambient.z;
+        PointLight light = scene.getPointLight();
+        lit = light != null;
+        lightX = lit ? light.getPosition().x : 0;
+        lightY = lit ? light.getPosition().y : 0;
+        lightZ = lit ? light.getPosition().z : 0;
+        lightRed = lit ? light.getColour().x : 0;
+        lightGreen = lit ? light.getColour().y : 0;
+        lightBlue = lit ? light.getColour().z : 0;
+        intensity = lit ? light.getIntensity() : 0;
+    }
+
+    /**
+     * The nearest root s &gt; 0 of sphere i along the unit direction D from the origin, or
+     * +infinity: the handout's quadratic, term for term as {@code Sphere.intersectionWith}
+     * computes it, with a = D.D passed in because it is the same for every sphere.
+     */
+    double nearestRoot(int i, double dx, double dy, double dz, double a) {
+        double b = 2 * (dx * fx[i] + dy * fy[i] + dz * fz[i]);
+        double discriminant = b * b - 4 * a * c[i];
+        if (discriminant < 0) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double root = Math.sqrt(discriminant);
+        double s1 = (-b - root) / (2 * a);
+        double s2 = (-b + root) / (2 * a);
+        double s = s1 > 0 ? s1 : s2;
+        return s > 0 ? s : Double.POSITIVE_INFINITY;
+    }
+}
