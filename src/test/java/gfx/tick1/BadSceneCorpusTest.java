@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
@@ -73,6 +74,18 @@ class BadSceneCorpusTest {
         assertThat(Files.readAllBytes(output)).as("the earlier image").isEqualTo(EARLIER_IMAGE);
         try (Stream<Path> files = Files.list(dir)) {
             assertThat(files).as("files beside the output").containsExactly(output);
+        }
+    }
+
+    @Test
+    void theParsersMessagesAreTheSameWhateverTheMachinesLanguage() throws IOException {
+        Case unquoted = cases().stream().filter(c -> c.file().equals("unquoted-attribute.xml")).findFirst().orElseThrow();
+        Locale before = Locale.getDefault();
+        Locale.setDefault(Locale.GERMANY); // the JDK's parser has German messages
+        try {
+            eachBadFileGivesItsOneLineErrorAndLeavesTheOldImage(unquoted);
+        } finally {
+            Locale.setDefault(before);
         }
     }
 

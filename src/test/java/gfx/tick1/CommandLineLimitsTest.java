@@ -32,6 +32,9 @@ class CommandLineLimitsTest {
             --width 99999999999     | Invalid value for option '--width': '99999999999' is not an int
             --width 1.5             | Invalid value for option '--width': '1.5' is not an int
             --height abc            | Invalid value for option '--height': 'abc' is not an int
+            --samples 0             | --samples 0: must be from 1 to 1024
+            --samples 1025          | --samples 1025: must be from 1 to 1024
+            --samples lots          | Invalid value for option '--samples': 'lots' is not an int
             --threads 0             | --threads 0: must be from 1 to 256
             --threads 257           | --threads 257: must be from 1 to 256
             --threads -1            | --threads -1: must be from 1 to 256
