@@ -1,12 +1,16 @@
 package gfx.tick1;
 
+import gfx.tick1.compare.CompareCommand;
+import gfx.tick1.diagnose.DiagnoseCommand;
 import gfx.tick1.fast.FastRenderer;
+import gfx.tick1.grade.GradeCommand;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.preview.Preview;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
+import gfx.tick1.starter.StarterCommand;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -24,7 +28,8 @@ import picocli.CommandLine.Spec;
 
 /** The command line: renders a Tick 1 scene file to a PNG image. */
 @Command(name = "tick1", mixinStandardHelpOptions = true, versionProvider = Version.class,
-        subcommands = {Preview.class},
+        subcommands = {CompareCommand.class, DiagnoseCommand.class, GradeCommand.class, StarterCommand.class,
+            Preview.class},
         sortOptions = false, usageHelpAutoWidth = true,
         description = "Renders a Tick 1 scene (spheres, an ambient light, one point light, Phong shading) "
                 + "to a PNG image, pixel for pixel as the Cambridge Computer Graphics course expects.",
@@ -110,7 +115,8 @@ public final class Tick1 implements Callable<Integer> {
         CommandLine commandLine = new CommandLine(command);
         commandLine.setParameterExceptionHandler((e, args) -> {
             PrintWriter err = e.getCommandLine().getErr();
-            err.println("tick1: " + e.getMessage() + " (see tick1 --help)");
+            String name = e.getCommandLine().getCommandSpec().qualifiedName();
+            err.println(name + ": " + e.getMessage() + " (see " + name + " --help)");
             err.flush();
             return EXIT_USAGE;
         });

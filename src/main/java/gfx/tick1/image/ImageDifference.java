@@ -4,43 +4,50 @@ import java.awt.image.BufferedImage;
 
 /**
  * How two images of the same size differ, channel by channel, in 8-bit levels: the figures the
- * golden-image tests and the {@code compare} command report.
+ * golden-image tests and the {@code compare}, {@code diagnose} and {@code grade} commands report.
+ *
+ * <p>A pixel's difference is the largest difference of its three channels; the histogram of those
+ * per-pixel differences answers "how many pixels are within N levels" for any N at once.
  */
 public final class ImageDifference {
 
-    private final BufferedImage expected;
-    private final BufferedImage actual;
-    private final int differingPixels;
-    private final int maxDifference;
+    private final int width, height;
+    private final int[] expected;
+    private final int[] actual;
+    /** pixelsAt[d] = how many pixels differ by exactly d levels in their worst channel. */
+    private final int[] pixelsAt = new int[256];
     private final int[] maxPerChannel = new int[3];
     private final long[] sumPerChannel = new long[3];
+    private final long sumOfSquares;
     private int minX = Integer.MAX_VALUE, minY = Integer.MAX_VALUE, maxX = -1, maxY = -1;
 
-    private ImageDifference(BufferedImage expected, BufferedImage actual) {
-        this.expected = expected;
-        this.actual = actual;
-        int differing = 0;
-        for (int y = 0; y < expected.getHeight(); y++) {
-            for (int x = 0; x < expected.getWidth(); x++) {
-                int a = expected.getRGB(x, y), b = actual.getRGB(x, y);
-                if ((a & 0xFFFFFF) == (b & 0xFFFFFF)) {
-                    continue;
-                }
-                differing++;
-                minX = Math.min(minX, x);
-                minY = Math.min(minY, y);
-                maxX = Math.max(maxX, x);
-                maxY = Math.max(maxY, y);
+    private ImageDifference(BufferedImage expectedImage, BufferedImage actualImage) {
+        width = expectedImage.getWidth();
+        height = expectedImage.getHeight();
+        expected = pixels(expectedImage);
+        actual = pixels(actualImage);
+        long squares = 0;
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                int a = expected[y * width + x], b = actual[y * width + x];
+                int worst = 0;
                 for (int c = 0; c < 3; c++) {
-                    int shift = 16 - 8 * c;
-                    int d = Math.abs((a >> shift & 0xFF) - (b >> shift & 0xFF));
+                    int d = Math.abs(channel(a, c) - channel(b, c));
+                    worst = Math.max(worst, d);
                     maxPerChannel[c] = Math.max(maxPerChannel[c], d);
                     sumPerChannel[c] += d;
+                    squares += (long) d * d;
+                }
+                pixelsAt[worst]++;
+                if (worst > 0) {
+                    minX = Math.min(minX, x);
+                    minY = Math.min(minY, y);
+                    maxX = Math.max(maxX, x);
+                    maxY = Math.max(maxY, y);
                 }
             }
         }
-        this.differingPixels = differing;
-        this.maxDifference = Math.max(maxPerChannel[0], Math.max(maxPerChannel[1], maxPerChannel[2]));
+        sumOfSquares = squares;
     }
 
     /** Compares two images; throws IllegalArgumentException with both sizes when they differ. */
@@ -52,13 +59,45 @@ public final class ImageDifference {
         return new ImageDifference(expected, actual);
     }
 
+    private static int[] pixels(BufferedImage image) {
+        return image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());
+    }
+
+    /** Channel 0 = red, 1 = green, 2 = blue of a packed 0xRRGGBB pixel. */
+    private static int channel(int rgb, int c) {
+        return rgb >> (16 - 8 * c) & 0xFF;
+    }
+
+    public int totalPixels() {
+        return width * height;
+    }
+
     public int differingPixels() {
-        return differingPixels;
+        return totalPixels() - pixelsAt[0];
+    }
+
+    /** How many pixels differ by at most {@code levels} in every channel. */
+    public int pixelsWithin(int levels) {
+        int within = 0;
+        for (int d = 0; d <= Math.min(levels, 255); d++) {
+            within += pixelsAt[d];
+        }
+        return within;
+    }
+
+    /** The share (0 to 1) of pixels that differ by at most {@code levels} in every channel. */
+    public double shareWithin(int levels) {
+        return (double) pixelsWithin(levels) / totalPixels();
+    }
+
+    /** True when no channel of any pixel differs by more than {@code levels}. */
+    public boolean isWithin(int levels) {
+        return maxDifference() <= levels;
     }
 
     /** The largest difference in any channel of any pixel, in levels (0 to 255). */
     public int maxDifference() {
-        return maxDifference;
+        return Math.max(maxPerChannel[0], Math.max(maxPerChannel[1], maxPerChannel[2]));
     }
 
     /** Largest difference of red, green and blue in turn. */
@@ -68,29 +107,24 @@ public final class ImageDifference {
 
     /** Mean absolute difference of red, green and blue in turn, over all pixels. */
     public double[] meanPerChannel() {
-        double pixels = (double) expected.getWidth() * expected.getHeight();
+        double pixels = totalPixels();
         return new double[] {sumPerChannel[0] / pixels, sumPerChannel[1] / pixels, sumPerChannel[2] / pixels};
+    }
+
+    /** Mean absolute difference over all channels of all pixels, in levels. */
+    public double meanDifference() {
+        return (sumPerChannel[0] + sumPerChannel[1] + sumPerChannel[2]) / (3.0 * totalPixels());
     }
 
     /** Peak signal-to-noise ratio in decibels over all channels; infinite for equal images. */
     public double psnr() {
-        double squared = 0;
-        for (int y = 0; y < expected.getHeight(); y++) {
-            for (int x = 0; x < expected.getWidth(); x++) {
-                int a = expected.getRGB(x, y), b = actual.getRGB(x, y);
-                for (int shift = 0; shift <= 16; shift += 8) {
-                    double d = (a >> shift & 0xFF) - (b >> shift & 0xFF);
-                    squared += d * d;
-                }
-            }
-        }
-        double mse = squared / (3.0 * expected.getWidth() * expected.getHeight());
+        double mse = sumOfSquares / (3.0 * totalPixels());
         return mse == 0 ? Double.POSITIVE_INFINITY : 10 * Math.log10(255.0 * 255.0 / mse);
     }
 
     /** The smallest rectangle holding every differing pixel, as "x0,y0 - x1,y1", or "none". */
     public String boundingBox() {
-        return differingPixels == 0 ? "none" : minX + "," + minY + " - " + maxX + "," + maxY;
+        return differingPixels() == 0 ? "none" : minX + "," + minY + " - " + maxX + "," + maxY;
     }
 
     /**
@@ -99,35 +133,34 @@ public final class ImageDifference {
      * truncation error is as visible as a wrong sphere.
      */
     public BufferedImage heatMap() {
-        int w = expected.getWidth(), h = expected.getHeight();
-        BufferedImage map = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
-        for (int y = 0; y < h; y++) {
-            for (int x = 0; x < w; x++) {
-                int a = expected.getRGB(x, y), b = actual.getRGB(x, y);
-                int d = 0;
-                for (int shift = 0; shift <= 16; shift += 8) {
-                    d = Math.max(d, Math.abs((a >> shift & 0xFF) - (b >> shift & 0xFF)));
-                }
-                if (d == 0) {
-                    int grey = ((a >> 16 & 0xFF) + (a >> 8 & 0xFF) + (a & 0xFF)) / 12;
-                    map.setRGB(x, y, grey << 16 | grey << 8 | grey);
-                } else {
-                    double t = Math.min(1, Math.log(d) / Math.log(64));
-                    int red = (int) (128 + 127 * Math.min(1, 2 * t));
-                    int green = (int) (255 * Math.max(0, 2 * t - 1));
-                    int blue = (int) (160 * Math.max(0, 3 * t - 2));
-                    map.setRGB(x, y, red << 16 | green << 8 | blue);
-                }
+        int[] map = new int[width * height];
+        for (int i = 0; i < map.length; i++) {
+            int a = expected[i], b = actual[i];
+            int d = 0;
+            for (int c = 0; c < 3; c++) {
+                d = Math.max(d, Math.abs(channel(a, c) - channel(b, c)));
+            }
+            if (d == 0) {
+                int grey = (channel(a, 0) + channel(a, 1) + channel(a, 2)) / 12;
+                map[i] = grey << 16 | grey << 8 | grey;
+            } else {
+                double t = Math.min(1, Math.log(d) / Math.log(64));
+                int red = (int) (128 + 127 * Math.min(1, 2 * t));
+                int green = (int) (255 * Math.max(0, 2 * t - 1));
+                int blue = (int) (160 * Math.max(0, 3 * t - 2));
+                map[i] = red << 16 | green << 8 | blue;
             }
         }
-        return map;
+        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        image.setRGB(0, 0, width, height, map, 0, width);
+        return image;
     }
 
     /** One line for a test failure or the command line. */
     public String summary() {
-        int total = expected.getWidth() * expected.getHeight();
+        int total = totalPixels();
         return String.format("%d of %d pixels differ (%.3f%%), max difference %d levels (R %d, G %d, B %d), "
-                + "bounding box %s", differingPixels, total, 100.0 * differingPixels / total, maxDifference,
+                + "bounding box %s", differingPixels(), total, 100.0 * differingPixels() / total, maxDifference(),
                 maxPerChannel[0], maxPerChannel[1], maxPerChannel[2], boundingBox());
     }
 }

@@ -2,7 +2,6 @@ package gfx.tick1.image;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
-import static org.assertj.core.api.Assertions.within;
 
 import java.awt.image.BufferedImage;
 import org.junit.jupiter.api.Test;
@@ -20,45 +19,58 @@ class ImageDifferenceTest {
     }
 
     @Test
-    void identicalImagesHaveNoDifferenceAndInfinitePsnr() {
+    void equalImagesHaveNoDifferenceAndInfinitePsnr() {
         ImageDifference d = ImageDifference.between(filled(4, 3, 0x123456), filled(4, 3, 0x123456));
         assertThat(d.differingPixels()).isZero();
-        assertThat(d.maxDifference()).isZero();
         assertThat(d.psnr()).isInfinite();
         assertThat(d.boundingBox()).isEqualTo("none");
+        assertThat(d.shareWithin(0)).isEqualTo(1.0);
     }
 
     @Test
-    void countsDifferingPixelsAndTheLargestDifferencePerChannel() {
-        BufferedImage actual = filled(4, 3, 0x101010);
-        actual.setRGB(1, 2, 0x131010);
-        actual.setRGB(3, 0, 0x10100A);
-        ImageDifference d = ImageDifference.between(filled(4, 3, 0x101010), actual);
+    void countsPixelsByTheirWorstChannel() {
+        BufferedImage expected = filled(4, 1, 0x101010);
+        BufferedImage actual = filled(4, 1, 0x101010);
+        actual.setRGB(1, 0, 0x111010); // 1 level in red
+        actual.setRGB(3, 0, 0x101013); // 3 levels in blue
+        ImageDifference d = ImageDifference.between(expected, actual);
         assertThat(d.differingPixels()).isEqualTo(2);
-        assertThat(d.maxPerChannel()).containsExactly(3, 0, 6);
-        assertThat(d.maxDifference()).isEqualTo(6);
-        assertThat(d.meanPerChannel()[2]).isCloseTo(6 / 12.0, within(1e-12));
-        assertThat(d.boundingBox()).isEqualTo("1,0 - 3,2");
+        assertThat(d.pixelsWithin(0)).isEqualTo(2);
+        assertThat(d.pixelsWithin(1)).isEqualTo(3);
+        assertThat(d.pixelsWithin(3)).isEqualTo(4);
+        assertThat(d.maxPerChannel()).containsExactly(1, 0, 3);
+        assertThat(d.isWithin(2)).isFalse();
+        assertThat(d.isWithin(3)).isTrue();
+        assertThat(d.boundingBox()).isEqualTo("1,0 - 3,0");
+        assertThat(d.meanDifference()).isEqualTo(4 / 12.0);
     }
 
     @Test
-    void psnrOfAUniformOneLevelErrorIsAbout48Decibels() {
-        ImageDifference d = ImageDifference.between(filled(8, 8, 0x808080), filled(8, 8, 0x818181));
-        assertThat(d.psnr()).isCloseTo(20 * Math.log10(255), within(1e-9));
+    void psnrOfAUniformOneLevelErrorIsFortyEightDecibels() {
+        // MSE = 1: PSNR = 10 log10(255^2) = 48.13 dB.
+        ImageDifference d = ImageDifference.between(filled(5, 5, 0x202020), filled(5, 5, 0x212121));
+        assertThat(d.psnr()).isCloseTo(48.13, org.assertj.core.data.Offset.offset(0.01));
     }
 
     @Test
-    void imagesOfDifferentSizesAreRefusedWithBothSizes() {
+    void sizesMustAgree() {
         assertThatThrownBy(() -> ImageDifference.between(filled(4, 3, 0), filled(3, 4, 0)))
+                .isInstanceOf(IllegalArgumentException.class)
                 .hasMessage("image sizes differ: expected 4 x 3, actual 3 x 4");
     }
 
     @Test
-    void heatMapMarksEveryDifferingPixelAndDimsTheRest() {
-        BufferedImage actual = filled(4, 3, 0xFFFFFF);
-        actual.setRGB(2, 1, 0xFFFFFE);
-        BufferedImage map = ImageDifference.between(filled(4, 3, 0xFFFFFF), actual).heatMap();
-        assertThat(map.getRGB(2, 1) >> 16 & 0xFF).as("a one-level error is still clearly red").isGreaterThan(100);
-        assertThat(map.getRGB(0, 0) & 0xFFFFFF).as("unchanged pixels are a dim grey").isEqualTo(0x3F3F3F);
+    void heatMapMarksExactlyTheDifferingPixels() {
+        BufferedImage expected = filled(3, 3, 0x808080);
+        BufferedImage actual = filled(3, 3, 0x808080);
+        actual.setRGB(2, 1, 0x818080);
+        BufferedImage map = ImageDifference.between(expected, actual).heatMap();
+        for (int y = 0; y < 3; y++) {
+            for (int x = 0; x < 3; x++) {
+                int red = map.getRGB(x, y) >> 16 & 0xFF, green = map.getRGB(x, y) >> 8 & 0xFF;
+                boolean marked = red > green;
+                assertThat(marked).as("pixel %d,%d", x, y).isEqualTo(x == 2 && y == 1);
+            }
+        }
     }
 }

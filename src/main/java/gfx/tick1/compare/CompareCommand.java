@@ -1,0 +1,109 @@
+package gfx.tick1.compare;
+
+import gfx.tick1.image.ImageDifference;
+import gfx.tick1.image.PngInput;
+import gfx.tick1.image.PngOutput;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code tick1 compare}: how far one image is from another, in figures and as a heat map. */
+@Command(name = "compare", mixinStandardHelpOptions = true, sortOptions = false, usageHelpAutoWidth = true,
+        description = "Compares two images pixel by pixel: how many pixels differ, the largest and mean "
+                + "difference per channel (in levels of 0 to 255), PSNR and the bounding box of the differences.",
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {
+            "0:every pixel is within the tolerance",
+            "1:some pixel differs by more than the tolerance",
+            "2:the images cannot be compared (bad command line, unreadable image, sizes differ)",
+            "3:the heat map could not be written",
+            "4:an internal error (a bug: please report it)"})
+public final class CompareCommand implements Callable<Integer> {
+
+    public static final int EXIT_SAME = 0;
+    public static final int EXIT_DIFFERENT = 1;
+    public static final int EXIT_CANNOT_COMPARE = 2;
+    public static final int EXIT_CANNOT_WRITE = 3;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "EXPECTED.png", description = "The image that is right.")
+    private Path expectedFile;
+
+    @Parameters(index = "1", paramLabel = "ACTUAL.png", description = "The image to check.")
+    private Path actualFile;
+
+    @Option(names = "--diff", paramLabel = "HEATMAP.png",
+            description = "Also write a heat map of the differences over a dimmed copy of the expected image: "
+                    + "dark red for 1 level, through orange, to yellow-white for 64 levels or more.")
+    private Path heatMapFile;
+
+    @Option(names = "--tolerance", paramLabel = "LEVELS", defaultValue = "0",
+            description = "The largest difference per channel that still counts as the same (default: "
+                    + "${DEFAULT-VALUE}, pixel for pixel).")
+    private int tolerance;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        if (tolerance < 0 || tolerance > 255) {
+            err.println("tick1 compare: --tolerance " + tolerance + ": must be from 0 to 255 (see tick1 compare --help)");
+            return EXIT_CANNOT_COMPARE;
+        }
+        ImageDifference difference;
+        try {
+            BufferedImage expected = PngInput.read(expectedFile);
+            BufferedImage actual = PngInput.read(actualFile);
+            difference = ImageDifference.between(expected, actual);
+        } catch (IOException | IllegalArgumentException e) {
+            err.println("tick1 compare: " + e.getMessage());
+            return EXIT_CANNOT_COMPARE;
+        }
+        print(difference, out);
+        if (heatMapFile != null) {
+            try {
+                PngOutput.write(difference.heatMap(), heatMapFile);
+            } catch (IOException e) {
+                err.println("tick1 compare: " + heatMapFile + ": cannot write the heat map: " + e.getMessage());
+                return EXIT_CANNOT_WRITE;
+            }
+            out.println("heat map: " + heatMapFile);
+        }
+        boolean same = difference.isWithin(tolerance);
+        out.println(same ? verdictSame(difference) : verdictDifferent(difference));
+        return same ? EXIT_SAME : EXIT_DIFFERENT;
+    }
+
+    private String verdictSame(ImageDifference difference) {
+        return difference.differingPixels() == 0 ? "SAME: identical pixel for pixel"
+                : "SAME within the tolerance of " + tolerance + (tolerance == 1 ? " level" : " levels");
+    }
+
+    private String verdictDifferent(ImageDifference difference) {
+        int beyond = difference.totalPixels() - difference.pixelsWithin(tolerance);
+        return "DIFFERENT: " + beyond + (beyond == 1 ? " pixel differs" : " pixels differ")
+                + (tolerance == 0 ? "" : " by more than " + tolerance + (tolerance == 1 ? " level" : " levels"));
+    }
+
+    /** The figures, one per line, in the order a person reads them. */
+    static void print(ImageDifference d, PrintWriter out) {
+        int[] max = d.maxPerChannel();
+        double[] mean = d.meanPerChannel();
+        out.printf("pixels differing: %d of %d (%.3f%%); within 1 level: %.3f%%%n", d.differingPixels(),
+                d.totalPixels(), 100.0 * d.differingPixels() / d.totalPixels(), 100 * d.shareWithin(1));
+        out.printf("max difference:   R %d, G %d, B %d levels%n", max[0], max[1], max[2]);
+        out.printf("mean difference:  R %.4f, G %.4f, B %.4f levels%n", mean[0], mean[1], mean[2]);
+        out.printf("PSNR:             %s%n", Double.isInfinite(d.psnr()) ? "infinite (identical)"
+                : String.format("%.2f dB", d.psnr()));
+        out.printf("bounding box:     %s%n", d.boundingBox());
+    }
+}

@@ -1,0 +1,113 @@
+package gfx.tick1.diagnose;
+
+/**
+ * The catalogue {@code diagnose} compares an image with: the stages a student's image passes
+ * through while following the handout, the correct image, and the mistakes students make.
+ * {@link VariantRenderer} renders each one; this enum only names and explains them.
+ */
+public enum Variant {
+
+    BACKGROUND_ONLY("background only", "",
+            "no ray hits a sphere: Sphere.intersectionWith still returns an empty RaycastHit, or its test for a hit "
+                    + "never succeeds",
+            "section 4, \"Ray-sphere intersection code\" (the six-step algorithm)"),
+    FLAT_COLOUR("flat colour", "Figure 4",
+            "the spheres are found but not shaded: Renderer.illuminate still returns the object's colour, the "
+                    + "starter code's placeholder",
+            "section 5, \"Phong illumination code\""),
+    AMBIENT_ONLY("ambient only", "Figure 5a",
+            "only the ambient term C_diff I_a is returned: the diffuse and specular terms are missing",
+            "section 5, \"The Phong illumination model\""),
+    AMBIENT_DIFFUSE("ambient + diffuse", "like Figure 5b",
+            "the specular term C_spec k_s I max(0, R.V)^n is missing, so there are no highlights",
+            "section 5, \"The Phong illumination model\" (specular lighting)"),
+    CORRECT("correct", "Figure 1",
+            "the full Phong model with the course's camera, intersection and byte conversion",
+            "nothing: this is the image the tester expects"),
+    UNNORMALISED_L_V("L and V not normalised", "Figure 6a",
+            "L and V are used without normalising them, so N.L and R.V grow with the distances to the light and the "
+                    + "camera and the image is too bright",
+            "section 5, Figure 6(a): N, L, R and V should all be unit vectors"),
+    UNCLAMPED_N_DOT_L("N.L not clamped", "Figure 6b",
+            "the diffuse term uses N.L instead of max(0, N.L), so the sides facing away from the light get negative "
+                    + "light and turn darker than the ambient light alone",
+            "section 5, Figure 6(b): make sure N.L is non-negative"),
+    UNCLAMPED_R_DOT_V("R.V not clamped", "Figure 6c",
+            "the specular term uses (R.V)^n instead of max(0, R.V)^n; with the even exponent n = 10 negative values "
+                    + "make false secondary highlights",
+            "section 5, Figure 6(c): make sure R.V is non-negative"),
+    FAR_ROOT("far root", "",
+            "the intersection takes the farther root of the quadratic, so each pixel shows the back of its sphere, "
+                    + "seen from inside",
+            "section 4, steps 4 and 5: use the solution closest to the ray origin"),
+    NO_FALL_OFF("no distance fall-off", "",
+            "the light does not weaken with distance: I must be the light's colour times intensity / (4 pi d^2), "
+                    + "which light.getIlluminationAt(distanceToLight) computes",
+            "section 5, \"Diffuse lighting\" (I decreases over distance) and the given line "
+                    + "Vector3 I = light.getIlluminationAt(distanceToLight)"),
+    FALL_OFF_WITHOUT_4PI("fall-off without 4 pi", "",
+            "the light falls off as intensity / d^2 without the 4 pi, so it is about 12.6 times too bright; "
+                    + "light.getIlluminationAt(distanceToLight) has the right formula",
+            "section 5, \"Phong illumination code\": the given line Vector3 I = light.getIlluminationAt(distanceToLight)"),
+    V_AWAY_FROM_CAMERA("V pointing away from the camera", "",
+            "V points from the camera to the surface (P) instead of back to the camera (-P), so highlights land "
+                    + "where the light is mirrored away from you; negating R (reflecting -L, a bounce) gives the same "
+                    + "picture",
+            "section 5, step 1: \"Remember that the camera is positioned at the origin\", and footnote 1"),
+    R_WRONG_WAY("R reflected the wrong way", "",
+            "R is computed as N reflected in L (N.reflectIn(L)) instead of L reflected in N (L.reflectIn(N)), so "
+                    + "the highlights are in the wrong place",
+            "section 5, step 1 and footnote 1: R is the mirror reflection of L in N"),
+    ROUNDED_BYTES("rounding instead of truncating", "",
+            "colours are rounded to bytes instead of truncated towards zero, so many pixels are one level too "
+                    + "bright; the course converts with an (int) cast, as Vector3.toRGB() does",
+            "the starter code's Renderer.render: keep image.setRGB(x, y, colour.toRGB())"),
+    UPSIDE_DOWN("image upside down", "",
+            "the rows are written bottom to top: pixel row y = 0 is the top of the image, as in the starter code's "
+                    + "Renderer.render and Camera.castRay",
+            "section 4, first paragraph: ray casting is written for you in Camera and Renderer, keep render's loops"),
+    RED_BLUE_SWAPPED("red and blue swapped", "",
+            "red and blue are exchanged: a colour Vector3 holds r, g, b in x, y, z and toRGB() packs them as "
+                    + "0xRRGGBB",
+            "section 2, \"Vector3\": colours are x, y, z = r, g, b");
+
+    private final String label;
+    private final String figure;
+    private final String explanation;
+    private final String reread;
+
+    Variant(String label, String figure, String explanation, String reread) {
+        this.label = label;
+        this.figure = figure;
+        this.explanation = explanation;
+        this.reread = reread;
+    }
+
+    /** A short name, with the handout figure that shows it, if any: "N.L not clamped (Figure 6b)". */
+    public String title() {
+        return figure.isEmpty() ? label : label + " (" + figure + ")";
+    }
+
+    public String label() {
+        return label;
+    }
+
+    /** The handout figure showing this stage or mistake, such as "Figure 6b", or "" when none does. */
+    public String figure() {
+        return figure;
+    }
+
+    /** One sentence (without a capital or a full stop) on what is wrong, for the winner of a diagnosis. */
+    public String explanation() {
+        return explanation;
+    }
+
+    /** Where in the handout to look. */
+    public String reread() {
+        return reread;
+    }
+
+    public boolean isCorrect() {
+        return this == CORRECT;
+    }
+}

@@ -1,0 +1,58 @@
+package gfx.tick1.scene;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * The scene files shipped inside the program: the handout's {@code tick1.xml} (the default
+ * scene of {@code diagnose}) and the grading scene {@code grade} uses as its hidden scene.
+ */
+public final class BundledScenes {
+
+    /** The handout's task scene, the same file as scenes/tick1.xml. */
+    public static final String TICK1 = "tick1.xml";
+    /** The hidden grading scene. */
+    public static final String HIDDEN = "hidden.xml";
+    /** The scenes {@code grade} renders when not given {@code --scenes}, in order. */
+    public static final List<String> GRADING = List.of(TICK1, HIDDEN);
+
+    private static final String FOLDER = "/gfx/tick1/scenes/";
+
+    private BundledScenes() {
+    }
+
+    /** Writes the bundled scene {@code name} into {@code directory} under the same name. */
+    public static Path extract(String name, Path directory) throws IOException {
+        Path target = directory.resolve(name);
+        try (InputStream in = BundledScenes.class.getResourceAsStream(FOLDER + name)) {
+            if (in == null) {
+                throw new IOException("no bundled scene called " + name);
+            }
+            Files.write(target, in.readAllBytes());
+        }
+        return target;
+    }
+
+    /** Loads the bundled scene {@code name} (through a temporary file: the loader reads files). */
+    public static Scene load(String name) {
+        try {
+            Path directory = Files.createTempDirectory("tick1-scene");
+            try {
+                Path file = extract(name, directory);
+                try {
+                    return new SceneLoader(file, true).getScene();
+                } finally {
+                    Files.deleteIfExists(file);
+                }
+            } finally {
+                Files.deleteIfExists(directory);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+}

@@ -1,0 +1,69 @@
+package gfx.tick1.starter;
+
+import gfx.tick1.starter.StarterKit.KitFile;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/** {@code tick1 starter}: writes the student's starting kit, exactly what {@code grade} compiles against. */
+@Command(name = "starter", mixinStandardHelpOptions = true, sortOptions = false, usageHelpAutoWidth = true,
+        description = "Writes the Tick 1 starter kit: src/gfx/tick1/ with the given classes (Camera, PointLight, "
+                + "Ray, RaycastHit, Scene, SceneLoader, Tick1, Vector3), Sphere.java and Renderer.java with the "
+                + "handout's TODOs, and basic_scene.xml.",
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {
+            "0:the kit was written",
+            "2:the command line is wrong, or a file would be overwritten (see --force)",
+            "3:the kit could not be written",
+            "4:an internal error (a bug: please report it)"})
+public final class StarterCommand implements Callable<Integer> {
+
+    public static final int EXIT_WOULD_OVERWRITE = 2;
+    public static final int EXIT_CANNOT_WRITE = 3;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Option(names = "--out", paramLabel = "DIR", required = true,
+            description = "The folder to write the kit into (created if missing).")
+    private Path folder;
+
+    @Option(names = "--force", description = "Overwrite files of an earlier kit in the folder.")
+    private boolean force;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        List<KitFile> files = StarterKit.files();
+        if (!force) {
+            for (KitFile file : files) {
+                Path target = folder.resolve(file.path());
+                if (Files.exists(target)) {
+                    err.println("tick1 starter: " + target + " already exists; use --force to overwrite the kit");
+                    return EXIT_WOULD_OVERWRITE;
+                }
+            }
+        }
+        try {
+            for (KitFile file : files) {
+                file.writeUnder(folder);
+            }
+        } catch (IOException e) {
+            err.println("tick1 starter: " + folder + ": cannot write the kit: " + e.getMessage());
+            return EXIT_CANNOT_WRITE;
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        out.println("Wrote the starter kit to " + folder + ":");
+        files.forEach(file -> out.println("  " + file.path()));
+        out.println("Students edit and submit " + StarterKit.SOURCE_FOLDER + "Sphere.java and "
+                + StarterKit.SOURCE_FOLDER + "Renderer.java.");
+        return 0;
+    }
+}

@@ -1,0 +1,67 @@
+package gfx.tick1.diagnose;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import gfx.tick1.image.PngInput;
+import gfx.tick1.scene.BundledScenes;
+import gfx.tick1.scene.SceneLoader;
+import gfx.tick1.tools.UpdateReferenceImages;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * The diagnosis names the handout's own figures, read from {@code ../shared/handout-figures}
+ * when it exists (never copied in), and never calls a correct image a mistake.
+ */
+class DiagnoserTest {
+
+    private static final Path FIGURES = Path.of("..", "shared", "handout-figures");
+    /** The handout's Figure 6 images carry a red frame this wide, drawn for the handout. */
+    private static final int FIGURE_6_FRAME = 12;
+
+    private static Diagnosis diagnoseFigure(String file, int border) throws IOException {
+        Path figure = FIGURES.resolve(file);
+        assumeTrue(Files.exists(figure), "skipped: " + figure.toAbsolutePath()
+                + " is not here; check out the shared folder beside the project to run it");
+        return new Diagnoser(border).diagnose(PngInput.read(figure), BundledScenes.load(BundledScenes.TICK1));
+    }
+
+    @ParameterizedTest(name = "{0} is {1}")
+    @CsvSource({
+        "fig4-flat-colour.png, FLAT_COLOUR, 0",
+        "fig5a-ambient.png, AMBIENT_ONLY, 0",
+        "fig6a-unnormalised-L-V.png, UNNORMALISED_L_V, " + FIGURE_6_FRAME,
+        "fig6b-no-max-NdotL.png, UNCLAMPED_N_DOT_L, " + FIGURE_6_FRAME,
+        "fig6c-no-max-RdotV.png, UNCLAMPED_R_DOT_V, " + FIGURE_6_FRAME})
+    void namesTheHandoutsFiguresPixelForPixel(String file, Variant expected, int border) throws IOException {
+        Diagnosis diagnosis = diagnoseFigure(file, border);
+        assertThat(diagnosis.closest().variant()).as(String.join("\n", diagnosis.report())).isEqualTo(expected);
+        assertThat(diagnosis.closest().exactShare()).as("the spec's rule reproduces the figure exactly").isEqualTo(1);
+    }
+
+    @Test
+    void callsFigure1CorrectThoughAnOlderBuildMadeIt() throws IOException {
+        Diagnosis diagnosis = diagnoseFigure("fig1-final.png", 0);
+        assertThat(diagnosis.closest().variant()).as(String.join("\n", diagnosis.report())).isEqualTo(Variant.CORRECT);
+    }
+
+    static Stream<Path> scenes() throws IOException {
+        return UpdateReferenceImages.scenesUnder(Path.of("scenes")).stream();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    void everyReferenceImageIsDiagnosedCorrect(Path scene) throws IOException {
+        Path reference = UpdateReferenceImages.referenceFor(Path.of("scenes"), Path.of("reference-images"), scene);
+        Diagnosis diagnosis = new Diagnoser().diagnose(PngInput.read(reference), new SceneLoader(scene, false).getScene());
+        assertThat(diagnosis.closest().variant()).as(String.join("\n", diagnosis.report())).isEqualTo(Variant.CORRECT);
+        assertThat(diagnosis.closest().exactShare()).isEqualTo(1);
+    }
+}

@@ -1,0 +1,64 @@
+package gfx.tick1.diagnose;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gfx.tick1.image.ImageDifference;
+import gfx.tick1.render.Renderer;
+import gfx.tick1.scene.BundledScenes;
+import gfx.tick1.scene.Scene;
+import gfx.tick1.scene.SceneLoader;
+import gfx.tick1.tools.UpdateReferenceImages;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
+
+class VariantRendererTest {
+
+    static Stream<Path> scenes() throws IOException {
+        return UpdateReferenceImages.scenesUnder(Path.of("scenes")).stream();
+    }
+
+    /** The catalogue's "correct" entry may never drift from the reference renderer. */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    void correctVariantIsTheReferenceRendererPixelForPixel(Path file) {
+        Scene scene = new SceneLoader(file, false).getScene();
+        assertSameAsReference(scene, file.toString());
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {BundledScenes.TICK1, BundledScenes.HIDDEN})
+    void correctVariantIsTheReferenceRendererOnTheBundledScenes(String name) {
+        assertSameAsReference(BundledScenes.load(name), name);
+    }
+
+    private static void assertSameAsReference(Scene scene, String name) {
+        BufferedImage reference = new Renderer(640, 480).render(scene);
+        BufferedImage correct = new VariantRenderer(640, 480).render(scene, Variant.CORRECT);
+        ImageDifference difference = ImageDifference.between(reference, correct);
+        assertThat(difference.differingPixels()).as("%s: %s", name, difference.summary()).isZero();
+    }
+
+    /**
+     * Every entry of the catalogue shows on both grading scenes, even in a small image: its render
+     * is diagnosed as itself, so no two entries are the same picture and none is the correct one.
+     */
+    @ParameterizedTest(name = "{0}")
+    @EnumSource(Variant.class)
+    void everyVariantIsTellableFromAllOthersOnTheGradingScenes(Variant variant) {
+        for (String name : BundledScenes.GRADING) {
+            Scene scene = BundledScenes.load(name);
+            BufferedImage image = new VariantRenderer(160, 120).render(scene, variant);
+            Diagnosis diagnosis = new Diagnoser().diagnose(image, scene);
+            List<Diagnosis.Candidate> top = diagnosis.top(2);
+            assertThat(top.get(0).variant()).as("%s: %s", name, diagnosis.report()).isEqualTo(variant);
+            assertThat(top.get(1).exactShare()).as("%s: runner-up %s", name, top.get(1).variant()).isLessThan(1);
+        }
+    }
+}

@@ -1,0 +1,203 @@
+package gfx.tick1.grade;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gfx.tick1.CliRun;
+import gfx.tick1.diagnose.Variant;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * {@code tick1 grade} through the real entry point, on student-style solutions: the correct one,
+ * one for each mistake of the diagnose catalogue, and ones that do not compile, loop, throw or
+ * exit. Images are 160 x 120 to keep the suite quick; every catalogue entry shows at that size
+ * (VariantRendererTest checks it).
+ */
+class GradeCommandTest {
+
+    private static final String[] SMALL = {"--width", "160", "--height", "120"};
+    private static final String DIFFUSE = "k_d * Math.max(0, NdotL)";
+    private static final String RGB = "image.setRGB(x, y, linearRGB.toRGB());";
+    private static final String NEAR_ROOT = "double s = s1 > 0 ? s1 : s2;";
+
+    @TempDir
+    Path dir;
+
+    private CliRun grade(StudentSolution solution, String... options) throws IOException {
+        Path[] files = solution.writeTo(dir.resolve("student"));
+        List<String> args = new java.util.ArrayList<>(List.of("grade", "--sphere", files[0].toString(),
+                "--renderer", files[1].toString(), "--report", dir.resolve("report").toString()));
+        args.addAll(List.of(SMALL));
+        args.addAll(List.of(options));
+        return CliRun.of(args.toArray(String[]::new));
+    }
+
+    @Test
+    void theCorrectSolutionPassesWithTheCoursesWords() throws IOException {
+        CliRun run = grade(StudentSolution.correct());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS")
+                .endsWith(GradeCommand.CONGRATULATIONS + System.lineSeparator());
+        assertThat(run.err()).isEmpty();
+    }
+
+    @Test
+    void theCorrectSolutionPassesOnEverySceneOfTheProject() throws IOException {
+        CliRun run = grade(StudentSolution.correct(), "--scenes", "scenes");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("scenes/hundred-spheres.xml: PASS", "scenes/no-ambient.xml: PASS")
+                .doesNotContain("FAIL");
+    }
+
+    /** The starter SceneLoader must read what the reference loader reads, defaults included. */
+    @Test
+    void theStarterLoaderReadsDefaultsNestingAndTheLastLightAsTheReferenceDoes() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Files.writeString(scenes.resolve("defaults.xml"), """
+                <scene>
+                  <point-light x="2" y="2" colour="#FF0000"/>
+                  <sphere z="5" colour="#00FF00">
+                    <sphere x="1.5" y="0.5" z="6" radius="0.5" colour="#0000FF"/>
+                  </sphere>
+                  <point-light x="-1" y="3" z="1" colour="#FFFFFF" intensity="80"/>
+                </scene>
+                """);
+        CliRun run = grade(StudentSolution.correct(), "--scenes", scenes.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("defaults.xml: PASS");
+    }
+
+    /** Each mistake of the catalogue, made as a student would make it in Sphere.java or Renderer.java. */
+    static Stream<Arguments> mistakes() {
+        StudentSolution correct = StudentSolution.correct();
+        return Stream.of(
+                Arguments.of(Variant.BACKGROUND_ONLY, StudentSolution.untouchedStarterKit()),
+                Arguments.of(Variant.FLAT_COLOUR, correct.withStarterRenderer()),
+                Arguments.of(Variant.AMBIENT_ONLY, correct.editRenderer(
+                        "return ambient.add(diffuse).add(specular);", "return ambient;")),
+                Arguments.of(Variant.AMBIENT_DIFFUSE, correct.editRenderer(
+                        "return ambient.add(diffuse).add(specular);", "return ambient.add(diffuse);")),
+                Arguments.of(Variant.UNNORMALISED_L_V, correct
+                        .editRenderer("subtract(P).normalised();", "subtract(P);")
+                        .editRenderer("Vector3 V = P.scale(-1).normalised();", "Vector3 V = P.scale(-1);")),
+                Arguments.of(Variant.UNCLAMPED_N_DOT_L, correct.editRenderer(DIFFUSE, "k_d * NdotL")),
+                Arguments.of(Variant.UNCLAMPED_R_DOT_V, correct.editRenderer(
+                        "Math.pow(Math.max(0, RdotV), n)", "Math.pow(RdotV, n)")),
+                Arguments.of(Variant.FAR_ROOT, correct.editSphere(NEAR_ROOT, "double s = s2;")),
+                Arguments.of(Variant.NO_FALL_OFF, correct.editRenderer("light.getIlluminationAt(distanceToLight)",
+                        "light.getColour().scale(light.getIntensity() / (Math.PI * 4))")),
+                Arguments.of(Variant.FALL_OFF_WITHOUT_4PI, correct.editRenderer(
+                        "light.getIlluminationAt(distanceToLight)",
+                        "light.getColour().scale(light.getIntensity() / Math.pow(distanceToLight, 2))")),
+                Arguments.of(Variant.V_AWAY_FROM_CAMERA, correct.editRenderer(
+                        "Vector3 V = P.scale(-1).normalised();", "Vector3 V = P.normalised();")),
+                Arguments.of(Variant.R_WRONG_WAY, correct.editRenderer("L.reflectIn(N)", "N.reflectIn(L)")),
+                Arguments.of(Variant.ROUNDED_BYTES, correct.editRenderer(RGB, "image.setRGB(x, y, "
+                        + "(int) Math.round(255 * Math.max(0, Math.min(1, linearRGB.x))) << 16 "
+                        + "| (int) Math.round(255 * Math.max(0, Math.min(1, linearRGB.y))) << 8 "
+                        + "| (int) Math.round(255 * Math.max(0, Math.min(1, linearRGB.z))));")),
+                Arguments.of(Variant.UPSIDE_DOWN, correct.editRenderer(RGB,
+                        "image.setRGB(x, height - 1 - y, linearRGB.toRGB());")),
+                Arguments.of(Variant.RED_BLUE_SWAPPED, correct.editRenderer(RGB,
+                        "image.setRGB(x, y, new Vector3(linearRGB.z, linearRGB.y, linearRGB.x).toRGB());")));
+    }
+
+    @Test
+    void everyMistakeOfTheCatalogueHasAStudentSolution() {
+        assertThat(mistakes().map(arguments -> arguments.get()[0]))
+                .containsExactlyInAnyOrder(Stream.of(Variant.values()).filter(v -> !v.isCorrect()).toArray());
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("mistakes")
+    void aMistakeFailsWithItsDiagnosisOnEveryScene(Variant mistake, StudentSolution solution) throws IOException {
+        CliRun run = grade(solution);
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).as(run.transcript())
+                .contains("tick1.xml: FAIL", "hidden.xml: FAIL", "FAILED: 2 of 2 scenes wrong.")
+                .doesNotContain(GradeCommand.CONGRATULATIONS);
+        assertThat(run.out().lines().filter(line -> line.startsWith("  closest: ")))
+                .as(run.transcript()).hasSize(2)
+                .allMatch(line -> line.startsWith("  closest: " + mistake.title() + " (100.000% of pixels exact"));
+        assertThat(run.out()).contains("reread: handout " + mistake.reread());
+    }
+
+    @Test
+    void aFailingSceneLeavesItsHeatMapWhereTheReportSays() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
+        Path heatMap = dir.resolve("report").resolve("1-tick1-diff.png");
+        assertThat(run.out()).contains("heat map: " + heatMap);
+        assertThat(heatMap).exists();
+        assertThat(dir.resolve("report").resolve("1-tick1-yours.png")).exists();
+    }
+
+    @Test
+    void codeThatDoesNotCompileIsReportedWithTheStudentsFileAndLine() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editSphere(NEAR_ROOT, "double s = s1 > 0 ? s1 : s2"));
+        Path sphere = dir.resolve("student").resolve("Sphere.java");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).startsWith("FAILED: the code does not compile (1 error):")
+                .contains(sphere + ":" + StudentSolution.sphereLineOf(NEAR_ROOT) + ":")
+                .contains("error: ';' expected")
+                .doesNotContain("PASS", GradeCommand.CONGRATULATIONS);
+    }
+
+    @Test
+    void codeThatUsesAMissingMethodIsReportedWithTheStudentsFile() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * N.dotProduct(L)"));
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).contains(dir.resolve("student").resolve("Renderer.java") + ":")
+                .contains("error: cannot find symbol");
+    }
+
+    @Test
+    void anInfiniteLoopIsStoppedAtTheTimeLimitAndReported() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editSphere(NEAR_ROOT, NEAR_ROOT + " while (s > 0) { }"),
+                "--time-limit", "3");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).contains("tick1.xml: FAIL: no image within the time limit of 3 s (an infinite loop?)",
+                "hidden.xml: FAIL: not rendered").doesNotContain(GradeCommand.CONGRATULATIONS);
+    }
+
+    @Test
+    void anExceptionIsReportedWithWhereTheStudentsCodeThrewIt() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer("L.reflectIn(N)", "L.reflectIn(null)"));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).contains("tick1.xml: FAIL: the code threw java.lang.NullPointerException",
+                "at gfx.tick1.Renderer.illuminate(Renderer.java:").doesNotContain("StudentHarness");
+    }
+
+    @Test
+    void systemExitInTheStudentsCodeIsReportedNotInherited() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer("return image;", "System.exit(0); return image;"));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).contains("tick1.xml: FAIL: the program ended while rendering this scene, with exit "
+                + "status 0 (does the code call System.exit?)");
+    }
+
+    @Test
+    void aMissingStudentFileIsOneLineAndExitTwo() {
+        CliRun run = CliRun.of("grade", "--sphere", dir.resolve("nope.java").toString(), "--renderer",
+                dir.resolve("Renderer.java").toString());
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err()).isEqualTo("tick1 grade: " + dir.resolve("nope.java") + ": no such file"
+                + System.lineSeparator());
+    }
+
+    @Test
+    void aScenesFolderWithoutScenesIsOneLineAndExitTwo() throws IOException {
+        Files.createDirectories(dir.resolve("empty"));
+        CliRun run = grade(StudentSolution.correct(), "--scenes", dir.resolve("empty").toString());
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines()).hasSize(1);
+        assertThat(run.err()).contains("no *.xml scene files");
+    }
+}
