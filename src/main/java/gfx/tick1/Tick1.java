@@ -195,8 +195,9 @@ public final class Tick1 implements Callable<Integer> {
         long needed = 8L * width * height;
         long available = Runtime.getRuntime().maxMemory() / 2;
         if (needed > available) {
-            return String.format("a %d x %d image needs about %d MiB, more than this Java may use (%d MiB); "
-                    + "raise it with JAVA_OPTS=-Xmx...", width, height, needed >> 20, available >> 20);
+            return String.format("a %d x %d image needs about %d MiB, more than half of the %d MiB this Java "
+                    + "may use; raise that with JAVA_OPTS=-Xmx...", width, height, needed >> 20,
+                    Runtime.getRuntime().maxMemory() >> 20);
         }
         if (threads == null) {
             threads = cores;
@@ -226,6 +227,11 @@ public final class Tick1 implements Callable<Integer> {
         try {
             if (output.equals("-")) {
                 PngOutput.write(image, binaryOut);
+                // System.out is a PrintStream, which records a failed write (a closed pipe, a
+                // full disk) instead of throwing.
+                if (binaryOut instanceof java.io.PrintStream printStream && printStream.checkError()) {
+                    throw new IOException("standard output was closed or could not be written");
+                }
             } else {
                 PngOutput.write(image, Path.of(output));
             }

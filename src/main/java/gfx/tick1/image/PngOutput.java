@@ -3,35 +3,59 @@ package gfx.tick1.image;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.FileAttribute;
+import java.nio.file.attribute.PosixFilePermissions;
 
 /**
  * Writes PNG files so that a failure never leaves a half-written image: the PNG goes to a
  * temporary file beside the target and is renamed over it only once complete. A rename within
  * one directory is atomic on POSIX file systems, so readers see the old file or the new one.
+ *
+ * <p>If the write fails (a full disk, say) the temporary file is deleted and the exception
+ * passed on. If the JVM is stopped meanwhile (Ctrl-C, SIGTERM, System.exit) a shutdown hook
+ * deletes it. Only a hard kill (SIGKILL, power loss) can leave one behind: a hidden file named
+ * {@code .NAME.png.RANDOM.tmp}, never the target itself.
  */
 public final class PngOutput {
+
+    /** Encodes an image onto a stream; tests substitute one that fails part way. */
+    @FunctionalInterface
+    interface Encoder {
+        void encode(BufferedImage image, OutputStream out) throws IOException;
+    }
 
     private PngOutput() {
     }
 
     /** Writes {@code image} to {@code target}, replacing it only when the whole PNG is on disk. */
     public static void write(BufferedImage image, Path target) throws IOException {
+        write(image, target, PngOutput::write);
+    }
+
+    static void write(BufferedImage image, Path target, Encoder encoder) throws IOException {
         Path absolute = target.toAbsolutePath();
         Path directory = absolute.getParent();
         if (Files.isDirectory(absolute)) {
             throw new IOException("is a directory, expected a file name for the PNG");
         }
-        if (directory == null || !Files.isDirectory(directory)) {
+        if (directory == null || !Files.exists(directory)) {
             throw new IOException("directory " + directory + " does not exist");
         }
-        Path temporary = Files.createTempFile(directory, "." + absolute.getFileName() + ".", ".tmp");
+        if (!Files.isDirectory(directory)) {
+            throw new IOException(directory + " is not a directory");
+        }
+        Path temporary = createTemporary(directory, absolute.getFileName().toString());
+        Thread deleteOnShutdown = new Thread(() -> deleteQuietly(temporary), "tick1-delete-temporary-png");
+        Runtime.getRuntime().addShutdownHook(deleteOnShutdown);
         try {
             try (OutputStream out = Files.newOutputStream(temporary)) {
-                write(image, out);
+                encoder.encode(image, out);
             }
             try {
                 Files.move(temporary, absolute, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
@@ -39,7 +63,40 @@ public final class PngOutput {
                 Files.move(temporary, absolute, StandardCopyOption.REPLACE_EXISTING);
             }
         } finally {
-            Files.deleteIfExists(temporary);
+            deleteQuietly(temporary);
+            try {
+                Runtime.getRuntime().removeShutdownHook(deleteOnShutdown);
+            } catch (IllegalStateException e) {
+                // The JVM is already shutting down: the hook runs anyway, and deletes nothing twice.
+            }
+        }
+    }
+
+    /**
+     * An empty hidden file beside the target. Files.createTempFile alone would make it readable
+     * by its owner only, and the finished PNG would keep that; asking for rw-rw-rw- gives what
+     * any new file gets, as the operating system's umask trims it (usually to rw-r--r--).
+     */
+    private static Path createTemporary(Path directory, String name) throws IOException {
+        String prefix = "." + name + ".";
+        try {
+            FileAttribute<?> ordinary = PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-rw-rw-"));
+            return Files.createTempFile(directory, prefix, ".tmp", ordinary);
+        } catch (UnsupportedOperationException e) {
+            return Files.createTempFile(directory, prefix, ".tmp"); // not a POSIX file system
+        } catch (AccessDeniedException e) {
+            throw new IOException("cannot create a file in " + directory + " (permission denied)");
+        } catch (FileSystemException e) {
+            String reason = e.getReason() == null ? "" : " (" + e.getReason() + ")";
+            throw new IOException("cannot create a file in " + directory + reason);
+        }
+    }
+
+    private static void deleteQuietly(Path file) {
+        try {
+            Files.deleteIfExists(file);
+        } catch (IOException e) {
+            // Nothing more can be done; the name starts with a dot and ends in .tmp.
         }
     }
 

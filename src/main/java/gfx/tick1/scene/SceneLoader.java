@@ -16,10 +16,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.regex.Pattern;
-import javax.xml.XMLConstants;
 import javax.xml.parsers.ParserConfigurationException;
-import javax.xml.parsers.SAXParser;
-import javax.xml.parsers.SAXParserFactory;
 import org.xml.sax.Attributes;
 import org.xml.sax.InputSource;
 import org.xml.sax.Locator;
@@ -46,6 +43,11 @@ public final class SceneLoader {
     public static final long MAX_FILE_BYTES = 64L * 1024 * 1024;
     /** Scenes with more elements than this are refused rather than exhausting memory. */
     public static final int MAX_ELEMENTS = 1_000_000;
+    /**
+     * At most this many warnings are kept; the rest are counted in one last line, so that a
+     * hostile file of a million nested elements cannot fill memory and the terminal with them.
+     */
+    public static final int MAX_WARNINGS = 100;
     /** The largest magnitude accepted for any coordinate, radius or intensity. */
     public static final double MAX_MAGNITUDE = 1e16;
 
@@ -55,8 +57,10 @@ public final class SceneLoader {
             "ambient-light", Set.of("colour"));
 
     // A plain decimal number as people write it in a scene file. Java's own parser would also
-    // take "NaN", "0x1p3", "1d" and "Infinity", none of which belongs in a scene.
-    private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
+    // take "NaN", "0x1p3", "1d" and "Infinity", none of which belongs in a scene. The quantifiers
+    // are possessive (never give back what they matched): with ordinary ones, \d+\.?\d* tries
+    // every split of a long run of digits before failing, quadratic time on a hostile file.
+    private static final Pattern DECIMAL = Pattern.compile("[+-]?+(\\d++\\.?+\\d*+|\\.\\d++)([eE][+-]?+\\d++)?+");
     private static final Pattern NON_FINITE = Pattern.compile("[+-]?(nan|inf|infinity)", Pattern.CASE_INSENSITIVE);
     private static final Pattern COLOUR = Pattern.compile("#[0-9A-Fa-f]{6}");
 
@@ -64,6 +68,7 @@ public final class SceneLoader {
     private final boolean strict;
     private final Scene scene = new Scene();
     private final List<String> warnings = new ArrayList<>();
+    private int warningsLeftOut;
 
     /** The starter code's constructor: loads the file or throws {@link SceneException}. */
     public SceneLoader(String filename) {
@@ -98,7 +103,12 @@ public final class SceneLoader {
 
     /** One line each, in the same file:line:column form as errors; the render goes on. */
     public List<String> getWarnings() {
-        return List.copyOf(warnings);
+        if (warningsLeftOut == 0) {
+            return List.copyOf(warnings);
+        }
+        List<String> all = new ArrayList<>(warnings);
+        all.add(fileName + ": warning: " + warningsLeftOut + " more warnings like these, not shown");
+        return List.copyOf(all);
     }
 
     private static Path toPath(String filename) {
@@ -143,14 +153,14 @@ public final class SceneLoader {
         SourcePositions positions = new SourcePositions(decodeLeniently(bytes));
         try {
             InputSource source = new InputSource(new ByteArrayInputStream(bytes));
-            newSecureParser().parse(source, new Handler(positions));
+            SafeXml.newParser().parse(source, new Handler(positions));
         } catch (SceneException e) {
             throw e;
         } catch (SAXParseException e) {
             throw new SceneException(fileName + ":" + e.getLineNumber() + ":" + e.getColumnNumber()
-                    + ": " + describeParseError(e));
+                    + ": " + SafeXml.describe(e));
         } catch (SAXException | IOException | ParserConfigurationException e) {
-            throw new SceneException(fileName + ": malformed XML: " + oneLine(e.getMessage()));
+            throw new SceneException(fileName + ": malformed XML: " + SafeXml.oneLine(e.getMessage()));
         }
     }
 
@@ -163,31 +173,6 @@ public final class SceneLoader {
         } catch (java.nio.charset.CharacterCodingException e) {
             return "";
         }
-    }
-
-    private static SAXParser newSecureParser() throws ParserConfigurationException, SAXException {
-        SAXParserFactory factory = SAXParserFactory.newInstance();
-        factory.setNamespaceAware(false);
-        factory.setValidating(false);
-        factory.setXIncludeAware(false);
-        factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
-        factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-        factory.setFeature("http://xml.org/sax/features/external-general-entities", false);
-        factory.setFeature("http://xml.org/sax/features/external-parameter-entities", false);
-        factory.setFeature("http://apache.org/xml/features/nonvalidating/load-external-dtd", false);
-        return factory.newSAXParser();
-    }
-
-    private static String describeParseError(SAXParseException e) {
-        String message = oneLine(e.getMessage());
-        if (message.contains("disallow-doctype-decl") || message.contains("DOCTYPE")) {
-            return "DOCTYPE declaration: not allowed in scene files (no DTDs or entities), expected <scene>";
-        }
-        return "malformed XML: " + message;
-    }
-
-    private static String oneLine(String message) {
-        return message == null ? "unknown error" : message.replaceAll("\\s+", " ").trim();
     }
 
     /** Turns SAX events into scene objects, checking each element and attribute as it comes. */
@@ -213,7 +198,7 @@ public final class SceneLoader {
             SourcePositions.Position at = positions.tagStart(locator.getLineNumber(), locator.getColumnNumber());
             depth++;
             if (++elements > MAX_ELEMENTS) {
-                throw error(at, "more than " + MAX_ELEMENTS + " elements: scene is too large");
+                throw error(at, "too many elements: scene files may have at most " + MAX_ELEMENTS);
             }
             if (depth == 1) {
                 if (!name.equals("scene")) {
@@ -343,7 +328,11 @@ public final class SceneLoader {
             if (strict) {
                 throw error(at, message + " (an error under --strict)");
             }
-            warnings.add(fileName + (at == null ? "" : ":" + at) + ": warning: " + message);
+            if (warnings.size() < MAX_WARNINGS) {
+                warnings.add(fileName + (at == null ? "" : ":" + at) + ": warning: " + message);
+            } else {
+                warningsLeftOut++;
+            }
         }
     }
 

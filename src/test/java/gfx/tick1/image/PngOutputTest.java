@@ -2,20 +2,47 @@ package gfx.tick1.image;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.FileSystems;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+/** The image file is replaced whole or not at all, and no temporary file outlives a run. */
 class PngOutputTest {
+
+    private static final BufferedImage IMAGE = new BufferedImage(4, 3, BufferedImage.TYPE_INT_RGB);
 
     @TempDir
     Path dir;
+
+    private Path target;
+    private final byte[] earlierImage = "an earlier image".getBytes(StandardCharsets.UTF_8);
+
+    @BeforeEach
+    void writeAnEarlierImage() throws IOException {
+        target = dir.resolve("out.png");
+        Files.write(target, earlierImage);
+    }
+
+    private List<Path> filesInDir() throws IOException {
+        try (Stream<Path> files = Files.list(dir)) {
+            return files.toList();
+        }
+    }
 
     private static BufferedImage image() {
         BufferedImage image = new BufferedImage(3, 2, BufferedImage.TYPE_INT_RGB);
@@ -32,13 +59,10 @@ class PngOutputTest {
 
     @Test
     void replacesAnExistingFileAndLeavesNoTemporaryFile() throws IOException {
-        Path target = dir.resolve("a.png");
-        Files.writeString(target, "old");
+        // target already holds an earlier image (see writeAnEarlierImage).
         PngOutput.write(image(), target);
         assertThat(ImageIO.read(target.toFile())).isNotNull();
-        try (Stream<Path> files = Files.list(dir)) {
-            assertThat(files).containsExactly(target);
-        }
+        assertThat(filesInDir()).containsExactly(target);
     }
 
     @Test
@@ -47,5 +71,116 @@ class PngOutputTest {
         assertThatThrownBy(() -> PngOutput.write(image(), target)).isInstanceOf(IOException.class)
                 .hasMessageContaining("does not exist");
         assertThat(dir.resolve("missing")).doesNotExist();
+    }
+
+    @Test
+    void theImageIsEncodedIntoAHiddenTemporaryFileBesideTheTarget() throws IOException {
+        List<Path> seenWhileEncoding = new ArrayList<>();
+        PngOutput.write(IMAGE, target, (image, out) -> {
+            seenWhileEncoding.addAll(filesInDir());
+            PngOutput.write(image, out);
+        });
+        assertThat(seenWhileEncoding).hasSize(2).contains(target)
+                .anySatisfy(p -> assertThat(p.getFileName().toString()).startsWith(".out.png.").endsWith(".tmp"));
+        assertThat(ImageIO.read(target.toFile()).getWidth()).isEqualTo(4);
+        assertThat(filesInDir()).containsExactly(target);
+    }
+
+    @Test
+    void aWriteThatFailsPartWayLeavesTheEarlierImageAndNoTemporaryFile() {
+        assertThatThrownBy(() -> PngOutput.write(IMAGE, target, (image, out) -> {
+            out.write(new byte[] {(byte) 0x89, 'P', 'N', 'G'});
+            throw new IOException("No space left on device");
+        })).isInstanceOf(IOException.class).hasMessage("No space left on device");
+        assertThat(target).hasBinaryContent(earlierImage);
+        assertThat(dir.toFile().list()).containsExactly("out.png");
+    }
+
+    @Test
+    void aFailureOutsideIoAlsoLeavesTheEarlierImageAndNoTemporaryFile() {
+        assertThatThrownBy(() -> PngOutput.write(IMAGE, target, (image, out) -> {
+            throw new IllegalStateException("a bug in the encoder");
+        })).isInstanceOf(IllegalStateException.class);
+        assertThat(target).hasBinaryContent(earlierImage);
+        assertThat(dir.toFile().list()).containsExactly("out.png");
+    }
+
+    @Test
+    void aDirectoryThatIsAFileIsNamedAsSuch() throws IOException {
+        Path file = dir.resolve("notes.txt");
+        Files.writeString(file, "not a directory");
+        assertThatThrownBy(() -> PngOutput.write(IMAGE, file.resolve("out.png")))
+                .hasMessage(file + " is not a directory");
+    }
+
+    @Test
+    void anUnwritableDirectoryIsNamedAndLeftAsItWas() throws IOException {
+        assumeTrue(FileSystems.getDefault().supportedFileAttributeViews().contains("posix"), "POSIX permissions");
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("r-xr-xr-x"));
+        try {
+            assumeTrue(!Files.isWritable(dir), "root may write anywhere: nothing to test");
+            assertThatThrownBy(() -> PngOutput.write(IMAGE, target))
+                    .hasMessage("cannot create a file in " + dir + " (permission denied)");
+            assertThat(target).hasBinaryContent(earlierImage);
+        } finally {
+            Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwxr-xr-x"));
+        }
+    }
+
+    @Test
+    void theFinishedImageHasOrdinaryPermissionsNotPrivateTemporaryOnes() throws IOException {
+        assumeTrue(FileSystems.getDefault().supportedFileAttributeViews().contains("posix"), "POSIX permissions");
+        Files.delete(target);
+        PngOutput.write(IMAGE, target);
+        // Whatever the umask, a new file is readable by its owner and more than its owner.
+        assertThat(Files.getPosixFilePermissions(target))
+                .contains(PosixFilePermission.OWNER_READ, PosixFilePermission.OWNER_WRITE)
+                .containsAnyOf(PosixFilePermission.GROUP_READ, PosixFilePermission.OTHERS_READ);
+    }
+
+    /**
+     * A separate JVM starts writing the image, stalls part way (as a slow disk would) and is sent
+     * SIGINT, as Ctrl-C sends: its shutdown hook must delete the temporary file.
+     */
+    @Test
+    void anInterruptedWriteLeavesTheEarlierImageAndNoTemporaryFile() throws Exception {
+        Path kill = Path.of("/bin/kill");
+        assumeTrue(Files.isExecutable(kill), "needs /bin/kill to send SIGINT");
+        Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), StalledWrite.class.getName(), target.toString())
+                .redirectErrorStream(true).start();
+        try {
+            // StalledWrite prints one line once the temporary file holds part of the PNG.
+            String line = new String(process.getInputStream().readNBytes(StalledWrite.READY.length() + 1),
+                    StandardCharsets.UTF_8);
+            assertThat(line).startsWith(StalledWrite.READY);
+            assertThat(dir.toFile().list()).hasSize(2);
+
+            new ProcessBuilder(kill.toString(), "-INT", Long.toString(process.pid())).start().waitFor();
+            assertThat(process.waitFor(60, TimeUnit.SECONDS)).as("the writer stopped").isTrue();
+        } finally {
+            process.destroyForcibly();
+        }
+        assertThat(target).hasBinaryContent(earlierImage);
+        assertThat(dir.toFile().list()).containsExactly("out.png");
+    }
+
+    /** The other JVM of the test above. */
+    static final class StalledWrite {
+        static final String READY = "temporary file written";
+
+        public static void main(String[] args) throws Exception {
+            PngOutput.write(IMAGE, Path.of(args[0]), (image, out) -> {
+                out.write(new byte[] {(byte) 0x89, 'P', 'N', 'G'});
+                out.flush();
+                System.out.println(READY);
+                System.out.flush();
+                try {
+                    Thread.sleep(Long.MAX_VALUE);
+                } catch (InterruptedException e) {
+                    throw new IOException(e);
+                }
+            });
+        }
     }
 }

@@ -118,7 +118,7 @@ class SceneLoaderTest {
             zero radius           | <scene><sphere radius='0' colour='#FF0000'/></scene>          | scene.xml:1:16: sphere radius "0": must be a number greater than 0
             negative radius       | <scene><sphere radius='-1' colour='#FF0000'/></scene>         | scene.xml:1:16: sphere radius "-1": must be a number greater than 0
             negative intensity    | <scene><point-light intensity='-5' colour='#FF0000'/></scene> | scene.xml:1:21: point-light intensity "-5": must be a number of at least 0
-            truncated XML         | <scene><sphere colour='#FF0000'/>                             | scene.xml:1:34: malformed XML: XML document structures must start and end within the same entity.
+            truncated XML         | <scene><sphere colour='#FF0000'/>                             | scene.xml:1:34: malformed XML: the file ends in the middle of the scene (a tag, comment or element is left open), expected it to end with </scene>
             DOCTYPE               | <!DOCTYPE scene [<!ENTITY x 'y'>]><scene/>                    | scene.xml:1:10: DOCTYPE declaration: not allowed in scene files (no DTDs or entities), expected <scene>
             """)
     void rejectsBadInputWithOneLineNamingFileLineAndColumn(String what, String xml, String expected) throws IOException {

@@ -1,0 +1,123 @@
+package gfx.tick1.fuzz;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.code_intelligence.jazzer.junit.FuzzTest;
+import gfx.tick1.fast.FastRenderer;
+import gfx.tick1.image.PngOutput;
+import gfx.tick1.math.Vector3;
+import gfx.tick1.render.Renderer;
+import gfx.tick1.render.SamplePattern;
+import gfx.tick1.scene.Intersection;
+import gfx.tick1.scene.PointLight;
+import gfx.tick1.scene.Scene;
+import gfx.tick1.scene.SceneException;
+import gfx.tick1.scene.SceneLoader;
+import gfx.tick1.scene.Sphere;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+/**
+ * Coverage-guided fuzz tests (Jazzer) of the scene loader and of load, render and encode.
+ *
+ * <p>In the ordinary test run ("regression mode") each test runs once on every seed: the files of
+ * the bad-input corpus and the example scenes, which the build copies into the resource folder
+ * gfx/tick1/fuzz/SceneFuzzTestInputs, plus any crash Jazzer saved there. With JAZZER_FUZZ set, one
+ * of them is fuzzed for as long as asked; see docs/hostile-input.md for the command.
+ *
+ * <p>The property fuzzed: whatever the bytes, the loader either returns a scene that respects every
+ * documented bound or throws a {@link SceneException} with one printable line naming the file;
+ * nothing else may escape, and a scene it accepts always renders (the fast renderer with and
+ * without its BVH giving the readable Renderer's pixels) and encodes.
+ */
+class SceneFuzzTest {
+
+    private static final Path FILE = scratchFile();
+
+    @FuzzTest
+    void loaderReturnsABoundedSceneOrOneLineError(byte[] bytes) {
+        load(bytes);
+    }
+
+    @FuzzTest
+    void anySceneTheLoaderAcceptsRendersAndEncodes(byte[] bytes) throws IOException {
+        Scene scene = load(bytes);
+        if (scene == null) {
+            return;
+        }
+        // The CLI renders with the fast renderer; the readable Renderer is its oracle, and the two
+        // must agree pixel for pixel, with the BVH and without it.
+        BufferedImage image = new FastRenderer(8, 6, new SamplePattern(1), true, Intersection.DEFAULT).render(scene);
+        int[] pixels = image.getRGB(0, 0, 8, 6, null, 0, 8);
+        assertThat(new FastRenderer(8, 6, new SamplePattern(1), false, Intersection.DEFAULT).render(scene).getRGB(0, 0, 8, 6, null, 0, 8))
+                .as("fast renderer without the BVH").isEqualTo(pixels);
+        assertThat(new Renderer(8, 6).render(scene).getRGB(0, 0, 8, 6, null, 0, 8))
+                .as("readable renderer").isEqualTo(pixels);
+        ByteArrayOutputStream png = new ByteArrayOutputStream();
+        PngOutput.write(image, png);
+        assertThat(png.size()).as("PNG bytes").isPositive();
+    }
+
+    /** The scene, checked against the loader's bounds, or null when it was rightly rejected. */
+    private static Scene load(byte[] bytes) {
+        SceneLoader loader;
+        try {
+            Files.write(FILE, bytes);
+            loader = new SceneLoader(FILE, false);
+        } catch (SceneException e) {
+            assertThat(e.getMessage()).as("error").startsWith(FILE.toString()).doesNotContainPattern("\\p{Cntrl}");
+            return null;
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        for (String warning : loader.getWarnings()) {
+            assertThat(warning).as("warning").startsWith(FILE.toString()).contains(": warning: ")
+                    .doesNotContainPattern("\\p{Cntrl}");
+        }
+        Scene scene = loader.getScene();
+        for (Sphere sphere : scene.getObjects()) {
+            assertBounded(sphere.getPosition());
+            assertThat(sphere.getRadius()).isPositive().isLessThanOrEqualTo(SceneLoader.MAX_MAGNITUDE);
+            assertColour(sphere.getColour());
+        }
+        assertColour(scene.getAmbientLighting());
+        PointLight light = scene.getPointLight();
+        if (light != null) {
+            assertBounded(light.getPosition());
+            assertColour(light.getColour());
+            // Compared with <=, not AssertJ's isBetween: "-0" is a valid intensity of zero, but
+            // Double.compare puts -0.0 below 0.0 (a crash Jazzer found, kept as a seed).
+            double intensity = light.getIntensity();
+            assertThat(0 <= intensity && intensity <= SceneLoader.MAX_MAGNITUDE).as("intensity %s", intensity).isTrue();
+        }
+        return scene;
+    }
+
+    private static void assertBounded(Vector3 v) {
+        for (double c : new double[] {v.x, v.y, v.z}) {
+            assertThat(c).as("coordinate of %s", v).isBetween(-SceneLoader.MAX_MAGNITUDE, SceneLoader.MAX_MAGNITUDE);
+        }
+    }
+
+    private static void assertColour(Vector3 v) {
+        for (double c : new double[] {v.x, v.y, v.z}) {
+            assertThat(c).as("channel of %s", v).isBetween(0.0, 1.0);
+        }
+    }
+
+    private static Path scratchFile() {
+        try {
+            Path dir = Files.createTempDirectory("tick1-fuzz");
+            Path file = dir.resolve("scene.xml");
+            dir.toFile().deleteOnExit();
+            file.toFile().deleteOnExit(); // deleted first: deleteOnExit runs in reverse order
+            return file;
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+}

@@ -1,0 +1,124 @@
+package gfx.tick1.scene;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gfx.tick1.math.Ray;
+import gfx.tick1.math.Vector3;
+import java.util.Random;
+import java.util.stream.IntStream;
+import java.util.stream.Stream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * Properties of ray-sphere intersection that any correct implementation has, checked on
+ * generated spheres and rays: origins outside and inside, any direction, unnormalised too.
+ *
+ * <p>Rounding: the quadratic's coefficients are built from |O - C| and r, so every computed
+ * distance carries an error of a few ulps of that scale L = |O - C| + r. The tolerance 1e-9 L
+ * is a million ulps of L: loose enough for any double-precision solver, tight enough to catch
+ * a wrong root or a wrong formula, whose errors are of the order of L itself.
+ */
+class SphereIntersectionPropertiesTest {
+
+    private static final Vector3 COLOUR = new Vector3(1, 0, 0);
+
+    /** One generated sphere and ray, reproducible from its seed. */
+    record Case(long seed, Sphere sphere, Ray ray) {
+        static Case generate(long seed) {
+            Random random = new Random(seed);
+            Sphere sphere = new Sphere(vector(random, 50), 0.01 + random.nextDouble() * 20, COLOUR);
+            Vector3 origin = random.nextInt(4) == 0
+                    ? sphere.getPosition().add(vector(random, 1).normalised().scale(sphere.getRadius() * random.nextDouble()))
+                    : vector(random, 50);
+            // Aim near the sphere half of the time, so that hits, grazes and misses all occur.
+            Vector3 direction = random.nextBoolean()
+                    ? sphere.getPosition().add(vector(random, sphere.getRadius())).subtract(origin)
+                    : vector(random, 1);
+            return new Case(seed, sphere, new Ray(origin, direction.scale(0.1 + random.nextDouble() * 10)));
+        }
+
+        double scale() {
+            return ray.getOrigin().subtract(sphere.getPosition()).magnitude() + sphere.getRadius();
+        }
+
+        boolean originOutside() {
+            return ray.getOrigin().subtract(sphere.getPosition()).magnitude() > sphere.getRadius() * (1 + 1e-9);
+        }
+
+        @Override
+        public String toString() {
+            return "seed " + seed;
+        }
+    }
+
+    private static Vector3 vector(Random random, double size) {
+        return new Vector3(random.nextDouble() * 2 - 1, random.nextDouble() * 2 - 1, random.nextDouble() * 2 - 1)
+                .scale(size);
+    }
+
+    static Stream<Case> cases() {
+        return IntStream.range(0, 250).mapToObj(seed -> Case.generate(seed));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("cases")
+    void aHitLiesOnTheSurfaceAndNoNearerPointOfTheRayIsInside(Case c) {
+        RaycastHit hit = c.sphere().intersectionWith(c.ray());
+        if (hit.getObjectHit() == null) {
+            return;
+        }
+        Vector3 centre = c.sphere().getPosition();
+        double tolerance = 1e-9 * c.scale();
+        assertThat(hit.getDistance()).as("%s", c).isPositive();
+        assertThat(hit.getLocation().subtract(centre).magnitude() - c.sphere().getRadius()).as("%s", c)
+                .isBetween(-tolerance, tolerance);
+        if (c.originOutside()) {
+            // The nearest root: halfway to the hit the ray has not yet entered the sphere.
+            Vector3 halfway = c.ray().evaluateAt(hit.getDistance() / 2);
+            assertThat(halfway.subtract(centre).magnitude()).as("%s", c)
+                    .isGreaterThanOrEqualTo(c.sphere().getRadius() - tolerance);
+        }
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("cases")
+    void aRayFiredFromAHitAlongTheNormalNeverHitsTheSphereAgainInFrontOfIt(Case c) {
+        RaycastHit hit = c.sphere().intersectionWith(c.ray());
+        if (hit.getObjectHit() == null) {
+            return;
+        }
+        Ray outwards = new Ray(hit.getLocation(), hit.getNormal());
+        RaycastHit again = c.sphere().intersectionWith(outwards);
+        // At most the start point itself, found again through rounding.
+        assertThat(again.getObjectHit() == null || again.getDistance() <= 1e-9 * c.scale())
+                .as("%s: hit again at distance %s", c, again.getDistance()).isTrue();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("cases")
+    void aRayFromOutsidePointingAwayFromTheSphereMisses(Case c) {
+        Vector3 away = c.ray().getOrigin().subtract(c.sphere().getPosition());
+        if (!c.originOutside()) {
+            return;
+        }
+        // Any direction with a positive component along (O - C) moves away from every point of the sphere.
+        Vector3 direction = away.add(c.ray().getDirection().scale(0.5 * away.magnitude() / c.ray().getDirection().magnitude()));
+        assertThat(c.sphere().intersectionWith(new Ray(c.ray().getOrigin(), direction)).getObjectHit()).as("%s", c)
+                .isNull();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("cases")
+    void aRayFromInsideTheSphereAlwaysHitsItsSurface(Case c) {
+        double fromCentre = c.ray().getOrigin().subtract(c.sphere().getPosition()).magnitude();
+        if (fromCentre > c.sphere().getRadius() * (1 - 1e-6)) {
+            return; // outside, or too near the surface to say which side rounding puts it
+        }
+        RaycastHit hit = c.sphere().intersectionWith(c.ray());
+        assertThat(hit.getObjectHit()).as("%s", c).isSameAs(c.sphere());
+        double tolerance = 1e-9 * c.scale();
+        assertThat(hit.getLocation().subtract(c.sphere().getPosition()).magnitude() - c.sphere().getRadius())
+                .as("%s", c).isBetween(-tolerance, tolerance);
+    }
+}
