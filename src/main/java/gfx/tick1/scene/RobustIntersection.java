@@ -164,6 +164,12 @@ public final class RobustIntersection {
      */
     public static double nearestRoot(double dx, double dy, double dz, double a, DoubleDouble exactA, Offset offset,
             boolean keepHandoutWhereAccurate) {
+        return nearestRoot(dx, dy, dz, a, exactA, offset, keepHandoutWhereAccurate, true);
+    }
+
+    /** As above; {@code quickAccept} false skips {@link #handoutCertainlyAccurate}, for its test. */
+    static double nearestRoot(double dx, double dy, double dz, double a, DoubleDouble exactA, Offset offset,
+            boolean keepHandoutWhereAccurate, boolean quickAccept) {
         double fx = offset.fx(), fy = offset.fy(), fz = offset.fz();
         double ff = offset.ff(), rr = offset.rr();
         double betaAbs = Math.abs(dx * fx) + Math.abs(dy * fy) + Math.abs(dz * fz);
@@ -172,8 +178,12 @@ public final class RobustIntersection {
         // Most rays miss most spheres by far: this estimate of Delta is itself within E of the
         // exact value, so below -2E both answers are certainly a miss.
         double roughBeta = dx * fx + dy * fy + dz * fz;
-        if (roughBeta * roughBeta - a * (ff - rr) < -2 * E) {
+        double roughDelta = roughBeta * roughBeta - a * (ff - rr);
+        if (roughDelta < -2 * E) {
             return Double.NEGATIVE_INFINITY;
+        }
+        if (keepHandoutWhereAccurate && quickAccept && handoutCertainlyAccurate(a, roughBeta, betaAbs, roughDelta, E)) {
+            return HANDOUT_IS_ACCURATE;
         }
 
         DoubleDouble exactBeta = exactDot(dx, dy, dz, fx, fy, fz);
@@ -191,6 +201,48 @@ public final class RobustIntersection {
         }
         double s = roots.nearestPositive();
         return s > 0 ? s : Double.NEGATIVE_INFINITY;
+    }
+
+    /**
+     * A quick sufficient condition for the decision below to keep the handout's result, from the
+     * double estimates roughBeta and roughDelta alone: when it holds, the double-double work
+     * would reach the same answer, so it is skipped. This is what makes the robust method nearly
+     * as fast as the handout's on ordinary scenes, where it holds for almost every hit.
+     *
+     * <p>Why it implies the slow test. roughDelta is within E of the exact Delta (the estimate
+     * in {@link #nearestRoot}), so roughDelta &gt; 4E gives Delta &gt; 2E with room to spare.
+     * The roots (-roughBeta -+ sqrtLow) / a, with sqrtLow = sqrt(roughDelta - 2E), are within
+     * {@code spread} of the exact ones (and so of the stable ones the slow test computes):
+     * roughBeta is off by at most 4u betaAbs, sqrtLow from sqrt(Delta) by at most 2E / sqrtLow,
+     * and the roundings of the two computations add 8u of each root. {@code rootError} is the slow test's bound with
+     * every input replaced by the side that makes it larger (sqrt(Delta) by sqrtLow below a
+     * division, by sqrtHigh elsewhere, the largest root by ours plus the spread), so it bounds
+     * the slow test's value. Asking for twice that bound, beyond the spread, leaves the slow
+     * test's own roundings (a few ulps) no way to come out differently: both roots are clear of
+     * 0 by more than its bound, keep their signs, and the nearest positive one passes its
+     * TOLERANCE test. RobustIntersectionShortcutTest checks on hard and ordinary inputs that the
+     * answers with and without this shortcut are the same.
+     */
+    static boolean handoutCertainlyAccurate(double a, double roughBeta, double betaAbs, double roughDelta, double E) {
+        if (!(roughDelta > 4 * E)) {
+            return false;
+        }
+        // One square root and two divisions: sqrt(Delta) lies in [sqrtLow, sqrtLow + 2E / sqrtLow]
+        // (sqrt(x + 3E) <= sqrt(x) + 3E / (2 sqrt(x))), and multiplying by 1 / a instead of
+        // dividing rounds differently by an ulp, which the factors of 2 and 8u below absorb.
+        double sqrtLow = Math.sqrt(roughDelta - 2 * E);
+        double overSqrtLow = 1 / sqrtLow, overA = 1 / a;
+        double sqrtHigh = sqrtLow + 2 * E * overSqrtLow;
+        double near = (-roughBeta - sqrtLow) * overA, far = (-roughBeta + sqrtLow) * overA;
+        double spread = (4 * U * betaAbs + 2 * E * overSqrtLow) * overA + 8 * U * (Math.abs(near) + Math.abs(far));
+        double largest = Math.max(Math.abs(near), Math.abs(far)) + spread;
+        double rootError = (E * overSqrtLow + 4 * U * (betaAbs + sqrtHigh)) * overA + 16 * U * largest;
+        double clearance = 2 * rootError + spread;
+        if (!(Math.abs(near) > clearance && Math.abs(far) > clearance)) {
+            return false;
+        }
+        double s = near > 0 ? near : far;
+        return s > 0 && 2 * rootError <= TOLERANCE * (s - spread);
     }
 
     /** Whether the handout's roots have the exact roots' signs and its chosen s is within TOLERANCE. */
