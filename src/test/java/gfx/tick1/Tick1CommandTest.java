@@ -175,4 +175,16 @@ class Tick1CommandTest {
         assertThat(run.err()).endsWith("(an error under --strict)" + System.lineSeparator());
         assertThat(dir.resolve("s.png")).doesNotExist();
     }
+
+    @Test
+    void aPlainRenderIsParsedWithoutBuildingTheSubcommandsButAnythingElseGetsThemAll() {
+        assertThat(Tick1.commandLine(new Tick1(), "-q", "-i", "scenes/tick1.xml", "-o", "out.png").getSubcommands())
+                .as("options only: no subcommand can be reached").isEmpty();
+        assertThat(Tick1.commandLine(new Tick1(), "-o", "compare").getSubcommands())
+                .as("an argument that names a subcommand").containsKeys("compare", "bench");
+        assertThat(Tick1.commandLine(new Tick1(), "--help").getSubcommands()).as("help lists them")
+                .containsKeys("compare", "diagnose", "grade", "starter", "bench", "preview");
+        assertThat(Tick1.commandLine(new Tick1(), "comapre").getSubcommands()).as("a misspelt one gets suggestions")
+                .isNotEmpty();
+    }
 }

@@ -85,8 +85,9 @@ public final class Bench implements Callable<Integer> {
             for (boolean bvh : new boolean[] {false, true}) {
                 Variant variant = new Variant(bvh ? "BVH" : "brute force", 1, cores,
                         (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), bvh, Intersection.DEFAULT).render(s));
-                results.add(measure(variant, file.getFileName().toString(), crowd, 640, 480, settings,
-                        "brute force", bruteForce));
+                // Brute force over 10,000 spheres takes seconds a frame: fewer runs for the crowds.
+                results.add(measure(variant, file.getFileName().toString(), crowd, 640, 480,
+                        settings.withRuns(1, Math.min(settings.runs, 3)), "brute force", bruteForce));
             }
         }
 
@@ -106,6 +107,10 @@ public final class Bench implements Callable<Integer> {
             int[] crowds, int processRuns) {
         static final Settings FULL = new Settings(3840, 2160, 640, 480, 3, 7, new int[] {1_000, 10_000}, 7);
         static final Settings QUICK = new Settings(640, 480, 160, 120, 1, 3, new int[] {1_000}, 3);
+
+        Settings withRuns(int warmups, int runs) {
+            return new Settings(width, height, errorWidth, errorHeight, warmups, runs, crowds, processRuns);
+        }
     }
 
     private static List<Variant> tick1Variants(int cores) {
