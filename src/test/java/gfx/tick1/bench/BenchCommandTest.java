@@ -1,0 +1,65 @@
+package gfx.tick1.bench;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gfx.tick1.Tick1;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+/**
+ * {@code tick1 bench --quick} through the real entry point: it writes the three files, with a row
+ * for every variant. What the numbers are is the report's business, not a test's.
+ */
+class BenchCommandTest {
+
+    @TempDir
+    static Path out;
+    private static int status;
+    private static String printed;
+
+    @BeforeAll
+    static void runTheQuickBenchmark() {
+        StringWriter text = new StringWriter();
+        CommandLine commandLine = Tick1.commandLine(new Tick1());
+        commandLine.setOut(new PrintWriter(text, true));
+        commandLine.setErr(new PrintWriter(text, true));
+        status = commandLine.execute("bench", "--quick", "--out", out.toString());
+        printed = text.toString();
+    }
+
+    @Test
+    void exitsZeroAndSaysWhereTheReportIs() {
+        assertThat(status).as(printed).isZero();
+        assertThat(printed).contains("Wrote " + out.resolve("report.md"));
+    }
+
+    @Test
+    void theCsvHasARowForEveryVariantWithTimeAndError() throws IOException {
+        List<String> lines = Files.readAllLines(out.resolve("results.csv"));
+        assertThat(lines.get(0)).startsWith("variant,scene,width,height,samples,threads,median_ms")
+                .contains("max_level_difference", "psnr_db");
+        assertThat(lines).hasSize(1 + 10 + 2); // ten tick1.xml variants, brute force and BVH on the crowd
+        assertThat(String.join("\n", lines)).contains("\"readable Renderer, handout formula\"", "\"float, robust\"",
+                "\"fast double, robust, 16 samples\"", "\"BVH\",crowd-1000.xml");
+    }
+
+    @Test
+    void theReportStatesTheMachineTheTargetsAndThePlot() throws IOException {
+        String report = Files.readString(out.resolve("report.md"));
+        assertThat(report).contains("Machine: ", " cores", "## Targets", "start-up", "![speed against error]");
+    }
+
+    @Test
+    void thePlotIsAPng() throws IOException {
+        assertThat(ImageIO.read(out.resolve("speed-vs-error.png").toFile())).isNotNull();
+    }
+}
