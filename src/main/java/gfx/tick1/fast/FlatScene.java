@@ -1,6 +1,5 @@
 package gfx.tick1.fast;
 
-import gfx.tick1.math.DoubleDouble;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.PointLight;
@@ -85,14 +84,13 @@ final class FlatScene {
      * +infinity, as {@link Intersection#find} decides it: for {@link Intersection#HANDOUT} the
      * handout's quadratic; otherwise {@link RobustIntersection#nearestRoot}, the same decision
      * code the readable path runs, which defers to the handout's quadratic where that is accurate.
-     * a = D.D and its double-double value (null for the handout's method) are passed in because
-     * they are the same for every sphere.
+     * a = D.D is passed in because it is the same for every sphere.
      */
-    double nearestRoot(int i, double dx, double dy, double dz, double a, DoubleDouble exactA) {
+    double nearestRoot(int i, double dx, double dy, double dz, double a) {
         if (intersection == Intersection.HANDOUT) {
             return handoutRoot(i, dx, dy, dz, a);
         }
-        double s = RobustIntersection.nearestRoot(dx, dy, dz, a, exactA, offsets[i], intersection == Intersection.ROBUST);
+        double s = RobustIntersection.nearestRoot(dx, dy, dz, a, offsets[i], intersection == Intersection.ROBUST);
         if (s == RobustIntersection.HANDOUT_IS_ACCURATE) {
             return handoutRoot(i, dx, dy, dz, a);
         }

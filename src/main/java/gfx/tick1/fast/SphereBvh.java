@@ -1,6 +1,5 @@
 package gfx.tick1.fast;
 
-import gfx.tick1.math.DoubleDouble;
 import java.util.Arrays;
 import java.util.Comparator;
 
@@ -92,7 +91,7 @@ final class SphereBvh {
      * {@code inverse} is scratch for the three components of 1 / D; the winner's distance is
      * left in {@code distance[0]}.
      */
-    int closest(double dx, double dy, double dz, double a, DoubleDouble exactA, int[] nodeStack, double[] entryStack,
+    int closest(double dx, double dy, double dz, double a, int[] nodeStack, double[] entryStack,
             double[] inverse, double[] distance) {
         inverse[0] = 1 / dx;
         inverse[1] = 1 / dy;
@@ -114,7 +113,7 @@ final class SphereBvh {
             if (n > 0) {
                 for (int k = first[node], end = first[node] + n; k < end; k++) {
                     int i = order[k];
-                    double s = scene.nearestRoot(i, dx, dy, dz, a, exactA);
+                    double s = scene.nearestRoot(i, dx, dy, dz, a);
                     if (s < best || (s == best && i < winner)) {
                         best = s;
                         winner = i;

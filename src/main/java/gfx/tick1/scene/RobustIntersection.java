@@ -136,8 +136,7 @@ public final class RobustIntersection {
      */
     public static double nearestRoot(double dx, double dy, double dz, double fx, double fy, double fz, double r,
             boolean keepHandoutWhereAccurate) {
-        return nearestRoot(dx, dy, dz, dx * dx + dy * dy + dz * dz, exactDot(dx, dy, dz, dx, dy, dz),
-                Offset.of(fx, fy, fz, r), keepHandoutWhereAccurate);
+        return nearestRoot(dx, dy, dz, dx * dx + dy * dy + dz * dz, Offset.of(fx, fy, fz, r), keepHandoutWhereAccurate);
     }
 
     /**
@@ -153,22 +152,17 @@ public final class RobustIntersection {
         }
     }
 
-    /** D.D in double-double, the exact a for a direction D (per ray, shared by all spheres). */
-    public static DoubleDouble exactLengthSquared(double dx, double dy, double dz) {
-        return exactDot(dx, dy, dz, dx, dy, dz);
-    }
-
     /**
      * {@link #nearestRoot(double, double, double, double, double, double, double, boolean)} with
-     * a = D.D, its double-double value and the sphere's {@link Offset} computed beforehand.
+     * a = D.D and the sphere's {@link Offset} computed beforehand.
      */
-    public static double nearestRoot(double dx, double dy, double dz, double a, DoubleDouble exactA, Offset offset,
+    public static double nearestRoot(double dx, double dy, double dz, double a, Offset offset,
             boolean keepHandoutWhereAccurate) {
-        return nearestRoot(dx, dy, dz, a, exactA, offset, keepHandoutWhereAccurate, true);
+        return nearestRoot(dx, dy, dz, a, offset, keepHandoutWhereAccurate, true);
     }
 
     /** As above; {@code quickAccept} false skips {@link #handoutCertainlyAccurate}, for its test. */
-    static double nearestRoot(double dx, double dy, double dz, double a, DoubleDouble exactA, Offset offset,
+    static double nearestRoot(double dx, double dy, double dz, double a, Offset offset,
             boolean keepHandoutWhereAccurate, boolean quickAccept) {
         double fx = offset.fx(), fy = offset.fy(), fz = offset.fz();
         double ff = offset.ff(), rr = offset.rr();
@@ -186,6 +180,8 @@ public final class RobustIntersection {
             return HANDOUT_IS_ACCURATE;
         }
 
+        // Past the quick acceptance: the careful computation, a = D.D first in double-double.
+        DoubleDouble exactA = exactDot(dx, dy, dz, dx, dy, dz);
         DoubleDouble exactBeta = exactDot(dx, dy, dz, fx, fy, fz);
         DoubleDouble exactC = offset.exactC();
         double delta = quarterDiscriminant(exactA, exactBeta, exactC, a, dx, dy, dz, fx, fy, fz, rr, ff);

@@ -2,7 +2,6 @@ package gfx.tick1.scene;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.math.DoubleDouble;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.render.Camera;
 import java.util.ArrayList;
@@ -23,8 +22,7 @@ class RobustIntersectionShortcutTest {
 
     private static double decide(Case c, boolean quickAccept) {
         double a = c.dx * c.dx + c.dy * c.dy + c.dz * c.dz;
-        DoubleDouble exactA = RobustIntersection.exactLengthSquared(c.dx, c.dy, c.dz);
-        return RobustIntersection.nearestRoot(c.dx, c.dy, c.dz, a, exactA,
+        return RobustIntersection.nearestRoot(c.dx, c.dy, c.dz, a,
                 RobustIntersection.Offset.of(c.fx, c.fy, c.fz, c.r), true, quickAccept);
     }
 
