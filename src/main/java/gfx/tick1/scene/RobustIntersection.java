@@ -179,8 +179,18 @@ public final class RobustIntersection {
         if (keepHandoutWhereAccurate && quickAccept && handoutCertainlyAccurate(a, roughBeta, betaAbs, roughDelta, E)) {
             return HANDOUT_IS_ACCURATE;
         }
+        return carefulNearestRoot(dx, dy, dz, a, offset, betaAbs, E, keepHandoutWhereAccurate);
+    }
 
-        // Past the quick acceptance: the careful computation, a = D.D first in double-double.
+    /**
+     * The decision in double-double, past the quick tests. In a method of its own so that the
+     * quick part above, which decides almost every ray, stays small enough for the JIT to inline
+     * into a renderer's loop.
+     */
+    private static double carefulNearestRoot(double dx, double dy, double dz, double a, Offset offset, double betaAbs,
+            double E, boolean keepHandoutWhereAccurate) {
+        double fx = offset.fx(), fy = offset.fy(), fz = offset.fz();
+        double ff = offset.ff(), rr = offset.rr();
         DoubleDouble exactA = exactDot(dx, dy, dz, dx, dy, dz);
         DoubleDouble exactBeta = exactDot(dx, dy, dz, fx, fy, fz);
         DoubleDouble exactC = offset.exactC();
