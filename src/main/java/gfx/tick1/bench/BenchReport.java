@@ -73,7 +73,8 @@ final class BenchReport {
         StringBuilder md = new StringBuilder();
         md.append("# tick1 benchmark").append(quick ? " (quick)" : "").append("\n\n");
         md.append("Machine: ").append(machine()).append(".\n\n");
-        md.append("Each variant renders the same scene in one process; times are wall-clock per frame after warm-up "
+        md.append("Each variant renders the same scene in one process, in the order listed (the default first, "
+                + "before the JIT has seen the others); times are wall-clock per frame after warm-up "
                 + "(median, and the fastest and slowest run as the spread). Error is measured on a smaller frame "
                 + "against `truth` (the double-double TruthRenderer), against `256 samples` for anti-aliased "
                 + "variants, or against `brute force` for the BVH.\n\n");
