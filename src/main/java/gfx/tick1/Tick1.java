@@ -116,7 +116,22 @@ public final class Tick1 implements Callable<Integer> {
 
     public static void main(String[] args) {
         Timings.mainStarted();
-        System.exit(commandLine(new Tick1(), args).execute(args));
+        CommandLine commandLine = commandLine(new Tick1(), args);
+        int status;
+        try {
+            status = commandLine.execute(args);
+        } catch (OutOfMemoryError e) {
+            // Picocli handles exceptions, not errors; running out of heap is the one a user can fix.
+            status = outOfMemory(commandLine.getErr());
+        }
+        System.exit(status);
+    }
+
+    private static int outOfMemory(PrintWriter err) {
+        err.println("tick1: Java ran out of memory (it may use " + (Runtime.getRuntime().maxMemory() >> 20)
+                + " MiB); give it more with JAVA_OPTS=-Xmx...");
+        err.flush();
+        return EXIT_INTERNAL;
     }
 
     /** The subcommands, in the order the help lists them. */
@@ -134,8 +149,9 @@ public final class Tick1 implements Callable<Integer> {
     static CommandLine commandLine(Tick1 command, String... args) {
         boolean plainRender = args.length > 0 && args[0].startsWith("-");
         for (String arg : args) {
-            plainRender &= !SUBCOMMAND_NAMES.contains(arg) && !arg.equals("-h") && !arg.equals("--help")
-                    && !arg.equals("-V") && !arg.equals("--version");
+            boolean asksForHelpOrVersion = arg.equals("--help") || arg.equals("--version")
+                    || arg.matches("-[^-]*[hV].*"); // -h, -V, and clusters such as -qh
+            plainRender &= !SUBCOMMAND_NAMES.contains(arg) && !asksForHelpOrVersion;
         }
         return plainRender ? configure(new CommandLine(command)) : commandLine(command);
     }
@@ -159,6 +175,11 @@ public final class Tick1 implements Callable<Integer> {
         });
         commandLine.setExecutionExceptionHandler((e, cl, parseResult) -> {
             PrintWriter err = cl.getErr();
+            for (Throwable cause = e; cause != null; cause = cause.getCause()) {
+                if (cause instanceof OutOfMemoryError) {
+                    return outOfMemory(err);
+                }
+            }
             err.println("tick1: internal error: " + e + " (please report this with the scene file)");
             err.flush();
             return EXIT_INTERNAL;

@@ -186,5 +186,7 @@ class Tick1CommandTest {
                 .containsKeys("compare", "diagnose", "grade", "starter", "bench", "preview");
         assertThat(Tick1.commandLine(new Tick1(), "comapre").getSubcommands()).as("a misspelt one gets suggestions")
                 .isNotEmpty();
+        assertThat(Tick1.commandLine(new Tick1(), "-qh").getSubcommands()).as("help in a cluster of flags")
+                .isNotEmpty();
     }
 }

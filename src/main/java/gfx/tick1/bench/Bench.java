@@ -1,5 +1,6 @@
 package gfx.tick1.bench;
 
+import gfx.tick1.Tick1;
 import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngEncoder;
@@ -36,7 +37,11 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "bench", mixinStandardHelpOptions = true, sortOptions = false,
         description = "Measures speed against accuracy for every renderer variant and writes a report "
-                + "(report.md, results.csv, speed-vs-error.png).")
+                + "(report.md, results.csv, speed-vs-error.png).",
+        exitCodeListHeading = "%nExit status:%n",
+        exitCodeList = {
+            "0:the report was written",
+            "3:the report could not be written, or a timed run of tick1 failed"})
 public final class Bench implements Callable<Integer> {
 
     @Spec
@@ -53,7 +58,16 @@ public final class Bench implements Callable<Integer> {
     private PrintWriter log;
 
     @Override
-    public Integer call() throws IOException {
+    public Integer call() {
+        try {
+            return run();
+        } catch (IOException e) {
+            spec.commandLine().getErr().println("tick1 bench: " + e.getMessage());
+            return Tick1.EXIT_CANNOT_WRITE;
+        }
+    }
+
+    private int run() throws IOException {
         log = spec.commandLine().getOut();
         Files.createDirectories(out);
         Settings settings = quick ? Settings.QUICK : Settings.FULL;

@@ -48,7 +48,7 @@ import picocli.CommandLine.Spec;
             "0:the code passed: every scene matches pixel for pixel",
             "1:the code failed: it does not compile, crashed, ran out of time or memory, or an image is wrong",
             "2:the command line is wrong, or a file given cannot be read",
-            "3:the report folder cannot be written",
+            "3:a scene failed and its images could not be written to the report folder",
             "4:an internal error (a bug: please report it)"})
 public final class GradeCommand implements Callable<Integer> {
 
@@ -177,11 +177,14 @@ public final class GradeCommand implements Callable<Integer> {
         }
         if (failures > 0) {
             out.println("FAILED: " + failures + " of " + count(scenes.size(), "scene") + " wrong.");
-            return EXIT_FAIL;
+            return reportUnwritable ? EXIT_CANNOT_WRITE : EXIT_FAIL;
         }
         out.println(CONGRATULATIONS);
         return EXIT_PASS;
     }
+
+    /** Set when a failing scene's images could not be written to the report folder: exit status 3. */
+    private boolean reportUnwritable;
 
     /** Compares one student image with the reference; explains and writes the heat map when they differ. */
     private boolean checkImage(int number, GradingScene grading, BufferedImage image, PrintWriter out, PrintWriter err)
@@ -208,6 +211,7 @@ public final class GradeCommand implements Callable<Integer> {
                     + "-yours.png and " + stem + "-expected.png)");
         } catch (IOException e) {
             err.println("tick1 grade: " + reportFolder + ": cannot write the report images: " + describe(e));
+            reportUnwritable = true;
         }
         return false;
     }
@@ -260,6 +264,12 @@ public final class GradeCommand implements Callable<Integer> {
         }
         if (e instanceof MalformedInputException) {
             return "a student file is not UTF-8 text";
+        }
+        if (e instanceof java.nio.file.FileAlreadyExistsException) {
+            return e.getMessage() + " exists and is not a folder";
+        }
+        if (e instanceof java.nio.file.AccessDeniedException) {
+            return e.getMessage() + ": permission denied";
         }
         return e.getMessage();
     }

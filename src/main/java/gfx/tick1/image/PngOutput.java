@@ -39,11 +39,19 @@ public final class PngOutput {
     }
 
     static void write(BufferedImage image, Path target, Encoder encoder) throws IOException {
-        Path absolute = target.toAbsolutePath();
-        Path directory = absolute.getParent();
+        Path absolute = followLinks(target.toAbsolutePath());
         if (Files.isDirectory(absolute)) {
             throw new IOException("is a directory, expected a file name for the PNG");
         }
+        if (Files.exists(absolute) && !Files.isRegularFile(absolute)) {
+            // A device or a pipe (/dev/stdout, a FIFO): renaming a file over it would replace it,
+            // and there is nothing to keep whole, so the PNG is written straight into it.
+            try (OutputStream out = Files.newOutputStream(absolute)) {
+                encoder.encode(image, out);
+            }
+            return;
+        }
+        Path directory = absolute.getParent();
         if (directory == null || !Files.exists(directory)) {
             throw new IOException("directory " + directory + " does not exist");
         }
@@ -98,6 +106,17 @@ public final class PngOutput {
         } catch (IOException e) {
             // Nothing more can be done; the name starts with a dot and ends in .tmp.
         }
+    }
+
+    /**
+     * The file a path names once symbolic links are followed, so that the finished image replaces
+     * the file a link points to, not the link. A link to a file not yet there is followed too.
+     */
+    private static Path followLinks(Path path) throws IOException {
+        for (int hops = 0; hops < 40 && Files.isSymbolicLink(path); hops++) {
+            path = path.resolveSibling(Files.readSymbolicLink(path)).toAbsolutePath().normalize();
+        }
+        return path;
     }
 
     /** Encodes {@code image} as PNG onto a stream (standard output, for {@code --output -}). */

@@ -30,6 +30,7 @@ import picocli.CommandLine.Spec;
             "Runs until interrupted (Ctrl-C)."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {
+            "0:stopped with Ctrl-C",
             "1:SCENE.xml does not exist",
             "2:the command line is wrong, or the port cannot be used"})
 public final class Preview implements Callable<Integer> {

@@ -62,4 +62,15 @@ class BenchCommandTest {
     void thePlotIsAPng() throws IOException {
         assertThat(ImageIO.read(out.resolve("speed-vs-error.png").toFile())).isNotNull();
     }
+
+    @Test
+    void anUnwritableReportFolderIsOneLineAndStatusThree() throws IOException {
+        Path file = Files.writeString(out.resolve("not-a-folder"), "x");
+        StringWriter err = new StringWriter();
+        CommandLine commandLine = Tick1.commandLine(new Tick1());
+        commandLine.setOut(new PrintWriter(new StringWriter(), true));
+        commandLine.setErr(new PrintWriter(err, true));
+        assertThat(commandLine.execute("bench", "--quick", "--out", file.resolve("report").toString())).isEqualTo(3);
+        assertThat(err.toString().lines()).hasSize(1).allMatch(line -> line.startsWith("tick1 bench: "));
+    }
 }

@@ -183,4 +183,49 @@ class PngOutputTest {
             });
         }
     }
+
+    @Test
+    void aSymbolicLinkStaysALinkAndTheFileItPointsToIsReplaced() throws IOException {
+        Path real = Files.createDirectory(dir.resolve("real")).resolve("target.png");
+        Files.writeString(real, "old");
+        Path link = Files.createSymbolicLink(dir.resolve("link.png"), Path.of("real", "target.png"));
+        PngOutput.write(image(), link);
+        assertThat(Files.isSymbolicLink(link)).as("the link itself").isTrue();
+        assertThat(ImageIO.read(real.toFile())).as("the file it points to").isNotNull();
+    }
+
+    @Test
+    void aLinkToAFileNotYetThereCreatesThatFile() throws IOException {
+        Path real = Files.createDirectory(dir.resolve("real")).resolve("new.png");
+        Path link = Files.createSymbolicLink(dir.resolve("link.png"), real);
+        PngOutput.write(image(), link);
+        assertThat(Files.isSymbolicLink(link)).isTrue();
+        assertThat(ImageIO.read(real.toFile())).isNotNull();
+    }
+
+    @Test
+    void aNamedPipeReceivesThePngAndIsNotReplacedByAFile() throws Exception {
+        Path fifo = dir.resolve("pipe.png");
+        Process mkfifo;
+        try {
+            mkfifo = new ProcessBuilder("mkfifo", fifo.toString()).start();
+        } catch (IOException e) {
+            assumeTrue(false, "skipped: no mkfifo on this machine");
+            return;
+        }
+        assumeTrue(mkfifo.waitFor(10, TimeUnit.SECONDS) && mkfifo.exitValue() == 0, "skipped: mkfifo failed");
+        byte[][] received = new byte[1][];
+        Thread reader = new Thread(() -> {
+            try {
+                received[0] = Files.readAllBytes(fifo);
+            } catch (IOException e) {
+                received[0] = new byte[0];
+            }
+        });
+        reader.start();
+        PngOutput.write(image(), fifo);
+        reader.join(10_000);
+        assertThat(Files.isRegularFile(fifo)).as("the pipe is still a pipe").isFalse();
+        assertThat(ImageIO.read(new java.io.ByteArrayInputStream(received[0]))).as("what the reader got").isNotNull();
+    }
 }
