@@ -140,6 +140,16 @@ class GradeCommandTest {
     }
 
     @Test
+    void aFailingSceneWhoseImagesCannotBeWrittenExitsThreeWithOneLineSayingWhy() throws IOException {
+        java.nio.file.Files.writeString(dir.resolve("report"), "a file where the report folder should go");
+        CliRun run = grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(3);
+        assertThat(run.out()).contains("FAILED");
+        assertThat(run.err().lines()).as(run.err()).isNotEmpty()
+                .allMatch(line -> line.startsWith("tick1 grade: ") && line.contains("exists and is not a folder"));
+    }
+
+    @Test
     void codeThatDoesNotCompileIsReportedWithTheStudentsFileAndLine() throws IOException {
         CliRun run = grade(StudentSolution.correct().editSphere(NEAR_ROOT, "double s = s1 > 0 ? s1 : s2"));
         Path sphere = dir.resolve("student").resolve("Sphere.java");
