@@ -32,6 +32,11 @@ final class ProcessRuns {
 
     /** The wall-clock times of {@code runs} runs of tick1 with these arguments. */
     Timing tick1(int runs, String... args) throws IOException {
+        return time(tick1Command(args), runs);
+    }
+
+    /** The command that runs tick1 with these arguments: the launcher, or java -cp. */
+    private List<String> tick1Command(String... args) {
         List<String> command = new ArrayList<>();
         if (launcher != null) {
             command.add(launcher.toString());
@@ -39,7 +44,7 @@ final class ProcessRuns {
             command.addAll(List.of(java, "-cp", classPath, Tick1.class.getName()));
         }
         command.addAll(List.of(args));
-        return time(command, runs);
+        return command;
     }
 
     /** The wall-clock times of a plain {@code java} run of a main class on our class path. */
@@ -56,15 +61,9 @@ final class ProcessRuns {
     Map<String, Double> phases(int runs, String... args) throws IOException {
         Map<String, double[]> samples = new LinkedHashMap<>();
         for (int run = 0; run < runs; run++) {
-            List<String> command = new ArrayList<>();
-            if (launcher != null) {
-                command.add(launcher.toString());
-            } else {
-                command.addAll(List.of(java, "-cp", classPath, Tick1.class.getName()));
-            }
-            command.add("--timings");
-            command.addAll(List.of(args));
-            String err = run(command).stderr;
+            List<String> withTimings = new ArrayList<>(List.of("--timings"));
+            withTimings.addAll(List.of(args));
+            String err = run(tick1Command(withTimings.toArray(String[]::new)));
             String line = err.lines().filter(l -> l.startsWith("timings:")).findFirst()
                     .orElseThrow(() -> new IOException("tick1 --timings printed no timings: " + err));
             Matcher m = PHASE.matcher(line.substring("timings:".length()));
@@ -88,10 +87,8 @@ final class ProcessRuns {
         return Timing.of(millis);
     }
 
-    private record Output(String stdout, String stderr) {
-    }
-
-    private static Output run(List<String> command) throws IOException {
+    /** Runs a command to its end and returns what it printed on standard error. */
+    private static String run(List<String> command) throws IOException {
         Path err = Files.createTempFile("tick1-bench", ".err");
         try {
             Process process = new ProcessBuilder(command).redirectError(err.toFile())
@@ -101,7 +98,7 @@ final class ProcessRuns {
             if (status != 0) {
                 throw new IOException(String.join(" ", command) + " exited with " + status + ": " + stderr.strip());
             }
-            return new Output("", stderr);
+            return stderr;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new IOException("interrupted", e);

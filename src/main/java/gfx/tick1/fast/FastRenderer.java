@@ -1,6 +1,7 @@
 package gfx.tick1.fast;
 
 import gfx.tick1.math.Vector3;
+import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.Scene;
@@ -34,8 +35,6 @@ public final class FastRenderer {
      * 56), and the BVH pulls ahead beyond (107 against 83 at 512).
      */
     public static final int BVH_THRESHOLD = 256;
-
-    private static final int BACKGROUND = new Vector3(0.1).toRGB();
 
     private final int width, height;
     private final SamplePattern samples;
@@ -90,7 +89,7 @@ public final class FastRenderer {
      * An RGB image backed by {@code pixels} itself: copying through {@code setRGB} would convert
      * every pixel through the colour model, which costs as much as a fifth of a 4K render.
      */
-    static BufferedImage wrap(int[] pixels, int width, int height) {
+    private static BufferedImage wrap(int[] pixels, int width, int height) {
         DirectColorModel model = new DirectColorModel(24, 0xFF0000, 0x00FF00, 0x0000FF);
         WritableRaster raster = Raster.createPackedRaster(new DataBufferInt(pixels, pixels.length), width, height,
                 width, model.getMasks(), null);
@@ -242,7 +241,9 @@ public final class FastRenderer {
             for (int p = 0; p < width; p++) {
                 double red, green, blue;
                 if (hit[p] < 0) {
-                    red = green = blue = 0.1;
+                    red = Renderer.BACKGROUND_COLOUR.x;
+                    green = Renderer.BACKGROUND_COLOUR.y;
+                    blue = Renderer.BACKGROUND_COLOUR.z;
                 } else if (!scene.lit) {
                     red = baseRed[p];
                     green = baseGreen[p];
