@@ -164,22 +164,71 @@ public final class RobustIntersection {
     /** As above; {@code quickAccept} false skips {@link #handoutCertainlyAccurate}, for its test. */
     static double nearestRoot(double dx, double dy, double dz, double a, Offset offset,
             boolean keepHandoutWhereAccurate, boolean quickAccept) {
-        double fx = offset.fx(), fy = offset.fy(), fz = offset.fz();
-        double ff = offset.ff(), rr = offset.rr();
-        double betaAbs = Math.abs(dx * fx) + Math.abs(dy * fy) + Math.abs(dz * fz);
-        double E = DISCRIMINANT_BOUND * (betaAbs * betaAbs + a * (ff + rr));
-
-        // Most rays miss most spheres by far: this estimate of Delta is itself within E of the
-        // exact value, so below -2E both answers are certainly a miss.
-        double roughBeta = dx * fx + dy * fy + dz * fz;
-        double roughDelta = roughBeta * roughBeta - a * (ff - rr);
-        if (roughDelta < -2 * E) {
+        double roughBeta = roughBeta(dx, dy, dz, offset);
+        double betaAbs = betaAbs(dx, dy, dz, offset);
+        double E = discriminantBound(a, betaAbs, offset);
+        double roughDelta = roughDelta(a, roughBeta, offset);
+        // Most rays miss most spheres by far: decided here, before the quick test's square root.
+        if (certainlyMisses(roughDelta, E)) {
             return Double.NEGATIVE_INFINITY;
         }
-        if (keepHandoutWhereAccurate && quickAccept && handoutCertainlyAccurate(a, roughBeta, betaAbs, roughDelta, E)) {
+        double sqrtLow = quickAccept ? quickSquareRoot(roughDelta, E) : Double.NaN;
+        double overA = 1 / a, sensitivity = E * (1 / sqrtLow);
+        double near = quickNear(roughBeta, sqrtLow, overA), far = quickFar(roughBeta, sqrtLow, overA);
+        double spread = quickSpread(betaAbs, sensitivity, overA, near, far);
+        double rootError = quickRootError(betaAbs, sensitivity, sqrtLow, overA, quickLargest(near, far, spread));
+        return nearestRoot(dx, dy, dz, a, offset, keepHandoutWhereAccurate, betaAbs, E, roughDelta,
+                near, far, spread, rootError);
+    }
+
+    /**
+     * The same decision from quantities computed beforehand by the helpers below: a renderer can
+     * compute those for many rays at once, in loops the JIT turns into vector instructions, and
+     * then take the decision here, branch by branch. NaN quick-test quantities skip the quick test.
+     */
+    public static double nearestRoot(double dx, double dy, double dz, double a, Offset offset,
+            boolean keepHandoutWhereAccurate, double betaAbs, double E, double roughDelta,
+            double near, double far, double spread, double rootError) {
+        if (certainlyMisses(roughDelta, E)) {
+            return Double.NEGATIVE_INFINITY;
+        }
+        if (keepHandoutWhereAccurate && handoutCertainlyAccurate(roughDelta, E, near, far, spread, rootError)) {
             return HANDOUT_IS_ACCURATE;
         }
         return carefulNearestRoot(dx, dy, dz, a, offset, betaAbs, E, keepHandoutWhereAccurate);
+    }
+
+    /** beta = D.f in plain doubles, as the handout computes it (its b is 2 beta, exactly). */
+    public static double roughBeta(double dx, double dy, double dz, Offset offset) {
+        return dx * offset.fx() + dy * offset.fy() + dz * offset.fz();
+    }
+
+    /** sum |D_i f_i|: the size of the terms of beta, which its rounding error is relative to. */
+    public static double betaAbs(double dx, double dy, double dz, Offset offset) {
+        return Math.abs(dx * offset.fx()) + Math.abs(dy * offset.fy()) + Math.abs(dz * offset.fz());
+    }
+
+    /** E: the bound on the error of the handout's discriminant, divided by 4 (see the class comment). */
+    public static double discriminantBound(double a, double betaAbs, Offset offset) {
+        return DISCRIMINANT_BOUND * (betaAbs * betaAbs + a * (offset.ff() + offset.rr()));
+    }
+
+    /** Delta = beta^2 - a c in plain doubles: within E of the exact value. */
+    public static double roughDelta(double a, double roughBeta, Offset offset) {
+        return roughBeta * roughBeta - a * (offset.ff() - offset.rr());
+    }
+
+    /** Below -2E both the handout and exact arithmetic certainly miss. */
+    public static boolean certainlyMisses(double roughDelta, double E) {
+        return roughDelta < -2 * E;
+    }
+
+    /**
+     * sqrt(roughDelta - 2E), a lower bound on sqrt(Delta): the quick test's one square root. NaN
+     * when the argument is negative, which the quick test rejects.
+     */
+    public static double quickSquareRoot(double roughDelta, double E) {
+        return Math.sqrt(roughDelta - 2 * E);
     }
 
     /**
@@ -228,27 +277,58 @@ public final class RobustIntersection {
      * 0 by more than its bound, keep their signs, and the nearest positive one passes its
      * TOLERANCE test. RobustIntersectionShortcutTest checks on hard and ordinary inputs that the
      * answers with and without this shortcut are the same.
+     *
+     * <p>Its arithmetic is in the helpers below ({@link #quickSquareRoot}, {@link #quickNear},
+     * {@link #quickFar}, {@link #quickSpread}, {@link #quickRootError}), so that a renderer can do
+     * it for many rays at a time; only the comparisons are here. Multiplying by the reciprocals
+     * 1 / a and 1 / sqrtLow instead of dividing rounds differently by an ulp, which the factors
+     * of 2 and 8u absorb.
      */
-    static boolean handoutCertainlyAccurate(double a, double roughBeta, double betaAbs, double roughDelta, double E) {
+    static boolean handoutCertainlyAccurate(double roughDelta, double E, double near, double far, double spread,
+            double rootError) {
         if (!(roughDelta > 4 * E)) {
             return false;
         }
-        // One square root and two divisions: sqrt(Delta) lies in [sqrtLow, sqrtLow + 2E / sqrtLow]
-        // (sqrt(x + 3E) <= sqrt(x) + 3E / (2 sqrt(x))), and multiplying by 1 / a instead of
-        // dividing rounds differently by an ulp, which the factors of 2 and 8u below absorb.
-        double sqrtLow = Math.sqrt(roughDelta - 2 * E);
-        double overSqrtLow = 1 / sqrtLow, overA = 1 / a;
-        double sqrtHigh = sqrtLow + 2 * E * overSqrtLow;
-        double near = (-roughBeta - sqrtLow) * overA, far = (-roughBeta + sqrtLow) * overA;
-        double spread = (4 * U * betaAbs + 2 * E * overSqrtLow) * overA + 8 * U * (Math.abs(near) + Math.abs(far));
-        double largest = Math.max(Math.abs(near), Math.abs(far)) + spread;
-        double rootError = (E * overSqrtLow + 4 * U * (betaAbs + sqrtHigh)) * overA + 16 * U * largest;
         double clearance = 2 * rootError + spread;
         if (!(Math.abs(near) > clearance && Math.abs(far) > clearance)) {
             return false;
         }
         double s = near > 0 ? near : far;
         return s > 0 && 2 * rootError <= TOLERANCE * (s - spread);
+    }
+
+    /** The quick test's near root (-roughBeta - sqrtLow) / a. */
+    public static double quickNear(double roughBeta, double sqrtLow, double overA) {
+        return (-roughBeta - sqrtLow) * overA;
+    }
+
+    /** The quick test's far root (-roughBeta + sqrtLow) / a. */
+    public static double quickFar(double roughBeta, double sqrtLow, double overA) {
+        return (-roughBeta + sqrtLow) * overA;
+    }
+
+    /**
+     * How far the quick roots may be from the exact ones. {@code sensitivity} is E / sqrtLow,
+     * which bounds sqrt(Delta) - sqrtLow by twice itself (sqrt(x + 3E) &lt;= sqrt(x) + 3E / (2 sqrt(x))).
+     */
+    public static double quickSpread(double betaAbs, double sensitivity, double overA, double near, double far) {
+        return (4 * U * betaAbs + 2 * sensitivity) * overA + 8 * U * (Math.abs(near) + Math.abs(far));
+    }
+
+    /** An upper bound on the larger of the exact roots' magnitudes. */
+    public static double quickLargest(double near, double far, double spread) {
+        return Math.max(Math.abs(near), Math.abs(far)) + spread;
+    }
+
+    /**
+     * The careful test's bound on the roots' error, with every input on the side that makes it
+     * larger: sqrt(Delta) by sqrtLow below a division, by sqrtLow + 2 sensitivity elsewhere, and
+     * the largest root by {@link #quickLargest}.
+     */
+    public static double quickRootError(double betaAbs, double sensitivity, double sqrtLow, double overA,
+            double largest) {
+        double sqrtHigh = sqrtLow + 2 * sensitivity;
+        return (sensitivity + 4 * U * (betaAbs + sqrtHigh)) * overA + 16 * U * largest;
     }
 
     /** Whether the handout's roots have the exact roots' signs and its chosen s is within TOLERANCE. */

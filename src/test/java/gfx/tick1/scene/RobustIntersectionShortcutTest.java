@@ -99,10 +99,18 @@ class RobustIntersectionShortcutTest {
     /** The shortcut's own verdict, from the quantities nearestRoot gives it. */
     private static boolean quickAccepts(Case c) {
         double a = c.dx * c.dx + c.dy * c.dy + c.dz * c.dz;
-        double betaAbs = Math.abs(c.dx * c.fx) + Math.abs(c.dy * c.fy) + Math.abs(c.dz * c.fz);
-        double ff = c.fx * c.fx + c.fy * c.fy + c.fz * c.fz, rr = c.r * c.r;
-        double E = 16 * 0x1p-53 * (betaAbs * betaAbs + a * (ff + rr));
-        double roughBeta = c.dx * c.fx + c.dy * c.fy + c.dz * c.fz;
-        return RobustIntersection.handoutCertainlyAccurate(a, roughBeta, betaAbs, roughBeta * roughBeta - a * (ff - rr), E);
+        RobustIntersection.Offset offset = RobustIntersection.Offset.of(c.fx, c.fy, c.fz, c.r);
+        double roughBeta = RobustIntersection.roughBeta(c.dx, c.dy, c.dz, offset);
+        double betaAbs = RobustIntersection.betaAbs(c.dx, c.dy, c.dz, offset);
+        double E = RobustIntersection.discriminantBound(a, betaAbs, offset);
+        double roughDelta = RobustIntersection.roughDelta(a, roughBeta, offset);
+        double sqrtLow = RobustIntersection.quickSquareRoot(roughDelta, E);
+        double sensitivity = E * (1 / sqrtLow);
+        double near = RobustIntersection.quickNear(roughBeta, sqrtLow, 1 / a);
+        double far = RobustIntersection.quickFar(roughBeta, sqrtLow, 1 / a);
+        double spread = RobustIntersection.quickSpread(betaAbs, sensitivity, 1 / a, near, far);
+        double rootError = RobustIntersection.quickRootError(betaAbs, sensitivity, sqrtLow, 1 / a,
+                RobustIntersection.quickLargest(near, far, spread));
+        return RobustIntersection.handoutCertainlyAccurate(roughDelta, E, near, far, spread, rootError);
     }
 }
