@@ -21,7 +21,8 @@ final class ScreenBounds {
     /** Per sphere, the pixel coordinates (inclusive) that its rays may have. */
     final double[] left, right, top, bottom;
 
-    ScreenBounds(FlatScene scene, double widthM, double heightM, double xStep, double yStep) {
+    ScreenBounds(FlatScene scene, Frame frame) {
+        double widthM = frame.widthM(), heightM = frame.heightM(), xStep = frame.xStep(), yStep = frame.yStep();
         int n = scene.size;
         left = new double[n];
         right = new double[n];

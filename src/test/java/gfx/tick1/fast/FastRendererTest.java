@@ -46,11 +46,21 @@ class FastRendererTest {
                 first % w, first / w).isZero();
     }
 
+    /** Both tracers, forced: the vector one (true) and the scalar one (false). */
+    private static final boolean[] TRACERS = {true, false};
+
+    private static String tracer(boolean vector) {
+        return vector ? "vector tracer" : "scalar tracer";
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void matchesTheReadableRendererOnEveryRepositoryScene(Path scene) {
-        assertSamePixels(new Renderer(640, 480).render(load(scene)),
-                new FastRenderer(640, 480, new SamplePattern(1)).render(load(scene)), scene.toString());
+        BufferedImage expected = new Renderer(640, 480).render(load(scene));
+        for (boolean vector : TRACERS) {
+            assertSamePixels(expected, new FastRenderer(640, 480, new SamplePattern(1), null, Intersection.DEFAULT, vector)
+                    .render(load(scene)), scene + ", " + tracer(vector));
+        }
     }
 
     static List<Path> hardScenes() throws IOException {
@@ -61,9 +71,12 @@ class FastRendererTest {
     @MethodSource("hardScenes")
     void matchesTheReadableRendererWithEveryIntersectionMethodOnTheHardCases(Path scene) {
         for (Intersection intersection : Intersection.values()) {
-            assertSamePixels(new Renderer(320, 240, intersection).render(load(scene)),
-                    new FastRenderer(320, 240, new SamplePattern(1), null, intersection).render(load(scene)),
-                    scene + " with " + intersection);
+            BufferedImage expected = new Renderer(320, 240, intersection).render(load(scene));
+            for (boolean vector : TRACERS) {
+                assertSamePixels(expected,
+                        new FastRenderer(320, 240, new SamplePattern(1), null, intersection, vector).render(load(scene)),
+                        scene + " with " + intersection + ", " + tracer(vector));
+            }
         }
     }
 
@@ -72,18 +85,26 @@ class FastRendererTest {
     void matchesTheReadableRendererWhenAntiAliasing(int samples) {
         Scene scene = load(Path.of("scenes/tick1.xml"));
         SamplePattern pattern = new SamplePattern(samples);
-        assertSamePixels(new Renderer(160, 120).render(scene, pattern, row -> { }),
-                new FastRenderer(160, 120, pattern).render(scene), samples + " samples");
+        BufferedImage expected = new Renderer(160, 120).render(scene, pattern, row -> { });
+        for (boolean vector : TRACERS) {
+            assertSamePixels(expected, new FastRenderer(160, 120, pattern, null, Intersection.DEFAULT, vector).render(scene),
+                    samples + " samples, " + tracer(vector));
+        }
     }
 
     @ParameterizedTest(name = "seed {0}")
     @ValueSource(longs = {1, 2, 3})
     void bvhAndBruteForceAgreeOnLargeScenesIncludingExactTies(long seed) {
         Scene scene = crowd(seed, 1500);
-        BufferedImage brute = new FastRenderer(200, 150, new SamplePattern(1), false, Intersection.DEFAULT).render(scene);
-        BufferedImage bvh = new FastRenderer(200, 150, new SamplePattern(1), true, Intersection.DEFAULT).render(scene);
-        assertSamePixels(brute, bvh, "BVH vs brute force");
-        assertSamePixels(new Renderer(200, 150).render(scene), bvh, "BVH vs readable");
+        BufferedImage readable = new Renderer(200, 150).render(scene);
+        for (boolean vector : TRACERS) {
+            BufferedImage brute = new FastRenderer(200, 150, new SamplePattern(1), false, Intersection.DEFAULT, vector)
+                    .render(scene);
+            BufferedImage bvh = new FastRenderer(200, 150, new SamplePattern(1), true, Intersection.DEFAULT, vector)
+                    .render(scene);
+            assertSamePixels(brute, bvh, "BVH vs brute force, " + tracer(vector));
+            assertSamePixels(readable, bvh, "BVH vs readable, " + tracer(vector));
+        }
     }
 
     @Test
@@ -96,6 +117,20 @@ class FastRendererTest {
         scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(0, 1, 0)));
         int centre = new FastRenderer(64, 48, new SamplePattern(1), true, Intersection.DEFAULT).render(scene).getRGB(32, 24) & 0xFFFFFF;
         assertThat(centre).as("the red sphere comes first in the file").isEqualTo(0xFF0000);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(doubles = {Double.NaN, Double.NEGATIVE_INFINITY, -1, -0.0, 0.0, Double.MIN_VALUE, 0.1, 0.5,
+        0.9999999999999999, 1, 1.0000000000000002, 2, Double.POSITIVE_INFINITY})
+    void theVectorTracerConvertsEveryChannelValueToTheReadableCodesByte(double channel) {
+        // An unlit white sphere's colour is the ambient light itself: every channel value reaches
+        // the byte conversion as it is, NaN and infinities included.
+        Scene scene = new Scene();
+        scene.setAmbientLight(new Vector3(channel));
+        scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(1)));
+        assertSamePixels(new Renderer(16, 12).render(scene),
+                new FastRenderer(16, 12, new SamplePattern(1), null, Intersection.DEFAULT, true).render(scene),
+                "ambient " + channel);
     }
 
     @Test
