@@ -119,7 +119,7 @@ public final class Bench implements Callable<Integer> {
     /** Frame sizes, repetitions and scenes for the two modes. */
     private record Settings(int width, int height, int errorWidth, int errorHeight, int warmups, int runs,
             int[] crowds, int processRuns) {
-        static final Settings FULL = new Settings(3840, 2160, 640, 480, 3, 7, new int[] {1_000, 10_000}, 7);
+        static final Settings FULL = new Settings(3840, 2160, 640, 480, 6, 7, new int[] {1_000, 10_000}, 7);
         static final Settings QUICK = new Settings(640, 480, 160, 120, 1, 3, new int[] {1_000}, 3);
 
         Settings withRuns(int warmups, int runs) {
@@ -140,6 +140,8 @@ public final class Bench implements Callable<Integer> {
                         (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), null, intersection).render(s)));
             }
         }
+        variants.add(new Variant("fast double, robust, scalar tracer", 1, cores,
+                (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), null, Intersection.DEFAULT, false).render(s)));
         for (int samples : new int[] {4, 16}) {
             variants.add(new Variant("fast double, robust, " + samples + " samples", samples, cores,
                     (s, w, h) -> new FastRenderer(w, h, new SamplePattern(samples)).render(s)));
