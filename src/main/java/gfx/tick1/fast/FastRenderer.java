@@ -100,9 +100,9 @@ public final class FastRenderer {
         int width = frame.width(), height = frame.height();
         int[] pixels = new int[width * height];
         AtomicInteger finished = new AtomicInteger();
-        // One tracer (and its row buffers) a thread, not a row.
         boolean warm = RAYS_TRACED.getAndAdd(frame.rays()) >= VECTOR_AFTER_RAYS;
         boolean vector = forceVector != null ? forceVector : warm && width >= VECTOR_MIN_WIDTH;
+        // One tracer (and its row buffers) a thread, not a row.
         ThreadLocal<Tracer> tracers = ThreadLocal.withInitial(() -> vector
                 ? new VectorTracer(flat, tree, bounds, frame)
                 : new ScalarTracer(flat, tree, bounds, frame));

@@ -19,11 +19,9 @@ final class FlatScene {
 
     final int size;
     final Intersection intersection;
-    /** f = O - C for O = 0. */
-    final double[] fx, fy, fz;
     /** The constant term of the quadratic, f.f - r^2. */
     final double[] c;
-    /** The ray-independent terms of the robust method, per sphere. */
+    /** Per sphere, f = O - C with O = 0 and the robust method's other ray-independent terms. */
     final RobustIntersection.Offset[] offsets;
     final double[] cx, cy, cz, radius;
     /** C_diff. */
@@ -36,9 +34,6 @@ final class FlatScene {
         this.intersection = intersection;
         List<Sphere> spheres = scene.getObjects();
         size = spheres.size();
-        fx = new double[size];
-        fy = new double[size];
-        fz = new double[size];
         c = new double[size];
         offsets = new RobustIntersection.Offset[size];
         cx = new double[size];
@@ -55,11 +50,10 @@ final class FlatScene {
             cy[i] = centre.y;
             cz[i] = centre.z;
             radius[i] = sphere.getRadius();
-            fx[i] = 0 - centre.x;
-            fy[i] = 0 - centre.y;
-            fz[i] = 0 - centre.z;
-            c[i] = (fx[i] * fx[i] + fy[i] * fy[i] + fz[i] * fz[i]) - Math.pow(radius[i], 2);
-            offsets[i] = RobustIntersection.Offset.of(fx[i], fy[i], fz[i], radius[i]);
+            // f = O - C for O = 0.
+            double fx = 0 - centre.x, fy = 0 - centre.y, fz = 0 - centre.z;
+            c[i] = (fx * fx + fy * fy + fz * fz) - Math.pow(radius[i], 2);
+            offsets[i] = RobustIntersection.Offset.of(fx, fy, fz, radius[i]);
             red[i] = sphere.getColour().x;
             green[i] = sphere.getColour().y;
             blue[i] = sphere.getColour().z;
@@ -102,7 +96,7 @@ final class FlatScene {
      * the nearest root s &gt; 0, or +infinity.
      */
     private double handoutRoot(int i, double dx, double dy, double dz, double a) {
-        double b = 2 * (dx * fx[i] + dy * fy[i] + dz * fz[i]);
+        double b = 2 * RobustIntersection.roughBeta(dx, dy, dz, offsets[i]);
         double discriminant = b * b - 4 * a * c[i];
         if (discriminant < 0) {
             return Double.POSITIVE_INFINITY;

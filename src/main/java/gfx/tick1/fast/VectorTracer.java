@@ -62,7 +62,7 @@ final class VectorTracer implements Tracer {
     private final int[] hit;
     private final double[] s;
     /** One sphere's quadratic: beta = D.f, the handout's root of its discriminant and its two roots. */
-    private final double[] beta, root, handoutNear, handoutFar;
+    private final double[] beta, sqrtDiscriminant, handoutNear, handoutFar;
     /** The robust method's estimates (see {@link RobustIntersection#nearestRoot}). */
     private final double[] betaAbs, bound, roughDelta, sqrtLow, sensitivity, quickNear, quickFar, spread, largest, rootError;
     /** The hit sphere's centre and C_diff. */
@@ -95,7 +95,7 @@ final class VectorTracer implements Tracer {
         hit = new int[width];
         s = new double[width];
         beta = new double[width];
-        root = new double[width];
+        sqrtDiscriminant = new double[width];
         handoutNear = new double[width];
         handoutFar = new double[width];
         betaAbs = new double[width];
@@ -147,11 +147,11 @@ final class VectorTracer implements Tracer {
         for (int i = 0; i < samples.size(); i++) {
             double offsetX = samples.dx(i), sampleY = y + samples.dy(i);
             directions(offsetX, sampleY);
-            nearestHits(offsetX, sampleY, 0, width);
-            shade(0, width);
-            addColour(sumRed, baseRed, iRed, i == 0, 0, width);
-            addColour(sumGreen, baseGreen, iGreen, i == 0, 0, width);
-            addColour(sumBlue, baseBlue, iBlue, i == 0, 0, width);
+            nearestHits(offsetX, sampleY);
+            shade();
+            addColour(sumRed, baseRed, iRed, i == 0);
+            addColour(sumGreen, baseGreen, iGreen, i == 0);
+            addColour(sumBlue, baseBlue, iBlue, i == 0);
         }
         // The mean, as the readable code takes it: the sum scaled by 1 / N (exactly the sum for N = 1).
         Tracer.packRow(sumRed, sumGreen, sumBlue, 1.0 / samples.size(), bytes, pixels, offset);
@@ -167,13 +167,13 @@ final class VectorTracer implements Tracer {
     }
 
     /** The sphere each ray meets first (-1 for none) and at what distance. */
-    private void nearestHits(double offsetX, double sampleY, int start, int end) {
+    private void nearestHits(double offsetX, double sampleY) {
         if (tree != null) {
-            nearestHitsInTree(start, end);
+            nearestHitsInTree();
             return;
         }
-        Arrays.fill(hit, start, end, -1);
-        Arrays.fill(s, start, end, Double.POSITIVE_INFINITY);
+        Arrays.fill(hit, -1);
+        Arrays.fill(s, Double.POSITIVE_INFINITY);
         // Sphere by sphere in file order, keeping a hit only when strictly nearer: ties go to the
         // earlier sphere, as in the readable code's loop over the scene.
         for (int i = 0; i < scene.size; i++) {
@@ -181,8 +181,8 @@ final class VectorTracer implements Tracer {
                 continue;
             }
             // Every x with x + offsetX inside [left, right], and perhaps one more at each end.
-            int from = (int) Math.max(start, Math.floor(bounds.left[i] - offsetX));
-            int to = (int) Math.min(end - 1, Math.ceil(bounds.right[i] - offsetX));
+            int from = (int) Math.max(0, Math.floor(bounds.left[i] - offsetX));
+            int to = (int) Math.min(width - 1, Math.ceil(bounds.right[i] - offsetX));
             if (from > to) {
                 continue;
             }
@@ -192,22 +192,25 @@ final class VectorTracer implements Tracer {
             handoutRootOfDiscriminant(scene.c[i], from, to);
             handoutRoots(from, to);
             if (!handout) {
-                // The robust method's estimates and its quick test (RobustIntersection.nearestRoot).
+                // The robust method's estimates (RobustIntersection.nearestRoot), and its quick test
+                // where the handout's root may be kept.
                 betaAbs(offset, from, to);
                 boundAndRoughDelta(offset, from, to);
-                quickSquareRoot(from, to);
-                quickRoots(from, to);
-                quickSpread(from, to);
-                quickLargest(from, to);
-                quickRootError(from, to);
+                if (keepHandoutWhereAccurate) {
+                    quickSquareRoot(from, to);
+                    quickRoots(from, to);
+                    quickSpread(from, to);
+                    quickLargest(from, to);
+                    quickRootError(from, to);
+                }
             }
             keepNearer(i, offset, from, to);
         }
     }
 
     /** With a BVH, one ray at a time. */
-    private void nearestHitsInTree(int start, int end) {
-        for (int x = start; x < end; x++) {
+    private void nearestHitsInTree() {
+        for (int x = 0; x < width; x++) {
             hit[x] = tree.closest(dx[x], dy[x], dz[x], a[x], nodeStack, entryStack, inverse, distance);
             s[x] = distance[0];
         }
@@ -224,7 +227,7 @@ final class VectorTracer implements Tracer {
     private void handoutRootOfDiscriminant(double c, int from, int to) {
         for (int x = from; x <= to; x++) {
             double b = 2 * beta[x];
-            root[x] = Math.sqrt(b * b - 4 * a[x] * c);
+            sqrtDiscriminant[x] = Math.sqrt(b * b - 4 * a[x] * c);
         }
     }
 
@@ -232,8 +235,8 @@ final class VectorTracer implements Tracer {
     private void handoutRoots(int from, int to) {
         for (int x = from; x <= to; x++) {
             double b = 2 * beta[x];
-            handoutNear[x] = (-b - root[x]) / (2 * a[x]);
-            handoutFar[x] = (-b + root[x]) / (2 * a[x]);
+            handoutNear[x] = (-b - sqrtDiscriminant[x]) / (2 * a[x]);
+            handoutFar[x] = (-b + sqrtDiscriminant[x]) / (2 * a[x]);
         }
     }
 
@@ -312,8 +315,8 @@ final class VectorTracer implements Tracer {
      * addColour sums: Phong's model for the pixels in [first, last], the span with hits, where
      * a miss computes nonsense from s = infinity that the last loop replaces.
      */
-    private void shade(int start, int end) {
-        int first = start, last = end - 1;
+    private void shade() {
+        int first = 0, last = width - 1;
         while (first <= last && hit[first] < 0) {
             first++;
         }
@@ -327,8 +330,8 @@ final class VectorTracer implements Tracer {
             ambientOnly(first, last);
         }
         // Outside [first, last] every ray missed.
-        background(start, first);
-        background(last + 1, end);
+        background(0, first);
+        background(last + 1, width);
         missesAndSpecular(first, last);
     }
 
@@ -516,13 +519,13 @@ final class VectorTracer implements Tracer {
      * Adds one channel of each pixel's colour for this sample, base + specular (C_spec I) with
      * C_spec = 1, to its sum. For a miss or an unlit scene the last term is 0 * 0.
      */
-    private void addColour(double[] sum, double[] base, double[] I, boolean first, int start, int end) {
+    private void addColour(double[] sum, double[] base, double[] I, boolean first) {
         if (first) {
-            for (int p = start; p < end; p++) {
+            for (int p = 0; p < width; p++) {
                 sum[p] = base[p] + specular[p] * (1 * I[p]);
             }
         } else {
-            for (int p = start; p < end; p++) {
+            for (int p = 0; p < width; p++) {
                 sum[p] = sum[p] + (base[p] + specular[p] * (1 * I[p]));
             }
         }
