@@ -172,19 +172,29 @@ public final class RobustIntersection {
         if (certainlyMisses(roughDelta, E)) {
             return Double.NEGATIVE_INFINITY;
         }
-        double sqrtLow = quickAccept ? quickSquareRoot(roughDelta, E) : Double.NaN;
+        if (keepHandoutWhereAccurate && quickAccept && quickAccepts(a, roughBeta, betaAbs, roughDelta, E)) {
+            return HANDOUT_IS_ACCURATE;
+        }
+        return carefulNearestRoot(dx, dy, dz, a, offset, betaAbs, E, keepHandoutWhereAccurate);
+    }
+
+    /**
+     * The quick test, {@link #handoutCertainlyAccurate}, with its arithmetic done here by the
+     * helpers below, one ray at a time.
+     */
+    static boolean quickAccepts(double a, double roughBeta, double betaAbs, double roughDelta, double E) {
+        double sqrtLow = quickSquareRoot(roughDelta, E);
         double overA = 1 / a, sensitivity = E * (1 / sqrtLow);
         double near = quickNear(roughBeta, sqrtLow, overA), far = quickFar(roughBeta, sqrtLow, overA);
         double spread = quickSpread(betaAbs, sensitivity, overA, near, far);
         double rootError = quickRootError(betaAbs, sensitivity, sqrtLow, overA, quickLargest(near, far, spread));
-        return nearestRoot(dx, dy, dz, a, offset, keepHandoutWhereAccurate, betaAbs, E, roughDelta,
-                near, far, spread, rootError);
+        return handoutCertainlyAccurate(roughDelta, E, near, far, spread, rootError);
     }
 
     /**
      * The same decision from quantities computed beforehand by the helpers below: a renderer can
      * compute those for many rays at once, in loops the JIT turns into vector instructions, and
-     * then take the decision here, branch by branch. NaN quick-test quantities skip the quick test.
+     * then take the decision here, branch by branch, as the method above takes it.
      */
     public static double nearestRoot(double dx, double dy, double dz, double a, Offset offset,
             boolean keepHandoutWhereAccurate, double betaAbs, double E, double roughDelta,

@@ -104,13 +104,6 @@ class RobustIntersectionShortcutTest {
         double betaAbs = RobustIntersection.betaAbs(c.dx, c.dy, c.dz, offset);
         double E = RobustIntersection.discriminantBound(a, betaAbs, offset);
         double roughDelta = RobustIntersection.roughDelta(a, roughBeta, offset);
-        double sqrtLow = RobustIntersection.quickSquareRoot(roughDelta, E);
-        double sensitivity = E * (1 / sqrtLow);
-        double near = RobustIntersection.quickNear(roughBeta, sqrtLow, 1 / a);
-        double far = RobustIntersection.quickFar(roughBeta, sqrtLow, 1 / a);
-        double spread = RobustIntersection.quickSpread(betaAbs, sensitivity, 1 / a, near, far);
-        double rootError = RobustIntersection.quickRootError(betaAbs, sensitivity, sqrtLow, 1 / a,
-                RobustIntersection.quickLargest(near, far, spread));
-        return RobustIntersection.handoutCertainlyAccurate(roughDelta, E, near, far, spread, rootError);
+        return RobustIntersection.quickAccepts(a, roughBeta, betaAbs, roughDelta, E);
     }
 }
