@@ -8,6 +8,7 @@ import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
 import java.awt.image.BufferedImage;
 import java.math.BigDecimal;
+import java.util.List;
 import java.util.stream.IntStream;
 
 /**
@@ -40,10 +41,15 @@ public final class TruthRenderer {
     /** The exact image, one {@link Camera#castRay} per pixel, as {@link Renderer#render} lays it out. */
     public BufferedImage render(Scene scene) {
         Camera camera = new Camera(width, height);
+        // Every camera ray starts at the same point, so each sphere's c = |O - C|^2 - r^2, the
+        // costly BigDecimal part, is the same for all of them: computed once here.
+        Vector3 origin = camera.castRay(0, 0).getOrigin();
+        DoubleDouble[] c = scene.getObjects().stream()
+                .map(sphere -> exactC(origin, sphere.getPosition(), sphere.getRadius())).toArray(DoubleDouble[]::new);
         int[] pixels = new int[width * height];
         IntStream.range(0, height).parallel().forEach(y -> {
             for (int x = 0; x < width; x++) {
-                pixels[y * width + x] = toRGB(trace(scene, camera.castRay(x, y)));
+                pixels[y * width + x] = toRGB(trace(scene, camera.castRay(x, y), c));
             }
         });
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
@@ -53,12 +59,22 @@ public final class TruthRenderer {
 
     /** The exact colour seen along the ray, before clamping. */
     public Vec trace(Scene scene, Ray ray) {
+        DoubleDouble[] c = scene.getObjects().stream()
+                .map(sphere -> exactC(ray.getOrigin(), sphere.getPosition(), sphere.getRadius()))
+                .toArray(DoubleDouble[]::new);
+        return trace(scene, ray, c);
+    }
+
+    /** As above, with each sphere's c for this ray's origin computed beforehand, in scene order. */
+    private static Vec trace(Scene scene, Ray ray, DoubleDouble[] c) {
         Vec O = Vec.of(ray.getOrigin());
         Vec D = Vec.of(ray.getDirection());
+        List<Sphere> spheres = scene.getObjects();
         Sphere closest = null;
         DoubleDouble closestDistance = null;
-        for (Sphere sphere : scene.getObjects()) {
-            DoubleDouble s = hitDistance(sphere, ray);
+        for (int i = 0; i < spheres.size(); i++) {
+            Sphere sphere = spheres.get(i);
+            DoubleDouble s = hitDistance(sphere, ray, c[i]);
             // Strictly closer, so that the earlier sphere wins an exact tie.
             if (s != null && (closestDistance == null || s.compareTo(closestDistance) < 0)) {
                 closest = sphere;
@@ -84,12 +100,14 @@ public final class TruthRenderer {
      * whether the ray hits the surface it starts on; c / q is exactly 0 there.
      */
     public static DoubleDouble hitDistance(Sphere sphere, Ray ray) {
+        return hitDistance(sphere, ray, exactC(ray.getOrigin(), sphere.getPosition(), sphere.getRadius()));
+    }
+
+    private static DoubleDouble hitDistance(Sphere sphere, Ray ray, DoubleDouble c) {
         Vec D = Vec.of(ray.getDirection());
         Vec f = Vec.of(ray.getOrigin()).subtract(Vec.of(sphere.getPosition()));
-        DoubleDouble r = DoubleDouble.of(sphere.getRadius());
         DoubleDouble a = D.dot(D);
         DoubleDouble beta = D.dot(f);
-        DoubleDouble c = exactC(ray.getOrigin(), sphere.getPosition(), sphere.getRadius());
         DoubleDouble quarterDiscriminant = beta.multiply(beta).subtract(a.multiply(c));
         if (quarterDiscriminant.signum() < 0) {
             return null;
@@ -211,11 +229,6 @@ public final class TruthRenderer {
         Vec normalised() {
             DoubleDouble m = magnitude();
             return new Vec(x.divide(m), y.divide(m), z.divide(m));
-        }
-
-        /** The nearest doubles, for messages and comparisons. */
-        public Vector3 toVector3() {
-            return new Vector3(x.doubleValue(), y.doubleValue(), z.doubleValue());
         }
     }
 }
