@@ -7,13 +7,13 @@ import gfx.tick1.image.PngEncoder;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.render.TruthRenderer;
+import gfx.tick1.scene.BundledScenes;
 import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -73,9 +73,7 @@ public final class Bench implements Callable<Integer> {
         Settings settings = quick ? Settings.QUICK : Settings.FULL;
         int cores = Runtime.getRuntime().availableProcessors();
 
-        String tick1Xml = bundledTick1Scene();
-        Path tick1File = out.resolve("tick1.xml");
-        Files.writeString(tick1File, tick1Xml);
+        Path tick1File = BundledScenes.extract(BundledScenes.TICK1, out);
         Scene tick1 = load(tick1File);
 
         List<Result> results = new ArrayList<>();
@@ -234,14 +232,5 @@ public final class Bench implements Callable<Integer> {
 
     private static Scene load(Path file) {
         return new SceneLoader(file, false).getScene();
-    }
-
-    private static String bundledTick1Scene() throws IOException {
-        try (InputStream in = Bench.class.getResourceAsStream("tick1.xml")) {
-            if (in == null) {
-                throw new IOException("the bundled tick1.xml is missing from the jar");
-            }
-            return new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
-        }
     }
 }

@@ -37,20 +37,13 @@ public final class BundledScenes {
         return target;
     }
 
-    /** Loads the bundled scene {@code name} (through a temporary file: the loader reads files). */
+    /** Loads the bundled scene {@code name}; messages name it as {@code name}. */
     public static Scene load(String name) {
-        try {
-            Path directory = Files.createTempDirectory("tick1-scene");
-            try {
-                Path file = extract(name, directory);
-                try {
-                    return new SceneLoader(file, true).getScene();
-                } finally {
-                    Files.deleteIfExists(file);
-                }
-            } finally {
-                Files.deleteIfExists(directory);
+        try (InputStream in = BundledScenes.class.getResourceAsStream(FOLDER + name)) {
+            if (in == null) {
+                throw new IOException("no bundled scene called " + name);
             }
+            return new SceneLoader(name, in.readAllBytes(), true).getScene();
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
