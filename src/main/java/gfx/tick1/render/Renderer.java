@@ -8,8 +8,6 @@ import gfx.tick1.scene.RaycastHit;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
 import java.awt.image.BufferedImage;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.function.IntConsumer;
 import java.util.stream.IntStream;
 
 /** Traces one ray per pixel and shades hits with the Phong model (handout section 5). */
@@ -80,23 +78,21 @@ public class Renderer {
 
     /** Renders the scene on all cores; each pixel is computed alone, so the image is the same. */
     public BufferedImage render(Scene scene) {
-        return render(scene, new SamplePattern(1), row -> { });
+        return render(scene, new SamplePattern(1));
     }
 
     /**
      * Renders the scene, rows shared among the cores. With one sample, one {@code castRay} per
      * pixel through its centre; with more, the average of the samples' colours, taken before
-     * the conversion to bytes. {@code rowsDone} hears the count of finished rows, from any thread.
+     * the conversion to bytes.
      */
-    public BufferedImage render(Scene scene, SamplePattern samples, IntConsumer rowsDone) {
+    public BufferedImage render(Scene scene, SamplePattern samples) {
         Camera camera = new Camera(width, height);
         int[] pixels = new int[width * height];
-        AtomicInteger finished = new AtomicInteger();
         IntStream.range(0, height).parallel().forEach(y -> {
             for (int x = 0; x < width; x++) {
                 pixels[y * width + x] = pixel(scene, camera, samples, x, y).toRGB();
             }
-            rowsDone.accept(finished.incrementAndGet());
         });
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
         image.setRGB(0, 0, width, height, pixels, 0, width);

@@ -85,7 +85,7 @@ class FastRendererTest {
     void matchesTheReadableRendererWhenAntiAliasing(int samples) {
         Scene scene = load(Path.of("scenes/tick1.xml"));
         SamplePattern pattern = new SamplePattern(samples);
-        BufferedImage expected = new Renderer(160, 120).render(scene, pattern, row -> { });
+        BufferedImage expected = new Renderer(160, 120).render(scene, pattern);
         for (boolean vector : TRACERS) {
             assertSamePixels(expected, new FastRenderer(160, 120, pattern, null, Intersection.DEFAULT, vector).render(scene),
                     samples + " samples, " + tracer(vector));
