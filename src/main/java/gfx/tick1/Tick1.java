@@ -20,7 +20,6 @@ import java.io.PrintWriter;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
 import java.util.concurrent.ExecutionException;
@@ -28,6 +27,7 @@ import java.util.concurrent.ForkJoinPool;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
@@ -134,11 +134,15 @@ public final class Tick1 implements Callable<Integer> {
         return EXIT_INTERNAL;
     }
 
+    /** A subcommand's name, and how to make it (only when the full command line is built). */
+    private record Subcommand(String name, Supplier<Object> command) {
+    }
+
     /** The subcommands, in the order the help lists them. */
-    private static final List<Supplier<Object>> SUBCOMMANDS = List.of(CompareCommand::new, DiagnoseCommand::new,
-            GradeCommand::new, StarterCommand::new, Bench::new, Preview::new);
-    private static final Set<String> SUBCOMMAND_NAMES = Set.of("compare", "diagnose", "grade", "starter", "bench",
-            "preview");
+    private static final List<Subcommand> SUBCOMMANDS = List.of(new Subcommand("compare", CompareCommand::new),
+            new Subcommand("diagnose", DiagnoseCommand::new), new Subcommand("grade", GradeCommand::new),
+            new Subcommand("starter", StarterCommand::new), new Subcommand("bench", Bench::new),
+            new Subcommand("preview", Preview::new));
 
     /**
      * The command line for these arguments. Picocli reads every registered command's annotations
@@ -151,7 +155,8 @@ public final class Tick1 implements Callable<Integer> {
         for (String arg : args) {
             boolean asksForHelpOrVersion = arg.equals("--help") || arg.equals("--version")
                     || arg.matches("-[^-]*[hV].*"); // -h, -V, and clusters such as -qh
-            plainRender &= !SUBCOMMAND_NAMES.contains(arg) && !asksForHelpOrVersion;
+            boolean namesASubcommand = SUBCOMMANDS.stream().anyMatch(subcommand -> subcommand.name().equals(arg));
+            plainRender &= !namesASubcommand && !asksForHelpOrVersion;
         }
         return plainRender ? configure(new CommandLine(command)) : commandLine(command);
     }
@@ -159,7 +164,10 @@ public final class Tick1 implements Callable<Integer> {
     /** The configured command line, as {@link #main} runs it; tests run it the same way. */
     public static CommandLine commandLine(Tick1 command) {
         CommandLine commandLine = new CommandLine(command);
-        SUBCOMMANDS.forEach(subcommand -> commandLine.addSubcommand(subcommand.get()));
+        SUBCOMMANDS.forEach(subcommand -> commandLine.addSubcommand(subcommand.name(), subcommand.command().get()));
+        // Every subcommand's --version says which build it is, as tick1 --version does.
+        commandLine.getSubcommands().values()
+                .forEach(subcommand -> subcommand.getCommandSpec().versionProvider(new Version()));
         return configure(commandLine);
     }
 
@@ -193,8 +201,7 @@ public final class Tick1 implements Callable<Integer> {
         timings.end("command line");
         String usage = checkOptions();
         if (usage != null) {
-            err.println("tick1: " + usage + " (see tick1 --help)");
-            return EXIT_USAGE;
+            throw new ParameterException(spec.commandLine(), usage);
         }
 
         Scene scene;

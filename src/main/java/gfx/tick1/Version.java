@@ -3,7 +3,7 @@ package gfx.tick1;
 import picocli.CommandLine.IVersionProvider;
 
 /** {@code --version}: the build's version from the jar manifest, and the Java it runs on. */
-public final class Version implements IVersionProvider {
+final class Version implements IVersionProvider {
 
     @Override
     public String[] getVersion() {

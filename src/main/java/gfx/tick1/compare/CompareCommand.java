@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -56,8 +57,8 @@ public final class CompareCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         if (tolerance < 0 || tolerance > 255) {
-            err.println("tick1 compare: --tolerance " + tolerance + ": must be from 0 to 255 (see tick1 compare --help)");
-            return EXIT_CANNOT_COMPARE;
+            // Reported and answered with exit status 2 like any other usage error (Tick1.configure).
+            throw new ParameterException(spec.commandLine(), "--tolerance " + tolerance + ": must be from 0 to 255");
         }
         ImageDifference difference;
         try {
@@ -89,7 +90,7 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     private String verdictDifferent(ImageDifference difference) {
-        int beyond = difference.totalPixels() - difference.pixelsWithin(tolerance);
+        int beyond = difference.pixelsDifferingByMoreThan(tolerance);
         return "DIFFERENT: " + beyond + (beyond == 1 ? " pixel differs" : " pixels differ")
                 + (tolerance == 0 ? "" : " by more than " + tolerance + (tolerance == 1 ? " level" : " levels"));
     }

@@ -88,15 +88,6 @@ public enum Variant {
         return figure.isEmpty() ? label : label + " (" + figure + ")";
     }
 
-    public String label() {
-        return label;
-    }
-
-    /** The handout figure showing this stage or mistake, such as "Figure 6b", or "" when none does. */
-    public String figure() {
-        return figure;
-    }
-
     /** One sentence (without a capital or a full stop) on what is wrong, for the winner of a diagnosis. */
     public String explanation() {
         return explanation;

@@ -26,6 +26,7 @@ import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
@@ -107,8 +108,7 @@ public final class GradeCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         String usage = checkOptions();
         if (usage != null) {
-            err.println("tick1 grade: " + usage + " (see tick1 grade --help)");
-            return EXIT_USAGE;
+            throw new ParameterException(spec.commandLine(), usage);
         }
         Path work = Files.createTempDirectory("tick1-grade");
         try {
@@ -197,8 +197,9 @@ public final class GradeCommand implements Callable<Integer> {
             return true;
         }
         out.println(grading.name() + ": FAIL: " + difference.summary());
-        out.printf("  mean difference R %.3f, G %.3f, B %.3f levels; PSNR %.2f dB%n", difference.meanPerChannel()[0],
-                difference.meanPerChannel()[1], difference.meanPerChannel()[2], difference.psnr());
+        double[] mean = difference.meanPerChannel();
+        out.printf("  mean difference R %.3f, G %.3f, B %.3f levels; PSNR %.2f dB%n", mean[0], mean[1], mean[2],
+                difference.psnr());
         Diagnosis diagnosis = new Diagnoser().diagnose(image, grading.scene());
         diagnosis.report().forEach(line -> out.println("  " + line));
         String stem = number + "-" + grading.name().replaceAll("[^A-Za-z0-9._-]", "_").replaceAll("\\.xml$", "");
@@ -220,11 +221,13 @@ public final class GradeCommand implements Callable<Integer> {
     private List<GradingScene> gradingScenes(Path work) throws IOException {
         Path bundled = Files.createDirectory(work.resolve("scenes"));
         List<GradingScene> scenes = new ArrayList<>();
-        scenes.add(load(BundledScenes.TICK1, BundledScenes.extract(BundledScenes.TICK1, bundled)));
         if (scenesFolder == null) {
-            scenes.add(load(BundledScenes.HIDDEN, BundledScenes.extract(BundledScenes.HIDDEN, bundled)));
+            for (String name : BundledScenes.GRADING) {
+                scenes.add(load(name, BundledScenes.extract(name, bundled)));
+            }
             return scenes;
         }
+        scenes.add(load(BundledScenes.TICK1, BundledScenes.extract(BundledScenes.TICK1, bundled)));
         if (!Files.isDirectory(scenesFolder)) {
             throw new IOException(scenesFolder + ": not a folder (--scenes wants a folder of *.xml scenes)");
         }

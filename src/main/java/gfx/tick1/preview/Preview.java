@@ -1,7 +1,6 @@
 package gfx.tick1.preview;
 
 import gfx.tick1.Tick1;
-import gfx.tick1.Version;
 import java.awt.Desktop;
 import java.awt.GraphicsEnvironment;
 import java.io.IOException;
@@ -15,12 +14,13 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /** {@code tick1 preview}: a web page on this machine that shows a scene in 3D beside its ray-traced image. */
-@Command(name = "preview", mixinStandardHelpOptions = true, versionProvider = Version.class,
+@Command(name = "preview", mixinStandardHelpOptions = true,
         sortOptions = false, usageHelpAutoWidth = true,
         header = "Shows a scene in 3D in the browser, beside its ray-traced image.",
         description = {
@@ -57,8 +57,7 @@ public final class Preview implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         if (port < 0 || port > 65535) {
-            err.println("tick1 preview: --port " + port + ": must be from 0 to 65535 (see tick1 preview --help)");
-            return Tick1.EXIT_USAGE;
+            throw new ParameterException(spec.commandLine(), "--port " + port + ": must be from 0 to 65535");
         }
         Path scenePath = null;
         if (scene != null) {
