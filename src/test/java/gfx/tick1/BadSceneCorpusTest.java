@@ -2,7 +2,7 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.Tick1CommandTest.Run;
+import gfx.tick1.CliRun;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -65,7 +65,7 @@ class BadSceneCorpusTest {
         List<String> args = new ArrayList<>(c.options());
         args.addAll(List.of("-i", input, "-o", output.toString(), "--width", "16", "--height", "12"));
 
-        Run run = Tick1CommandTest.run(args.toArray(String[]::new));
+        CliRun run = CliRun.of(args.toArray(String[]::new));
 
         assertThat(run.status()).as(run.err()).isEqualTo(Tick1.EXIT_BAD_SCENE);
         assertThat(run.err()).as("standard error").isEqualTo(CORPUS + "/" + c.error() + System.lineSeparator());

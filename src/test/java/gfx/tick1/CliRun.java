@@ -6,18 +6,19 @@ import java.io.StringWriter;
 import picocli.CommandLine;
 
 /**
- * One run of the real entry point with what it printed captured, for the subcommands' tests in
- * other packages (Tick1CommandTest has its own for the render command).
+ * One run of the real entry point with what it printed captured: the text on standard output
+ * and error, and the bytes written to standard output (the image, for {@code -o -}).
  */
-public record CliRun(int status, String out, String err) {
+public record CliRun(int status, String out, String err, byte[] stdout) {
 
     public static CliRun of(String... args) {
+        ByteArrayOutputStream binary = new ByteArrayOutputStream();
         StringWriter out = new StringWriter(), err = new StringWriter();
-        CommandLine commandLine = Tick1.commandLine(new Tick1(new ByteArrayOutputStream()));
+        CommandLine commandLine = Tick1.commandLine(new Tick1(binary));
         commandLine.setOut(new PrintWriter(out, true));
         commandLine.setErr(new PrintWriter(err, true));
         int status = commandLine.execute(args);
-        return new CliRun(status, out.toString(), err.toString());
+        return new CliRun(status, out.toString(), err.toString(), binary.toByteArray());
     }
 
     /** Everything printed, for assertion messages. */

@@ -3,7 +3,7 @@ package gfx.tick1;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import gfx.tick1.Tick1CommandTest.Run;
+import gfx.tick1.CliRun;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.io.PrintStream;
@@ -45,7 +45,7 @@ class CommandLineLimitsTest {
     void anOutOfRangeOrMalformedOptionIsRefusedInOneLine(String options, String message) {
         String[] args = (String.join(" ", "-i", "scenes/basic_scene.xml", "-o", dir.resolve("o.png").toString())
                 + " " + options).split(" ");
-        Run run = Tick1CommandTest.run(args);
+        CliRun run = CliRun.of(args);
         assertThat(run.status()).as(run.err()).isEqualTo(Tick1.EXIT_USAGE);
         assertThat(run.err()).isEqualTo("tick1: " + message + " (see tick1 --help)" + System.lineSeparator());
         assertThat(dir.resolve("o.png")).doesNotExist();
@@ -55,7 +55,7 @@ class CommandLineLimitsTest {
     void anImageTooBigForTheHeapIsRefusedBeforeRendering() {
         // 16384 x 16384 needs 2 GiB (8 bytes a pixel); the build gives tests a 2 GiB heap, half of it usable.
         assumeTrue(Runtime.getRuntime().maxMemory() / 2 < 8L * 16384 * 16384, "a heap big enough for the image");
-        Run run = Tick1CommandTest.run("-i", "scenes/basic_scene.xml", "-o", dir.resolve("o.png").toString(),
+        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.resolve("o.png").toString(),
                 "--width", "16384", "--height", "16384");
         assertThat(run.status()).as(run.err()).isEqualTo(Tick1.EXIT_USAGE);
         assertThat(run.err()).matches("tick1: a 16384 x 16384 image needs about 2048 MiB, more than half of the "

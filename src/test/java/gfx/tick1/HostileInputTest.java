@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.sun.net.httpserver.HttpServer;
-import gfx.tick1.Tick1CommandTest.Run;
+import gfx.tick1.CliRun;
 import gfx.tick1.scene.SceneLoader;
 import java.io.IOException;
 import java.io.RandomAccessFile;
@@ -49,12 +49,12 @@ class HostileInputTest {
         return scene;
     }
 
-    private Run render(Path scene) {
-        return Tick1CommandTest.run("-i", scene.toString(), "-o", output.toString(), "--width", "8", "--height", "6");
+    private CliRun render(Path scene) {
+        return CliRun.of("-i", scene.toString(), "-o", output.toString(), "--width", "8", "--height", "6");
     }
 
     /** The run was refused with exactly this one line, and the earlier image is untouched. */
-    private void assertRefused(Run run, String line) throws IOException {
+    private void assertRefused(CliRun run, String line) throws IOException {
         assertThat(run.status()).as(run.err()).isEqualTo(Tick1.EXIT_BAD_SCENE);
         assertThat(run.err()).isEqualTo(line + System.lineSeparator());
         assertThat(Files.readAllBytes(output)).isEqualTo(earlierImage);
@@ -75,7 +75,7 @@ class HostileInputTest {
         Files.writeString(secretFile, secret);
         Path scene = scene(template.replace("SECRET", secretFile.toUri().toString()));
 
-        Run run = render(scene);
+        CliRun run = render(scene);
 
         assertRefused(run, scene + ":1:10: " + DOCTYPE_REFUSED);
         assertThat(run.err() + run.out()).doesNotContain(secret);
@@ -162,7 +162,7 @@ class HostileInputTest {
     @Test
     void warningsStopAtAHundredAndTheRestAreCounted() throws IOException {
         Path scene = scene("<scene>\n" + "<point-light colour='#FFFFFF'/>\n".repeat(151) + "</scene>\n");
-        Run run = render(scene);
+        CliRun run = render(scene);
         assertThat(run.status()).as(run.err()).isZero();
         assertThat(run.err().lines()).hasSize(SceneLoader.MAX_WARNINGS + 1)
                 .endsWith(scene + ": warning: 50 more warnings like these, not shown");

@@ -58,7 +58,7 @@ class PreviewCommandTest {
 
     @Test
     void aMissingSceneFileStopsItWithOneLine() {
-        Tick1CommandTest.Run run = Tick1CommandTest.run("preview", "no/such/scene.xml", "--no-open");
+        CliRun run = CliRun.of("preview", "no/such/scene.xml", "--no-open");
         assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
         assertThat(run.err()).isEqualTo("no/such/scene.xml: no such file" + System.lineSeparator());
         assertThat(run.out()).isEmpty();
@@ -66,7 +66,7 @@ class PreviewCommandTest {
 
     @Test
     void aPortOutOfRangeIsAUsageError() {
-        Tick1CommandTest.Run run = Tick1CommandTest.run("preview", "--port", "70000", "--no-open");
+        CliRun run = CliRun.of("preview", "--port", "70000", "--no-open");
         assertThat(run.status()).isEqualTo(Tick1.EXIT_USAGE);
         assertThat(run.err()).contains("--port 70000: must be from 0 to 65535").doesNotContain("Exception");
     }
@@ -75,7 +75,7 @@ class PreviewCommandTest {
     void aPortInUseIsAUsageError() throws Exception {
         try (PreviewServer other = PreviewServer.start(null, 0)) {
             String port = Integer.toString(other.uri().getPort());
-            Tick1CommandTest.Run run = Tick1CommandTest.run("preview", "--port", port, "--no-open");
+            CliRun run = CliRun.of("preview", "--port", port, "--no-open");
             assertThat(run.status()).isEqualTo(Tick1.EXIT_USAGE);
             assertThat(run.err()).startsWith("tick1 preview: cannot use port " + port + ":")
                     .contains("--port 0 for any free one");
@@ -84,9 +84,9 @@ class PreviewCommandTest {
 
     @Test
     void helpDescribesTheSubcommand() {
-        Tick1CommandTest.Run run = Tick1CommandTest.run("preview", "--help");
+        CliRun run = CliRun.of("preview", "--help");
         assertThat(run.status()).isZero();
         assertThat(run.out()).contains("Usage: tick1 preview", "--port", "--no-open", "SCENE.xml");
-        assertThat(Tick1CommandTest.run("--help").out()).as("tick1 --help lists it").contains("preview");
+        assertThat(CliRun.of("--help").out()).as("tick1 --help lists it").contains("preview");
     }
 }

@@ -4,37 +4,19 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 /** The real entry point, run as {@code main} runs it, with what it printed captured. */
 class Tick1CommandTest {
 
     @TempDir
     Path dir;
-
-    /** What one run of the command did. */
-    record Run(int status, String out, String err, byte[] stdoutBytes) {
-    }
-
-    static Run run(String... args) {
-        ByteArrayOutputStream binary = new ByteArrayOutputStream();
-        StringWriter out = new StringWriter(), err = new StringWriter();
-        CommandLine commandLine = Tick1.commandLine(new Tick1(binary));
-        commandLine.setOut(new PrintWriter(out, true));
-        commandLine.setErr(new PrintWriter(err, true));
-        int status = commandLine.execute(args);
-        return new Run(status, out.toString(), err.toString(), binary.toByteArray());
-    }
 
     private Path existingOutput() throws IOException {
         Path output = dir.resolve("out.png");
@@ -51,7 +33,7 @@ class Tick1CommandTest {
     @Test
     void rendersTheSceneToAPngOfTheDefaultSize() throws IOException {
         Path output = dir.resolve("out.png");
-        Run run = run("--input", "scenes/tick1.xml", "--output", output.toString());
+        CliRun run = CliRun.of("--input", "scenes/tick1.xml", "--output", output.toString());
         assertThat(run.status()).as(run.err()).isZero();
         assertThat(run.err()).isEmpty();
         BufferedImage image = ImageIO.read(output.toFile());
@@ -62,14 +44,14 @@ class Tick1CommandTest {
     @Test
     void shortOptionsAndSizeOptionsWork() throws IOException {
         Path output = dir.resolve("small.png");
-        Run run = run("-i", "scenes/basic_scene.xml", "-o", output.toString(), "--width", "32", "--height", "20");
+        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(), "--width", "32", "--height", "20");
         assertThat(run.status()).as(run.err()).isZero();
         assertThat(ImageIO.read(output.toFile()).getWidth()).isEqualTo(32);
     }
 
     @Test
     void quietPrintsNothingOnSuccess() {
-        Run run = run("-q", "-i", "scenes/tick1.xml", "-o", dir.resolve("q.png").toString());
+        CliRun run = CliRun.of("-q", "-i", "scenes/tick1.xml", "-o", dir.resolve("q.png").toString());
         assertThat(run.status()).isZero();
         assertThat(run.out()).isEmpty();
         assertThat(run.err()).isEmpty();
@@ -77,25 +59,25 @@ class Tick1CommandTest {
 
     @Test
     void outputDashWritesThePngToStandardOutput() throws IOException {
-        Run run = run("-i", "scenes/basic_scene.xml", "-o", "-", "--width", "16", "--height", "12");
+        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", "-", "--width", "16", "--height", "12");
         assertThat(run.status()).isZero();
         assertThat(run.out()).as("no text may mix with the PNG bytes").isEmpty();
-        assertThat(ImageIO.read(new ByteArrayInputStream(run.stdoutBytes())).getHeight()).isEqualTo(12);
+        assertThat(ImageIO.read(new ByteArrayInputStream(run.stdout())).getHeight()).isEqualTo(12);
     }
 
     @Test
     void theImageIsTheSameWhateverTheNumberOfThreads() throws IOException {
         Path one = dir.resolve("one.png"), many = dir.resolve("many.png");
-        run("-i", "scenes/hundred-spheres.xml", "-o", one.toString(), "--threads", "1");
-        run("-i", "scenes/hundred-spheres.xml", "-o", many.toString(), "--threads", "7");
+        CliRun.of("-i", "scenes/hundred-spheres.xml", "-o", one.toString(), "--threads", "1");
+        CliRun.of("-i", "scenes/hundred-spheres.xml", "-o", many.toString(), "--threads", "7");
         BufferedImage a = ImageIO.read(one.toFile()), b = ImageIO.read(many.toFile());
         assertThat(a.getRGB(0, 0, 640, 480, null, 0, 640)).isEqualTo(b.getRGB(0, 0, 640, 480, null, 0, 640));
     }
 
     @Test
     void helpAndVersionExitZero() {
-        assertThat(run("--help").out()).contains("--input", "--output", "--width", "--height", "Exit status");
-        Run version = run("--version");
+        assertThat(CliRun.of("--help").out()).contains("--input", "--output", "--width", "--height", "Exit status");
+        CliRun version = CliRun.of("--version");
         assertThat(version.status()).isZero();
         assertThat(version.out()).startsWith("tick1 ");
     }
@@ -104,7 +86,7 @@ class Tick1CommandTest {
     void anInvalidSceneGivesOneLineAndStatusOneAndKeepsTheOldImage() throws IOException {
         Path output = existingOutput();
         Path scene = scene("<scene>\n  <sphere radius=\"-1\" colour=\"#FF0000\"/>\n</scene>\n");
-        Run run = run("-i", scene.toString(), "-o", output.toString());
+        CliRun run = CliRun.of("-i", scene.toString(), "-o", output.toString());
         assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
         assertThat(run.err()).isEqualTo(scene + ":2:11: sphere radius \"-1\": must be a number greater than 0"
                 + System.lineSeparator());
@@ -114,7 +96,7 @@ class Tick1CommandTest {
     @Test
     void aMissingInputIsNamed() throws IOException {
         Path output = existingOutput();
-        Run run = run("-i", dir.resolve("missing.xml").toString(), "-o", output.toString());
+        CliRun run = CliRun.of("-i", dir.resolve("missing.xml").toString(), "-o", output.toString());
         assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
         assertThat(run.err().strip()).isEqualTo(dir.resolve("missing.xml") + ": no such file");
         assertThat(Files.readString(output)).isEqualTo("an earlier image");
@@ -123,7 +105,7 @@ class Tick1CommandTest {
     @Test
     void anUnwritableOutputGivesStatusThreeAndLeavesNoTemporaryFile() throws IOException {
         Path output = dir.resolve("no-such-dir").resolve("out.png");
-        Run run = run("-i", "scenes/basic_scene.xml", "-o", output.toString(), "--width", "8", "--height", "8");
+        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(), "--width", "8", "--height", "8");
         assertThat(run.status()).isEqualTo(Tick1.EXIT_CANNOT_WRITE);
         assertThat(run.err()).startsWith(output + ": cannot write the image: ").doesNotContain("\tat ");
         assertThat(run.err().lines()).hasSize(1);
@@ -132,7 +114,7 @@ class Tick1CommandTest {
     @Test
     void aSuccessfulRunReplacesTheOldImageAndLeavesNoTemporaryFiles() throws IOException {
         Path output = existingOutput();
-        assertThat(run("-i", "scenes/basic_scene.xml", "-o", output.toString()).status()).isZero();
+        assertThat(CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString()).status()).isZero();
         assertThat(ImageIO.read(output.toFile())).isNotNull();
         try (Stream<Path> files = Files.list(dir)) {
             assertThat(files).containsExactly(output);
@@ -141,7 +123,7 @@ class Tick1CommandTest {
 
     @Test
     void outputThatIsADirectoryIsRefused() throws IOException {
-        Run run = run("-i", "scenes/basic_scene.xml", "-o", dir.toString(), "--width", "8", "--height", "8");
+        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.toString(), "--width", "8", "--height", "8");
         assertThat(run.status()).isEqualTo(Tick1.EXIT_CANNOT_WRITE);
         assertThat(run.err().strip()).isEqualTo(dir + ": cannot write the image: is a directory, expected a file name for the PNG");
     }
@@ -150,7 +132,7 @@ class Tick1CommandTest {
     void badOptionsGiveOneLineAndStatusTwo() {
         for (String[] args : new String[][] {{"--width", "0"}, {"--height", "100000"}, {"--width", "abc"},
                 {"--no-such-option"}, {"--threads", "0"}}) {
-            Run run = run(args);
+            CliRun run = CliRun.of(args);
             assertThat(run.status()).as(String.join(" ", args)).isEqualTo(Tick1.EXIT_USAGE);
             assertThat(run.err().lines()).as(run.err()).hasSize(1);
             assertThat(run.err()).startsWith("tick1: ").contains("(see tick1 --help)");
@@ -161,7 +143,7 @@ class Tick1CommandTest {
     void warningsArePrintedButTheImageIsStillWritten() throws IOException {
         Path scene = scene("<scene>\n<point-light colour='#FFFFFF'/>\n<point-light colour='#FFFFFF'/>\n</scene>");
         Path output = dir.resolve("w.png");
-        Run run = run("-i", scene.toString(), "-o", output.toString());
+        CliRun run = CliRun.of("-i", scene.toString(), "-o", output.toString());
         assertThat(run.status()).isZero();
         assertThat(run.err()).startsWith(scene + ":3:1: warning: another <point-light>");
         assertThat(output).exists();
@@ -170,7 +152,7 @@ class Tick1CommandTest {
     @Test
     void strictRefusesWhatWouldOtherwiseBeAWarning() throws IOException {
         Path scene = scene("<scene><point-light colour='#FFFFFF'/><point-light colour='#FFFFFF'/></scene>");
-        Run run = run("--strict", "-i", scene.toString(), "-o", dir.resolve("s.png").toString());
+        CliRun run = CliRun.of("--strict", "-i", scene.toString(), "-o", dir.resolve("s.png").toString());
         assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
         assertThat(run.err()).endsWith("(an error under --strict)" + System.lineSeparator());
         assertThat(dir.resolve("s.png")).doesNotExist();

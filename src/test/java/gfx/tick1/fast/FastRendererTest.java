@@ -2,6 +2,7 @@ package gfx.tick1.fast;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.image.ImageDifference;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
@@ -33,17 +34,9 @@ class FastRendererTest {
     }
 
     private static void assertSamePixels(BufferedImage expected, BufferedImage actual, String what) {
-        int w = expected.getWidth(), h = expected.getHeight();
-        int[] e = expected.getRGB(0, 0, w, h, null, 0, w), a = actual.getRGB(0, 0, w, h, null, 0, w);
-        int differing = 0, first = -1;
-        for (int i = 0; i < e.length; i++) {
-            if (e[i] != a[i]) {
-                differing++;
-                first = first < 0 ? i : first;
-            }
-        }
-        assertThat(differing).as("%s: pixels differing from the readable renderer, first at (%d, %d)", what,
-                first % w, first / w).isZero();
+        ImageDifference difference = ImageDifference.between(expected, actual);
+        assertThat(difference.differingPixels()).as("%s: %s", what, difference.summary())
+                .isZero();
     }
 
     /** Both tracers, forced: the vector one (true) and the scalar one (false). */

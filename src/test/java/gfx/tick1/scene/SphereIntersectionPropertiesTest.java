@@ -4,9 +4,12 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.math.Ray;
 import gfx.tick1.math.Vector3;
+import java.util.List;
 import java.util.Random;
+import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
@@ -59,6 +62,23 @@ class SphereIntersectionPropertiesTest {
 
     static Stream<Case> cases() {
         return IntStream.range(0, 250).mapToObj(seed -> Case.generate(seed));
+    }
+
+    /**
+     * The properties below each skip the cases they do not speak of (a miss, an origin inside);
+     * this keeps every one of them speaking of many cases, so that none can pass by testing nothing.
+     */
+    @Test
+    void theCasesIncludeManyHitsMissesAndOriginsInsideAndOutside() {
+        List<Case> all = cases().collect(Collectors.toList());
+        long hits = all.stream().filter(c -> c.sphere().intersectionWith(c.ray()).getObjectHit() != null).count();
+        long outside = all.stream().filter(Case::originOutside).count();
+        long inside = all.stream().filter(c -> c.ray().getOrigin().subtract(c.sphere().getPosition()).magnitude()
+                <= c.sphere().getRadius() * (1 - 1e-6)).count();
+        assertThat(hits).as("hits").isGreaterThan(50);
+        assertThat(all.size() - hits).as("misses").isGreaterThan(50);
+        assertThat(outside).as("origins outside").isGreaterThan(50);
+        assertThat(inside).as("origins well inside").isGreaterThan(20);
     }
 
     @ParameterizedTest(name = "{0}")
