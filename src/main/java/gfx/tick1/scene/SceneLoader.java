@@ -1,7 +1,6 @@
 package gfx.tick1.scene;
 
 import gfx.tick1.math.Vector3;
-import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.CodingErrorAction;
@@ -12,17 +11,16 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.regex.Pattern;
-import javax.xml.parsers.ParserConfigurationException;
-import org.xml.sax.Attributes;
-import org.xml.sax.InputSource;
-import org.xml.sax.Locator;
-import org.xml.sax.SAXException;
+import org.w3c.dom.Document;
+import org.w3c.dom.Element;
+import org.w3c.dom.NamedNodeMap;
+import org.w3c.dom.Node;
 import org.xml.sax.SAXParseException;
-import org.xml.sax.helpers.DefaultHandler;
 
 /**
  * Reads a Tick 1 scene file: {@code <scene>} holding {@code sphere}, {@code ambient-light} and
@@ -33,9 +31,10 @@ import org.xml.sax.helpers.DefaultHandler;
  * silently used a default for an unparsable number, or crashed on a bad colour, this loader
  * rejects the file with one line naming the file, line and column, and what it expected.
  *
- * <p>It parses with the JDK's SAX parser rather than DOM because SAX reports where each element
- * is, and a DOM tree forgets it. The parser refuses any DOCTYPE, which closes off external
- * entities and entity-expansion bombs at once (OWASP's XXE advice for the JDK).
+ * <p>The file is read into a DOM {@link Document} ({@link SceneDocument}), whose elements carry
+ * their line and column, and the scene is built by walking that tree's elements in document
+ * order. The parser refuses any DOCTYPE, which closes off external entities and entity-expansion
+ * bombs at once (OWASP's XXE advice for the JDK).
  */
 public final class SceneLoader {
 
@@ -151,17 +150,30 @@ public final class SceneLoader {
             throw new SceneException(fileName + ": file is empty, expected a <scene> element");
         }
         SourcePositions positions = new SourcePositions(decodeLeniently(bytes));
+        Reader reader = new Reader(positions);
+        Document document;
         try {
-            InputSource source = new InputSource(new ByteArrayInputStream(bytes));
-            SafeXml.newParser().parse(source, new Handler(positions));
-        } catch (SceneException e) {
-            throw e;
-        } catch (SAXParseException e) {
-            throw new SceneException(fileName + ":" + e.getLineNumber() + ":" + e.getColumnNumber()
-                    + ": " + SafeXml.describe(e));
-        } catch (SAXException | IOException | ParserConfigurationException e) {
-            throw new SceneException(fileName + ": malformed XML: " + SafeXml.oneLine(e.getMessage()));
+            document = SceneDocument.parse(bytes, positions);
+        } catch (SceneDocument.Partial stop) {
+            // The elements before the stop come first in the file: a problem among them is the
+            // file's first problem, and is the one reported.
+            reader.read(stop.document());
+            throw reasonForStop(stop);
         }
+        reader.read(document);
+        reader.endOfScene();
+    }
+
+    private SceneException reasonForStop(SceneDocument.Partial stop) {
+        if (stop.tooManyElementsAt() != null) {
+            return new SceneException(fileName + ":" + stop.tooManyElementsAt()
+                    + ": too many elements: scene files may have at most " + MAX_ELEMENTS);
+        }
+        if (stop.getCause() instanceof SAXParseException e) {
+            return new SceneException(fileName + ":" + e.getLineNumber() + ":" + e.getColumnNumber()
+                    + ": " + SafeXml.describe(e));
+        }
+        return new SceneException(fileName + ": malformed XML: " + SafeXml.oneLine(stop.getCause().getMessage()));
     }
 
     private static String decodeLeniently(byte[] bytes) {
@@ -175,149 +187,156 @@ public final class SceneLoader {
         }
     }
 
-    /** Turns SAX events into scene objects, checking each element and attribute as it comes. */
-    private final class Handler extends DefaultHandler {
+    /** Walks the document's elements in document order, checking each and adding it to the scene. */
+    private final class Reader {
 
         private final SourcePositions positions;
-        private Locator locator;
-        private int depth;
-        private int elements;
         private boolean seenPointLight;
 
-        Handler(SourcePositions positions) {
+        Reader(SourcePositions positions) {
             this.positions = positions;
         }
 
-        @Override
-        public void setDocumentLocator(Locator locator) {
-            this.locator = locator;
-        }
-
-        @Override
-        public void startElement(String uri, String localName, String name, Attributes attributes) {
-            SourcePositions.Position at = positions.tagStart(locator.getLineNumber(), locator.getColumnNumber());
-            depth++;
-            if (++elements > MAX_ELEMENTS) {
-                throw error(at, "too many elements: scene files may have at most " + MAX_ELEMENTS);
-            }
-            if (depth == 1) {
-                if (!name.equals("scene")) {
-                    throw error(at, "root element <" + name + ">: expected <scene>");
-                }
-                checkAttributes(at, name, attributes, Set.of());
+        void read(Document document) {
+            Element root = document.getDocumentElement();
+            if (root == null) {
                 return;
             }
-            if (!ATTRIBUTES.containsKey(name)) {
-                throw error(at, "unknown element <" + name + ">: expected sphere, ambient-light or point-light");
+            SourcePositions.Position at = SceneDocument.positionOf(root);
+            if (!root.getTagName().equals("scene")) {
+                throw error(at, "root element <" + root.getTagName() + ">: expected <scene>");
             }
-            if (depth > 2) {
-                warn(at, "<" + name + "> is nested inside another element: read as if directly inside <scene>");
-            }
-            checkAttributes(at, name, attributes, ATTRIBUTES.get(name));
-            switch (name) {
-                case "sphere" -> scene.addObject(new Sphere(position(at, name, attributes),
-                        positiveNumber(at, name, attributes, "radius", 1), colour(at, name, attributes)));
-                case "ambient-light" -> scene.setAmbientLight(colour(at, name, attributes));
-                case "point-light" -> {
-                    if (seenPointLight) {
-                        warn(at, "another <point-light>: Tick 1 models one light, the last one in the file is used");
-                    }
-                    seenPointLight = true;
-                    scene.setPointLight(new PointLight(position(at, name, attributes), colour(at, name, attributes),
-                            nonNegativeNumber(at, name, attributes, "intensity", 100)));
-                }
-                default -> throw new IllegalStateException(name);
+            checkAttributes(at, root, Set.of());
+            // A loop rather than recursion: a hostile file may nest a million elements deep.
+            for (Node node = next(root, root); node != null; node = next(node, root)) {
+                readElement((Element) node, node.getParentNode() != root);
             }
         }
 
-        @Override
-        public void endElement(String uri, String localName, String name) {
-            depth--;
-        }
-
-        @Override
-        public void endDocument() {
+        /** The no-light warning, which only the whole file can give. */
+        void endOfScene() {
             if (!seenPointLight) {
                 warn(null, "no <point-light>: the spheres are lit by the ambient light only");
             }
         }
 
-        private void checkAttributes(SourcePositions.Position at, String element, Attributes attributes,
-                Set<String> known) {
-            for (int i = 0; i < attributes.getLength(); i++) {
-                String attribute = attributes.getQName(i);
-                if (!known.contains(attribute)) {
-                    warn(positions.attribute(at, attribute), element + " attribute \"" + attribute
-                            + "\": not part of Tick 1 scenes, ignored"
-                            + (known.isEmpty() ? "" : " (expected " + String.join(", ", sorted(known)) + ")"));
+        private void readElement(Element element, boolean nested) {
+            SourcePositions.Position at = SceneDocument.positionOf(element);
+            String name = element.getTagName();
+            if (!ATTRIBUTES.containsKey(name)) {
+                throw error(at, "unknown element <" + name + ">: expected sphere, ambient-light or point-light");
+            }
+            if (nested) {
+                warn(at, "<" + name + "> is nested inside another element: read as if directly inside <scene>");
+            }
+            checkAttributes(at, element, ATTRIBUTES.get(name));
+            switch (name) {
+                case "sphere" -> scene.addObject(new Sphere(position(at, element),
+                        positiveNumber(at, element, "radius", 1), colour(at, element)));
+                case "ambient-light" -> scene.setAmbientLight(colour(at, element));
+                case "point-light" -> {
+                    if (seenPointLight) {
+                        warn(at, "another <point-light>: Tick 1 models one light, the last one in the file is used");
+                    }
+                    seenPointLight = true;
+                    scene.setPointLight(new PointLight(position(at, element), colour(at, element),
+                            nonNegativeNumber(at, element, "intensity", 100)));
+                }
+                default -> throw new IllegalStateException(name);
+            }
+        }
+
+        /** The element after {@code node} in document order (depth first), or null after the last. */
+        private Node next(Node node, Node root) {
+            if (node.getFirstChild() != null) {
+                return node.getFirstChild();
+            }
+            for (Node up = node; up != root; up = up.getParentNode()) {
+                if (up.getNextSibling() != null) {
+                    return up.getNextSibling();
                 }
             }
+            return null;
         }
 
-        private Vector3 position(SourcePositions.Position at, String element, Attributes attributes) {
-            return new Vector3(number(at, element, attributes, "x", 0), number(at, element, attributes, "y", 0),
-                    number(at, element, attributes, "z", 0));
-        }
-
-        private double positiveNumber(SourcePositions.Position at, String element, Attributes attributes,
-                String attribute, double fallback) {
-            double value = number(at, element, attributes, attribute, fallback);
-            if (!(value > 0)) {
-                throw attributeError(at, element, attribute, attributes.getValue(attribute),
-                        "must be a number greater than 0");
+        /** Warns of attributes the element does not have, in the order the file gives them. */
+        private void checkAttributes(SourcePositions.Position at, Element element, Set<String> known) {
+            NamedNodeMap attributes = element.getAttributes();
+            List<String> unknown = new ArrayList<>();
+            for (int i = 0; i < attributes.getLength(); i++) {
+                String attribute = attributes.item(i).getNodeName();
+                if (!known.contains(attribute)) {
+                    unknown.add(attribute);
+                }
             }
-            return value;
-        }
-
-        private double nonNegativeNumber(SourcePositions.Position at, String element, Attributes attributes,
-                String attribute, double fallback) {
-            double value = number(at, element, attributes, attribute, fallback);
-            if (value < 0) {
-                throw attributeError(at, element, attribute, attributes.getValue(attribute),
-                        "must be a number of at least 0");
+            // A DOM keeps an element's attributes in an order of its own; the file's order is that
+            // of their positions.
+            unknown.sort(Comparator.comparing(attribute -> positions.attribute(at, attribute)));
+            for (String attribute : unknown) {
+                warn(positions.attribute(at, attribute), element.getTagName() + " attribute \"" + attribute
+                        + "\": not part of Tick 1 scenes, ignored"
+                        + (known.isEmpty() ? "" : " (expected " + String.join(", ", sorted(known)) + ")"));
             }
-            return value;
         }
 
-        private double number(SourcePositions.Position at, String element, Attributes attributes, String attribute,
+        private Vector3 position(SourcePositions.Position at, Element element) {
+            return new Vector3(number(at, element, "x", 0), number(at, element, "y", 0), number(at, element, "z", 0));
+        }
+
+        private double positiveNumber(SourcePositions.Position at, Element element, String attribute,
                 double fallback) {
-            String text = attributes.getValue(attribute);
-            if (text == null) {
+            double value = number(at, element, attribute, fallback);
+            if (!(value > 0)) {
+                throw attributeError(at, element, attribute, "must be a number greater than 0");
+            }
+            return value;
+        }
+
+        private double nonNegativeNumber(SourcePositions.Position at, Element element, String attribute,
+                double fallback) {
+            double value = number(at, element, attribute, fallback);
+            if (value < 0) {
+                throw attributeError(at, element, attribute, "must be a number of at least 0");
+            }
+            return value;
+        }
+
+        private double number(SourcePositions.Position at, Element element, String attribute, double fallback) {
+            if (!element.hasAttribute(attribute)) {
                 return fallback;
             }
-            String trimmed = text.strip();
+            String trimmed = element.getAttribute(attribute).strip();
             if (NON_FINITE.matcher(trimmed).matches()) {
-                throw attributeError(at, element, attribute, text, "must be a finite decimal number");
+                throw attributeError(at, element, attribute, "must be a finite decimal number");
             }
             if (!DECIMAL.matcher(trimmed).matches()) {
-                throw attributeError(at, element, attribute, text, "must be a decimal number such as 1.5 or -2e3");
+                throw attributeError(at, element, attribute, "must be a decimal number such as 1.5 or -2e3");
             }
             double value = Double.parseDouble(trimmed);
             if (!(Math.abs(value) <= MAX_MAGNITUDE)) {
-                throw attributeError(at, element, attribute, text,
+                throw attributeError(at, element, attribute,
                         "must be a number between -1e16 and 1e16 (the range the renderer is tested for)");
             }
             return value;
         }
 
-        private Vector3 colour(SourcePositions.Position at, String element, Attributes attributes) {
-            String text = attributes.getValue("colour");
-            if (text == null) {
-                throw error(at, element + " has no colour: expected colour=\"#RRGGBB\"");
+        private Vector3 colour(SourcePositions.Position at, Element element) {
+            if (!element.hasAttribute("colour")) {
+                throw error(at, element.getTagName() + " has no colour: expected colour=\"#RRGGBB\"");
             }
+            String text = element.getAttribute("colour");
             if (!COLOUR.matcher(text).matches()) {
-                throw attributeError(at, element, "colour", text,
-                        "must be # followed by six hexadecimal digits, as in #FF8800");
+                throw attributeError(at, element, "colour", "must be # followed by six hexadecimal digits, as in #FF8800");
             }
             // Each channel is value / 255.0 (the starter code's conversion).
             int rgb = Integer.parseInt(text.substring(1), 16);
             return new Vector3((rgb >> 16 & 0xFF) / 255.0, (rgb >> 8 & 0xFF) / 255.0, (rgb & 0xFF) / 255.0);
         }
 
-        private SceneException attributeError(SourcePositions.Position at, String element, String attribute,
-                String value, String expected) {
-            return error(positions.attribute(at, attribute), element + " " + attribute + " \"" + printable(value)
-                    + "\": " + expected);
+        private SceneException attributeError(SourcePositions.Position at, Element element, String attribute,
+                String expected) {
+            return error(positions.attribute(at, attribute), element.getTagName() + " " + attribute + " \""
+                    + printable(element.getAttribute(attribute)) + "\": " + expected);
         }
 
         private SceneException error(SourcePositions.Position at, String message) {

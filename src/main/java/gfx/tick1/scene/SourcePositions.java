@@ -14,7 +14,12 @@ import java.util.regex.Pattern;
 final class SourcePositions {
 
     /** A 1-based line and column, as editors and compilers print them. */
-    record Position(int line, int column) {
+    record Position(int line, int column) implements Comparable<Position> {
+        @Override
+        public int compareTo(Position other) {
+            return line != other.line ? Integer.compare(line, other.line) : Integer.compare(column, other.column);
+        }
+
         @Override
         public String toString() {
             return line + ":" + column;

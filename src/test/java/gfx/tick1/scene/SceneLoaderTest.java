@@ -150,6 +150,28 @@ class SceneLoaderTest {
     }
 
     @Test
+    void unknownAttributesAreWarnedOfInTheOrderTheFileGivesThem() throws IOException {
+        Path path = file("<scene><point-light colour='#FFFFFF'/><sphere zeta='1' colour='#FF0000' alpha='2'/></scene>");
+        assertThat(new SceneLoader(path, false).getWarnings()).extracting(w -> w.replace(path.toString(), ""))
+                .containsExactly(":1:47: warning: sphere attribute \"zeta\": not part of Tick 1 scenes, ignored "
+                                + "(expected colour, radius, x, y, z)",
+                        ":1:73: warning: sphere attribute \"alpha\": not part of Tick 1 scenes, ignored "
+                                + "(expected colour, radius, x, y, z)");
+    }
+
+    @Test
+    void aProblemBeforeMalformedXmlIsTheOneReported() throws IOException {
+        assertThat(errorFor("<scene>\n<sphere radius='-1' colour='#FF0000'/>\n<sphere colour='#FF0000'>\n"))
+                .isEqualTo("scene.xml:2:9: sphere radius \"-1\": must be a number greater than 0");
+    }
+
+    @Test
+    void malformedXmlBeforeAnyProblemIsTheOneReported() throws IOException {
+        assertThat(errorFor("<scene>\n<sphere colour='#FF0000'>\n</scene>\n<sphere radius='-1'/>\n"))
+                .startsWith("scene.xml:3:3: malformed XML: ");
+    }
+
+    @Test
     void aSceneWithoutAPointLightIsLitByAmbientLightWithAWarning() throws IOException {
         Path path = file("<scene><sphere colour='#FF0000'/></scene>");
         SceneLoader loader = new SceneLoader(path, false);
