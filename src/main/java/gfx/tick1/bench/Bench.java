@@ -3,7 +3,7 @@ package gfx.tick1.bench;
 import gfx.tick1.Tick1;
 import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.ImageDifference;
-import gfx.tick1.image.PngEncoder;
+import gfx.tick1.image.PngOutput;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.render.TruthRenderer;
@@ -22,7 +22,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import java.util.zip.Deflater;
 import javax.imageio.ImageIO;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -172,16 +171,15 @@ public final class Bench implements Callable<Integer> {
         return result;
     }
 
-    /** ImageIO's PNG writer against ours on the benchmark's largest tick1 frame: time and size. */
+    /** ImageIO's PNG writer at several deflate levels on the benchmark's largest tick1 frame: time and size. */
     private Map<String, String> pngEncoding(Scene scene, Settings settings) throws IOException {
         BufferedImage frame = new FastRenderer(settings.width, settings.height, new SamplePattern(1)).render(scene);
         Map<String, String> rows = new LinkedHashMap<>();
         Map<String, Encoder> encoders = new LinkedHashMap<>();
-        encoders.put("ImageIO, defaults", (image, stream) -> ImageIO.write(image, "png", stream));
-        encoders.put("tick1, Sub filter, deflate level 1 (default)", (image, stream) -> PngEncoder.write(image, stream));
-        encoders.put("tick1, Sub filter, deflate level 6", (image, stream) -> PngEncoder.write(image, stream, 6));
-        encoders.put("tick1, Sub filter, Huffman only", (image, stream) ->
-                PngEncoder.write(image, stream, Deflater.HUFFMAN_ONLY));
+        encoders.put("ImageIO, deflate level " + PngOutput.DEFLATE_LEVEL + " (tick1's setting)", PngOutput::write);
+        encoders.put("ImageIO, deflate level 2", (image, stream) -> PngOutput.write(image, stream, 2));
+        encoders.put("ImageIO, defaults (deflate level 4)", (image, stream) -> ImageIO.write(image, "png", stream));
+        encoders.put("ImageIO, deflate level 9", (image, stream) -> PngOutput.write(image, stream, 9));
         for (Map.Entry<String, Encoder> encoder : encoders.entrySet()) {
             int[] size = new int[1];
             Timing timing = Timing.of(() -> {

@@ -5,7 +5,11 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.awt.image.BufferedImage;
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
+import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.FileSystems;
 import java.nio.file.Files;
@@ -14,14 +18,21 @@ import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Random;
 import java.util.concurrent.TimeUnit;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
-/** The image file is replaced whole or not at all, and no temporary file outlives a run. */
+/**
+ * PNGs are written by ImageIO's writer, decode to exactly the image's pixels, and replace a file
+ * whole or not at all; no temporary file outlives a run.
+ */
 class PngOutputTest {
 
     private static final BufferedImage IMAGE = new BufferedImage(4, 3, BufferedImage.TYPE_INT_RGB);
@@ -55,6 +66,67 @@ class PngOutputTest {
         Path target = dir.resolve("a.png");
         PngOutput.write(image(), target);
         assertThat(ImageIO.read(target.toFile()).getRGB(1, 1) & 0xFFFFFF).isEqualTo(0xABCDEF);
+    }
+
+    private static BufferedImage noisyGradient(int width, int height, long seed) {
+        Random random = new Random(seed);
+        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                int r = (x * 255 / Math.max(1, width - 1)) ^ random.nextInt(4);
+                int g = y * 255 / Math.max(1, height - 1);
+                image.setRGB(x, y, r << 16 | g << 8 | random.nextInt(256));
+            }
+        }
+        return image;
+    }
+
+    @ParameterizedTest(name = "{0} x {1}, deflate level {2}")
+    @CsvSource({"1, 1, 1", "3, 2, 1", "640, 480, 1", "17, 200, 1", "200, 129, 0", "64, 64, 2", "99, 65, 4", "31, 130, 9"})
+    void theStreamDecodesToExactlyTheImagesPixelsAtEveryLevel(int width, int height, int level) throws IOException {
+        BufferedImage image = noisyGradient(width, height, width * 31L + height);
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        PngOutput.write(image, out, level);
+
+        BufferedImage decoded = ImageIO.read(new ByteArrayInputStream(out.toByteArray()));
+        assertThat(decoded).as("ImageIO could not read the PNG").isNotNull();
+        ImageDifference difference = ImageDifference.between(image, decoded);
+        assertThat(difference.differingPixels()).as(difference.summary()).isZero();
+    }
+
+    @Test
+    void aStreamThatFailsPartWayGivesItsOwnReasonNotImageIosWrapper() {
+        OutputStream full = new OutputStream() {
+            private int written;
+
+            @Override
+            public void write(int b) throws IOException {
+                if (++written > 100) {
+                    throw new IOException("No space left on device");
+                }
+            }
+        };
+        assertThatThrownBy(() -> PngOutput.write(noisyGradient(64, 64, 1), full))
+                .isInstanceOf(IOException.class).hasMessage("No space left on device");
+    }
+
+    @Test
+    void pngsAreWrittenByImageIoNotByHandWrittenDeflateOrChunkCode() throws IOException {
+        Path sources = Path.of("src", "main", "java");
+        assumeTrue(Files.isDirectory(sources), "needs the project's sources");
+        try (Stream<Path> files = Files.walk(sources)) {
+            List<String> offenders = files.filter(file -> file.toString().endsWith(".java"))
+                    .filter(file -> {
+                        try {
+                            return Pattern.compile("\\b(Deflater|DeflaterOutputStream|CRC32|Adler32)\\b")
+                                    .matcher(Files.readString(file)).find();
+                        } catch (IOException e) {
+                            throw new UncheckedIOException(e);
+                        }
+                    })
+                    .map(file -> sources.relativize(file).toString()).toList();
+            assertThat(offenders).as("sources that deflate or checksum by hand").isEmpty();
+        }
     }
 
     @Test
