@@ -137,7 +137,7 @@ class HostileInputTest {
     }
 
     @Test
-    void aSceneOfMoreThanAMillionElementsIsRefused() throws IOException {
+    void aSceneOfMoreThanAQuarterOfAMillionElementsIsRefused() throws IOException {
         Path scene = dir.resolve("many.xml");
         try (Writer out = Files.newBufferedWriter(scene)) {
             out.write("<scene>\n");
@@ -146,9 +146,9 @@ class HostileInputTest {
             }
             out.write("</scene>\n");
         }
-        // The scene element is the first; the millionth ambient-light is one too many.
+        // The scene element is the first; the last ambient-light is one too many.
         assertRefused(render(scene), scene + ":" + (SceneLoader.MAX_ELEMENTS + 1)
-                + ":1: too many elements: scene files may have at most 1000000");
+                + ":1: too many elements: scene files may have at most 250000");
     }
 
     @Test
