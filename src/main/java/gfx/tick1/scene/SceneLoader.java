@@ -156,7 +156,7 @@ public final class SceneLoader {
             throw new SceneException(fileName + ": file is empty, expected a <scene> element");
         }
         SourcePositions positions = new SourcePositions(decodeLeniently(bytes));
-        Reader reader = new Reader(positions);
+        DocumentReader reader = new DocumentReader(positions);
         Document document;
         try {
             document = SceneDocument.parse(bytes, positions);
@@ -194,12 +194,12 @@ public final class SceneLoader {
     }
 
     /** Walks the document's elements in document order, checking each and adding it to the scene. */
-    private final class Reader {
+    private final class DocumentReader {
 
         private final SourcePositions positions;
         private boolean seenPointLight;
 
-        Reader(SourcePositions positions) {
+        DocumentReader(SourcePositions positions) {
             this.positions = positions;
         }
 
