@@ -6,10 +6,12 @@ import gfx.tick1.math.Ray;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.render.Camera;
 import gfx.tick1.render.Renderer;
+import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.RaycastHit;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.awt.image.BufferedImage;
 import java.util.EnumMap;
 import java.util.EnumSet;
@@ -48,13 +50,20 @@ public final class VariantRenderer {
         Map<Variant, int[]> pixels = new EnumMap<>(Variant.class);
         variants.forEach(variant -> pixels.put(variant, new int[width * height]));
         boolean needsFarRoot = variants.contains(FAR_ROOT);
+        boolean needsBothRootsPositive = variants.contains(HIT_REJECTED_ON_A_NEGATIVE_ROOT);
         IntStream.range(0, height).parallel().forEach(y -> {
             for (int x = 0; x < width; x++) {
                 Ray ray = camera.castRay(x, y);
                 RaycastHit nearHit = scene.findClosestIntersection(ray);
                 RaycastHit farHit = needsFarRoot ? farthestRootHit(scene, ray) : null;
+                RaycastHit bothRootsHit = needsBothRootsPositive ? bothRootsPositiveHit(scene, ray) : null;
                 for (Variant variant : variants) {
-                    Vector3 colour = shade(scene, variant == FAR_ROOT ? farHit : nearHit, variant);
+                    RaycastHit hit = switch (variant) {
+                        case FAR_ROOT -> farHit;
+                        case HIT_REJECTED_ON_A_NEGATIVE_ROOT -> bothRootsHit;
+                        default -> nearHit;
+                    };
+                    Vector3 colour = shade(scene, hit, variant);
                     // Pixel row 0 is the top of the image; writing rows bottom-up turns the picture over.
                     int row = variant == UPSIDE_DOWN ? height - 1 - y : y;
                     pixels.get(variant)[row * width + x] = toRGB(colour, variant);
@@ -85,7 +94,7 @@ public final class VariantRenderer {
         if (variant == FLAT_COLOUR) {
             return C_diff;
         }
-        Vector3 ambient = C_diff.scale(I_a);
+        Vector3 ambient = variant == AMBIENT_WITHOUT_C_DIFF ? I_a : C_diff.scale(I_a);
 
         PointLight light = scene.getPointLight();
         if (light == null || variant == AMBIENT_ONLY) {
@@ -117,7 +126,8 @@ public final class VariantRenderer {
         if (variant == AMBIENT_DIFFUSE) {
             return ambient.add(diffuse);
         }
-        Vector3 specular = C_spec.scale(I).scale(k_s * Math.pow(specularBase, n));
+        Vector3 specular = variant == SPECULAR_WITHOUT_I ? C_spec.scale(k_s * Math.pow(specularBase, n))
+                : C_spec.scale(I).scale(k_s * Math.pow(specularBase, n));
         return ambient.add(diffuse).add(specular);
     }
 
@@ -139,10 +149,10 @@ public final class VariantRenderer {
         for (Sphere sphere : scene.getObjects()) {
             Vector3 O = ray.getOrigin();
             Vector3 D = ray.getDirection();
-            Vector3 C = sphere.getPosition();
+            Vector3 C = SphereGeometry.centre(sphere);
             double a = D.dot(D);
             double b = 2 * D.dot(O.subtract(C));
-            double c = O.subtract(C).dot(O.subtract(C)) - Math.pow(sphere.getRadius(), 2);
+            double c = O.subtract(C).dot(O.subtract(C)) - Math.pow(SphereGeometry.radius(sphere), 2);
             double discriminant = b * b - 4 * a * c;
             if (discriminant < 0) {
                 continue;
@@ -154,6 +164,33 @@ public final class VariantRenderer {
             }
         }
         return closest;
+    }
+
+    /**
+     * The nearest hit when a sphere counts only if both roots of its quadratic are positive: a
+     * sphere with the ray's origin inside it (roots of opposite signs, c &lt; 0) is never hit.
+     * Every other sphere is hit where the reference hits it.
+     */
+    private static RaycastHit bothRootsPositiveHit(Scene scene, Ray ray) {
+        RaycastHit closest = new RaycastHit();
+        for (Sphere sphere : scene.getObjects()) {
+            RaycastHit hit = Intersection.DEFAULT.find(sphere, ray);
+            if (hit.getDistance() < closest.getDistance() && !(nearRoot(sphere, ray) < 0)) {
+                closest = hit;
+            }
+        }
+        return closest;
+    }
+
+    /** s1 = (-b - sqrt(b^2 - 4ac)) / 2a, the smaller root, as Sphere.intersectionWith computes it. */
+    private static double nearRoot(Sphere sphere, Ray ray) {
+        Vector3 O = ray.getOrigin();
+        Vector3 D = ray.getDirection();
+        Vector3 C = SphereGeometry.centre(sphere);
+        double a = D.dot(D);
+        double b = 2 * D.dot(O.subtract(C));
+        double c = O.subtract(C).dot(O.subtract(C)) - Math.pow(SphereGeometry.radius(sphere), 2);
+        return (-b - Math.sqrt(b * b - 4 * a * c)) / (2 * a);
     }
 
     /** Colour to 0xRRGGBB: Vector3.toRGB, or rounded, or with red and blue exchanged. */
