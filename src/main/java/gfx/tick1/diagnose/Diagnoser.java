@@ -2,7 +2,7 @@ package gfx.tick1.diagnose;
 
 import gfx.tick1.diagnose.Diagnosis.Candidate;
 import gfx.tick1.image.ImageDifference;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.Scene;
 import java.awt.image.BufferedImage;
 import java.util.ArrayList;
@@ -116,7 +116,7 @@ public final class Diagnoser {
 
     /** The share of pixels that are background in both images or in neither. */
     private static double outlineMatch(BufferedImage render, BufferedImage image) {
-        int background = Renderer.BACKGROUND_COLOUR.toRGB() & 0xFFFFFF;
+        int background = ReferenceRenderer.BACKGROUND_COLOUR.toRGB() & 0xFFFFFF;
         int width = image.getWidth(), height = image.getHeight();
         int[] a = render.getRGB(0, 0, width, height, null, 0, width);
         int[] b = image.getRGB(0, 0, width, height, null, 0, width);

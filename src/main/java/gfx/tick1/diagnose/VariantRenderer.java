@@ -5,6 +5,7 @@ import static gfx.tick1.diagnose.Variant.*;
 import gfx.tick1.math.Ray;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.render.Camera;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.PointLight;
@@ -82,7 +83,7 @@ public final class VariantRenderer {
     /** Renderer.trace after the intersection: the background, or the shade of the hit. */
     private static Vector3 shade(Scene scene, RaycastHit hit, Variant variant) {
         if (variant == BACKGROUND_ONLY || hit.getObjectHit() == null) {
-            return Renderer.BACKGROUND_COLOUR;
+            return ReferenceRenderer.BACKGROUND_COLOUR;
         }
         return illuminate(scene, hit.getObjectHit(), hit.getLocation(), hit.getNormal(), variant);
     }

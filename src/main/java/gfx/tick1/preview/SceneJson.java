@@ -2,6 +2,7 @@ package gfx.tick1.preview;
 
 import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.PointLight;
+import gfx.tick1.scene.SphereGeometry;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
 import java.util.List;
@@ -22,7 +23,7 @@ final class SceneJson {
     static String describe(String name, Scene scene, List<String> warnings) {
         StringJoiner spheres = new StringJoiner(",", "[", "]");
         for (Sphere sphere : scene.getObjects()) {
-            spheres.add("{\"position\":" + vector(sphere.getPosition()) + ",\"radius\":" + sphere.getRadius()
+            spheres.add("{\"position\":" + vector(SphereGeometry.centre(sphere)) + ",\"radius\":" + SphereGeometry.radius(sphere)
                     + ",\"colour\":" + colour(sphere.getColour()) + "}");
         }
         PointLight light = scene.getPointLight();

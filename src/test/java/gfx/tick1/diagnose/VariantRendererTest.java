@@ -3,7 +3,7 @@ package gfx.tick1.diagnose;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.image.ImageDifference;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.BundledScenes;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
@@ -38,7 +38,7 @@ class VariantRendererTest {
     }
 
     private static void assertSameAsReference(Scene scene, String name) {
-        BufferedImage reference = new Renderer(640, 480).render(scene);
+        BufferedImage reference = new ReferenceRenderer(640, 480).render(scene);
         BufferedImage correct = new VariantRenderer(640, 480).render(scene, Variant.CORRECT);
         ImageDifference difference = ImageDifference.between(reference, correct);
         assertThat(difference.differingPixels()).as("%s: %s", name, difference.summary()).isZero();

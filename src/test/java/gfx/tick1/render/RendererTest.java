@@ -23,7 +23,7 @@ class RendererTest {
     private static final Vector3 BLACK = new Vector3(0);
     private static final double TOLERANCE = 1e-15;
 
-    private final Renderer renderer = new Renderer(64, 48);
+    private final Renderer renderer = new ReferenceRenderer(64, 48);
 
     private static Scene scene(Vector3 ambient, PointLight light) {
         Scene scene = new Scene();
