@@ -53,7 +53,7 @@ public final class LineDiff {
     }
 
     /** Every line of both texts, in order: kept, removed from ours, or added in theirs. */
-    static List<Line> edits(List<String> ours, List<String> theirs) {
+    public static List<Line> edits(List<String> ours, List<String> theirs) {
         int n = ours.size(), m = theirs.size();
         int[][] common = new int[n + 1][m + 1]; // common[i][j]: LCS length of ours[i..] and theirs[j..]
         for (int i = n - 1; i >= 0; i--) {
