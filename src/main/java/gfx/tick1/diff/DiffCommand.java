@@ -120,7 +120,7 @@ public final class DiffCommand implements Callable<Integer> {
                             .add(line.text().strip());
                 }
             }
-            for (Variant hint : Hints.of(new Hints.Change(signature, removed, added))) {
+            for (Variant hint : Hints.of(new Hints.Change(signature, removed, added, b))) {
                 lines.add(colours.yellow("hint: this looks like \"" + hint.title() + "\": reread handout "
                         + hint.reread() + "."));
             }

@@ -13,11 +13,15 @@ import java.util.regex.Pattern;
  */
 final class Hints {
 
-    /** The changed lines of one member. */
-    record Change(String member, List<String> removed, List<String> added) {
+    /** The changed lines of one member, and the whole of the student's version of it. */
+    record Change(String member, List<String> removed, List<String> added, List<String> theirs) {
 
         boolean removes(String regex) {
             return any(removed, regex);
+        }
+
+        boolean has(String regex) {
+            return any(theirs, regex);
         }
 
         boolean adds(String regex) {
@@ -43,7 +47,7 @@ final class Hints {
             new Rule(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT, "intersectionWith(Ray)",
                     c -> c.adds("s1 <=? 0 \\|\\| s2 <=? 0|s2 <=? 0 \\|\\| s1 <=? 0")),
             new Rule(Variant.UNCHECKED_NEGATIVE_SQUARE_ROOT, "intersectionWith(Ray)",
-                    c -> c.removes("if \\(discriminant < 0\\)") && !c.adds("discriminant\\s*(<|>=|<=|>)" + NUMBER)),
+                    c -> c.removes("if \\(discriminant < 0\\)") && c.has("Math\\.sqrt\\(") && !c.adds("discriminant\\s*(<|>=|<=|>)" + NUMBER)),
             new Rule(Variant.FLAT_COLOUR, "illuminate(Scene, Sphere, Vector3, Vector3)",
                     c -> c.adds("return object\\.getColour\\(\\);")),
             new Rule(Variant.AMBIENT_ONLY, "illuminate(Scene, Sphere, Vector3, Vector3)",
@@ -63,9 +67,9 @@ final class Hints {
             new Rule(Variant.R_WRONG_WAY, "illuminate(Scene, Sphere, Vector3, Vector3)",
                     c -> c.adds("N\\.reflectIn\\(L\\)")),
             new Rule(Variant.UNCLAMPED_N_DOT_L, "illuminate(Scene, Sphere, Vector3, Vector3)",
-                    c -> c.removes("Math\\.max\\(0, NdotL\\)") && !c.adds("max\\((0|0\\.0), NdotL\\)|max\\(NdotL, (0|0\\.0)\\)")),
+                    c -> c.removes("Math\\.max\\(0, NdotL\\)") && c.adds("NdotL") && !c.adds("max\\((0|0\\.0), NdotL\\)|max\\(NdotL, (0|0\\.0)\\)")),
             new Rule(Variant.UNCLAMPED_R_DOT_V, "illuminate(Scene, Sphere, Vector3, Vector3)",
-                    c -> c.removes("Math\\.max\\(0, RdotV\\)") && !c.adds("max\\((0|0\\.0), RdotV\\)|max\\(RdotV, (0|0\\.0)\\)")),
+                    c -> c.removes("Math\\.max\\(0, RdotV\\)") && c.adds("RdotV") && !c.adds("max\\((0|0\\.0), RdotV\\)|max\\(RdotV, (0|0\\.0)\\)")),
             new Rule(Variant.NO_FALL_OFF, "illuminate(Scene, Sphere, Vector3, Vector3)",
                     c -> c.removes("getIlluminationAt\\(distanceToLight\\)") && c.adds("getIntensity\\(\\)")
                             && !c.adds("getIntensity\\(\\).*distanceToLight")),

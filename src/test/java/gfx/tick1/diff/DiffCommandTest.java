@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.diagnose.Variant;
+import gfx.tick1.starter.StarterKit;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,6 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /** {@code tick1 diff} through the real entry point. */
@@ -19,6 +21,8 @@ class DiffCommandTest {
 
     private static final String ILLUMINATE = "illuminate(Scene, Sphere, Vector3, Vector3)";
     private static final String INTERSECTION = "intersectionWith(Ray)";
+    private static final String RENDER = "render(Scene)";
+    private static final String RGB = "image.setRGB(x, y, linearRGB.toRGB());";
 
     @TempDir
     Path dir;
@@ -103,7 +107,30 @@ class DiffCommandTest {
                         "light.getColour().scale(light.getIntensity() / Math.pow(distanceToLight, 2))"),
                 Arguments.of(Variant.V_AWAY_FROM_CAMERA, "Renderer", ILLUMINATE,
                         "Vector3 V = P.scale(-1).normalised();", "Vector3 V = P.normalised();"),
-                Arguments.of(Variant.R_WRONG_WAY, "Renderer", ILLUMINATE, "L.reflectIn(N)", "N.reflectIn(L)"));
+                Arguments.of(Variant.R_WRONG_WAY, "Renderer", ILLUMINATE, "L.reflectIn(N)", "N.reflectIn(L)"),
+                Arguments.of(Variant.ROUNDED_BYTES, "Renderer", RENDER, RGB, "image.setRGB(x, y, "
+                        + "(int) Math.round(255 * Math.max(0, Math.min(1, linearRGB.x))) << 16 "
+                        + "| (int) Math.round(255 * Math.max(0, Math.min(1, linearRGB.y))) << 8 "
+                        + "| (int) Math.round(255 * Math.max(0, Math.min(1, linearRGB.z))));"),
+                Arguments.of(Variant.UPSIDE_DOWN, "Renderer", RENDER, RGB,
+                        "image.setRGB(x, height - 1 - y, linearRGB.toRGB());"),
+                Arguments.of(Variant.RED_BLUE_SWAPPED, "Renderer", RENDER, RGB,
+                        "image.setRGB(x, y, new Vector3(linearRGB.z, linearRGB.y, linearRGB.x).toRGB());"),
+                Arguments.of(Variant.UNCHECKED_NEGATIVE_SQUARE_ROOT, "Sphere", INTERSECTION,
+                        "if (discriminant < 0) {\n            return new RaycastHit();\n        }\n", ""));
+    }
+
+    /** The kit's files as handed out: the two stages before any code is written. */
+    @ParameterizedTest(name = "{0}")
+    @CsvSource({"BACKGROUND_ONLY, Sphere, intersectionWith(Ray)",
+        "FLAT_COLOUR, Renderer, 'illuminate(Scene, Sphere, Vector3, Vector3)'"})
+    void theUntouchedKitExitsOneWithTheStagesHint(Variant stage, String className, String method) throws IOException {
+        Path file = write(className + ".java", StarterKit.source(className));
+        CliRun run = CliRun.of("diff", file.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(run.out()).as(run.transcript()).contains("@@ " + method + " @@",
+                "hint: this looks like \"" + stage.title() + "\": reread handout " + stage.reread() + ".");
+        assertThat(run.out().lines().filter(line -> line.startsWith("hint: "))).as(run.transcript()).hasSize(1);
     }
 
     @ParameterizedTest(name = "{0}")
