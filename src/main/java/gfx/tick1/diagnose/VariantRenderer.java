@@ -148,18 +148,8 @@ public final class VariantRenderer {
     private static RaycastHit farthestRootHit(Scene scene, Ray ray) {
         RaycastHit closest = new RaycastHit();
         for (Sphere sphere : scene.getObjects()) {
-            Vector3 O = ray.getOrigin();
-            Vector3 D = ray.getDirection();
-            Vector3 C = SphereGeometry.centre(sphere);
-            double a = D.dot(D);
-            double b = 2 * D.dot(O.subtract(C));
-            double c = O.subtract(C).dot(O.subtract(C)) - Math.pow(SphereGeometry.radius(sphere), 2);
-            double discriminant = b * b - 4 * a * c;
-            if (discriminant < 0) {
-                continue;
-            }
-            double s2 = (-b + Math.sqrt(discriminant)) / (2 * a);
-            if (s2 > 0 && s2 < closest.getDistance()) {
+            double s2 = root(sphere, ray, true);
+            if (s2 > 0 && s2 < closest.getDistance()) { // false for NaN: the ray misses
                 Vector3 point = ray.evaluateAt(s2);
                 closest = new RaycastHit(sphere, s2, point, sphere.getNormalAt(point));
             }
@@ -176,22 +166,26 @@ public final class VariantRenderer {
         RaycastHit closest = new RaycastHit();
         for (Sphere sphere : scene.getObjects()) {
             RaycastHit hit = Intersection.DEFAULT.find(sphere, ray);
-            if (hit.getDistance() < closest.getDistance() && !(nearRoot(sphere, ray) < 0)) {
+            if (hit.getDistance() < closest.getDistance() && !(root(sphere, ray, false) < 0)) {
                 closest = hit;
             }
         }
         return closest;
     }
 
-    /** s1 = (-b - sqrt(b^2 - 4ac)) / 2a, the smaller root, as Sphere.intersectionWith computes it. */
-    private static double nearRoot(Sphere sphere, Ray ray) {
+    /**
+     * s1 = (-b - sqrt(b^2 - 4ac)) / 2a or, if {@code far}, s2 = (-b + sqrt(b^2 - 4ac)) / 2a, as
+     * Sphere.intersectionWith computes them; NaN when the discriminant is negative.
+     */
+    private static double root(Sphere sphere, Ray ray, boolean far) {
         Vector3 O = ray.getOrigin();
         Vector3 D = ray.getDirection();
         Vector3 C = SphereGeometry.centre(sphere);
         double a = D.dot(D);
         double b = 2 * D.dot(O.subtract(C));
         double c = O.subtract(C).dot(O.subtract(C)) - Math.pow(SphereGeometry.radius(sphere), 2);
-        return (-b - Math.sqrt(b * b - 4 * a * c)) / (2 * a);
+        double discriminant = b * b - 4 * a * c;
+        return far ? (-b + Math.sqrt(discriminant)) / (2 * a) : (-b - Math.sqrt(discriminant)) / (2 * a);
     }
 
     /** Colour to 0xRRGGBB: Vector3.toRGB, or rounded, or with red and blue exchanged. */
