@@ -5,8 +5,10 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gfx.tick1.image.PngInput;
 import gfx.tick1.scene.BundledScenes;
+import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
 import gfx.tick1.tools.UpdateReferenceImages;
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -87,5 +89,20 @@ class DiagnoserTest {
         assertThat(diagnosis.closest().variant()).as(String.join("\n", diagnosis.report())).isEqualTo(Variant.CORRECT);
         assertThat(diagnosis.closest().exactShare()).isEqualTo(1);
         assertThat(diagnosis.verdict()).isEqualTo(Diagnosis.Verdict.CORRECT);
+    }
+
+    /** One pixel one level off: correct within the 1-level tolerance, but not for grade, which wants it exact. */
+    @Test
+    void anImageOneLevelOffIsCorrectOnlyWithTheTolerance() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        BufferedImage image = new VariantRenderer(160, 120).render(scene, Variant.CORRECT);
+        image.setRGB(80, 60, image.getRGB(80, 60) + 1); // blue one level up, the sphere's centre
+        Diagnosis withTolerance = new Diagnoser(0, 1).diagnose(image, scene);
+        assertThat(withTolerance.verdict()).as(withTolerance.report().toString()).isEqualTo(Diagnosis.Verdict.CORRECT);
+        assertThat(withTolerance.report()).anyMatch(line -> line.startsWith("verdict: correct, within the 1-level"));
+
+        Diagnosis exact = new Diagnoser().diagnose(image, scene);
+        assertThat(exact.verdict()).as(exact.report().toString()).isEqualTo(Diagnosis.Verdict.UNSURE);
+        assertThat(String.join("\n", exact.report())).doesNotContain("full Phong model", "likely cause");
     }
 }
