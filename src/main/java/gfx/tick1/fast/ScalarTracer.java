@@ -1,7 +1,6 @@
 package gfx.tick1.fast;
 
 import gfx.tick1.render.ReferenceRenderer;
-import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
 
 /**

@@ -166,4 +166,18 @@ class DiffCommandTest {
         assertThat(run.err()).isEqualTo("tick1 diff: " + file + ": class Camera: expected Sphere or Renderer, the "
                 + "two classes of the tick" + System.lineSeparator());
     }
+
+    /** On a terminal the removed lines are red, the added green; captured output has no colour at all. */
+    @Test
+    void colourIsForTerminalsOnly() throws Exception {
+        JavaMembers ours = DiffCommand.ours("Sphere");
+        JavaMembers theirs = JavaMembers.parse("Sphere.java",
+                ours("Sphere").replace("double s = s1 > 0 ? s1 : s2;", "double s = s2;"));
+        java.util.List<String> coloured = DiffCommand.compare(ours, theirs, Path.of("Sphere.java"),
+                new DiffCommand.Colours(true));
+        assertThat(coloured).contains("\u001B[31m-    double s = s1 > 0 ? s1 : s2;\u001B[0m",
+                "\u001B[32m+    double s = s2;\u001B[0m");
+        assertThat(DiffCommand.compare(ours, theirs, Path.of("Sphere.java"), new DiffCommand.Colours(false)))
+                .noneMatch(line -> line.contains("\u001B"));
+    }
 }
