@@ -2,9 +2,9 @@ package gfx.tick1.bench;
 
 import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.PointLight;
-import gfx.tick1.scene.SphereGeometry;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.stream.IntStream;

@@ -47,7 +47,8 @@ final class Hints {
             new Rule(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT, "intersectionWith(Ray)",
                     c -> c.adds("s1 <=? 0 \\|\\| s2 <=? 0|s2 <=? 0 \\|\\| s1 <=? 0")),
             new Rule(Variant.UNCHECKED_NEGATIVE_SQUARE_ROOT, "intersectionWith(Ray)",
-                    c -> c.removes("if \\(discriminant < 0\\)") && c.has("Math\\.sqrt\\(") && !c.adds("discriminant\\s*(<|>=|<=|>)" + NUMBER)),
+                    c -> c.removes("if \\(discriminant < 0\\)") && c.has("Math\\.sqrt\\(")
+                            && !c.adds("discriminant\\s*(<|>=|<=|>)" + NUMBER)),
             new Rule(Variant.FLAT_COLOUR, "illuminate(Scene, Sphere, Vector3, Vector3)",
                     c -> c.adds("return object\\.getColour\\(\\);")),
             new Rule(Variant.AMBIENT_ONLY, "illuminate(Scene, Sphere, Vector3, Vector3)",
@@ -67,9 +68,9 @@ final class Hints {
             new Rule(Variant.R_WRONG_WAY, "illuminate(Scene, Sphere, Vector3, Vector3)",
                     c -> c.adds("N\\.reflectIn\\(L\\)")),
             new Rule(Variant.UNCLAMPED_N_DOT_L, "illuminate(Scene, Sphere, Vector3, Vector3)",
-                    c -> c.removes("Math\\.max\\(0, NdotL\\)") && c.adds("NdotL") && !c.adds("max\\((0|0\\.0), NdotL\\)|max\\(NdotL, (0|0\\.0)\\)")),
+                    c -> c.removes("Math\\.max\\(0, NdotL\\)") && c.adds("NdotL") && !c.adds(clamped("NdotL"))),
             new Rule(Variant.UNCLAMPED_R_DOT_V, "illuminate(Scene, Sphere, Vector3, Vector3)",
-                    c -> c.removes("Math\\.max\\(0, RdotV\\)") && c.adds("RdotV") && !c.adds("max\\((0|0\\.0), RdotV\\)|max\\(RdotV, (0|0\\.0)\\)")),
+                    c -> c.removes("Math\\.max\\(0, RdotV\\)") && c.adds("RdotV") && !c.adds(clamped("RdotV"))),
             new Rule(Variant.NO_FALL_OFF, "illuminate(Scene, Sphere, Vector3, Vector3)",
                     c -> c.removes("getIlluminationAt\\(distanceToLight\\)") && c.adds("getIntensity\\(\\)")
                             && !c.adds("getIntensity\\(\\).*distanceToLight")),
@@ -81,6 +82,11 @@ final class Hints {
             new Rule(Variant.RED_BLUE_SWAPPED, "render(Scene)", c -> c.adds("\\.z, \\w+\\.y, \\w+\\.x")));
 
     private Hints() {
+    }
+
+    /** max(0, x) or max(x, 0), with 0 or 0.0. */
+    private static String clamped(String x) {
+        return "max\\((0|0\\.0), " + x + "\\)|max\\(" + x + ", (0|0\\.0)\\)";
     }
 
     /** The catalogue entries the change looks like, in the catalogue's order of rules. */

@@ -2,11 +2,11 @@ package gfx.tick1.fast;
 
 import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.Intersection;
-import gfx.tick1.scene.SphereGeometry;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.RobustIntersection;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.util.List;
 
 /**

@@ -4,9 +4,9 @@ import gfx.tick1.math.DoubleDouble;
 import gfx.tick1.math.Ray;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.PointLight;
-import gfx.tick1.scene.SphereGeometry;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.awt.image.BufferedImage;
 import java.math.BigDecimal;
 import java.util.List;
@@ -46,7 +46,8 @@ public final class TruthRenderer {
         // costly BigDecimal part, is the same for all of them: computed once here.
         Vector3 origin = camera.castRay(0, 0).getOrigin();
         DoubleDouble[] c = scene.getObjects().stream()
-                .map(sphere -> exactC(origin, SphereGeometry.centre(sphere), SphereGeometry.radius(sphere))).toArray(DoubleDouble[]::new);
+                .map(sphere -> exactC(origin, SphereGeometry.centre(sphere), SphereGeometry.radius(sphere)))
+                .toArray(DoubleDouble[]::new);
         int[] pixels = new int[width * height];
         IntStream.range(0, height).parallel().forEach(y -> {
             for (int x = 0; x < width; x++) {
@@ -101,7 +102,8 @@ public final class TruthRenderer {
      * whether the ray hits the surface it starts on; c / q is exactly 0 there.
      */
     public static DoubleDouble hitDistance(Sphere sphere, Ray ray) {
-        return hitDistance(sphere, ray, exactC(ray.getOrigin(), SphereGeometry.centre(sphere), SphereGeometry.radius(sphere)));
+        return hitDistance(sphere, ray,
+                exactC(ray.getOrigin(), SphereGeometry.centre(sphere), SphereGeometry.radius(sphere)));
     }
 
     private static DoubleDouble hitDistance(Sphere sphere, Ray ray, DoubleDouble c) {
