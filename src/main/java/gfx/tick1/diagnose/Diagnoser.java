@@ -7,9 +7,11 @@ import gfx.tick1.scene.Scene;
 import java.awt.image.BufferedImage;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * Says which entry of the catalogue an image is closest to: renders the scene as every
@@ -29,11 +31,6 @@ public final class Diagnoser {
             .thenComparingDouble(c -> c.difference().meanDifference())
             .thenComparing(c -> !c.variant().isCorrect())
             .thenComparing(Candidate::variant);
-
-    /** Most pixels exact, then most within one level: how well an entry matches, whatever it is. */
-    private static final Comparator<Candidate> BEST_MATCH_FIRST = Comparator
-            .comparingDouble(Candidate::exactShare).reversed()
-            .thenComparing(Comparator.comparingDouble(Candidate::withinOneShare).reversed());
 
     private final int border;
     private final int tolerance;
@@ -70,30 +67,39 @@ public final class Diagnoser {
     public static final double SAME_SCENE = 0.98;
 
     /**
-     * Which of {@code scenes} (by name) the image shows: the scene with the best-matching outline
-     * (then the closest entry; the first named on a tie), or empty when no scene's outline matches
-     * at least {@link #SAME_SCENE} of the pixels.
+     * The entries whose outlines differ from the correct one's: between them they give every
+     * outline any entry can give, so that recognising a scene need not render the whole catalogue.
+     */
+    private static final Set<Variant> OUTLINES = EnumSet.of(Variant.CORRECT, Variant.BACKGROUND_ONLY,
+            Variant.UPSIDE_DOWN, Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT);
+
+    /**
+     * Which of {@code scenes} (by name) the image shows, and its diagnosis as that scene's: the
+     * scene with the best-matching outline (the first named on a tie), or empty when no scene's
+     * outline matches at least {@link #SAME_SCENE} of the pixels.
      */
     public Optional<SceneDiagnosis> recognise(BufferedImage image, Map<String, Scene> scenes) {
-        SceneDiagnosis best = null;
+        checkBorder(image);
+        BufferedImage inside = inner(image);
+        VariantRenderer renderer = new VariantRenderer(image.getWidth(), image.getHeight());
+        String best = null;
+        double bestMatch = -1;
         for (Map.Entry<String, Scene> scene : scenes.entrySet()) {
-            Diagnosis diagnosis = diagnose(image, scene.getValue());
-            if (best == null || diagnosis.outlineMatch() > best.diagnosis().outlineMatch()
-                    || diagnosis.outlineMatch() == best.diagnosis().outlineMatch()
-                    && BEST_MATCH_FIRST.compare(diagnosis.closest(), best.diagnosis().closest()) < 0) {
-                best = new SceneDiagnosis(scene.getKey(), diagnosis);
+            double match = renderer.render(scene.getValue(), OUTLINES).values().stream()
+                    .mapToDouble(render -> outlineMatch(inner(render), inside)).max().orElseThrow();
+            if (match > bestMatch) {
+                best = scene.getKey();
+                bestMatch = match;
             }
         }
-        return best == null || best.diagnosis().outlineMatch() < SAME_SCENE ? Optional.empty() : Optional.of(best);
+        return best == null || bestMatch < SAME_SCENE ? Optional.empty()
+                : Optional.of(new SceneDiagnosis(best, diagnose(image, scenes.get(best))));
     }
 
     /** Ranks every catalogue entry against {@code image}, which is taken to show {@code scene}. */
     public Diagnosis diagnose(BufferedImage image, Scene scene) {
+        checkBorder(image);
         int width = image.getWidth(), height = image.getHeight();
-        if (width <= 2 * border || height <= 2 * border) {
-            throw new IllegalArgumentException("a " + border + "-pixel border leaves nothing of a " + width + " x "
-                    + height + " image to compare");
-        }
         VariantRenderer renderer = new VariantRenderer(width, height);
         BufferedImage inside = inner(image);
         Map<Variant, BufferedImage> renders = renderer.render(scene, Variant.seenInImages());
@@ -109,9 +115,15 @@ public final class Diagnoser {
             }
         });
         candidates.sort(CLOSEST_FIRST);
-        double outlineMatch = renders.values().stream().mapToDouble(render -> outlineMatch(inner(render), inside))
-                .max().orElseThrow();
-        return new Diagnosis(candidates, tolerance, alikeCorrect, outlineMatch);
+        return new Diagnosis(candidates, tolerance, alikeCorrect);
+    }
+
+    private void checkBorder(BufferedImage image) {
+        int width = image.getWidth(), height = image.getHeight();
+        if (width <= 2 * border || height <= 2 * border) {
+            throw new IllegalArgumentException("a " + border + "-pixel border leaves nothing of a " + width + " x "
+                    + height + " image to compare");
+        }
     }
 
     /** The share of pixels that are background in both images or in neither. */

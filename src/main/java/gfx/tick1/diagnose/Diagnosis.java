@@ -14,11 +14,8 @@ import java.util.List;
  * @param alikeCorrect the mistakes left out of the ranking because on this scene they draw exactly
  *                   the correct image (a hit rejected when a root is negative, with the camera
  *                   outside every sphere), so that no image can tell them apart from it
- * @param outlineMatch the share of pixels that are background in the image exactly where they are in
- *                   the entry's render, for the entry that agrees best: near 1 whenever the image
- *                   shows this scene's spheres, whatever their shading
  */
-public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant> alikeCorrect, double outlineMatch) {
+public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant> alikeCorrect) {
 
     /**
      * Two entries whose shares of exactly matching pixels are closer than this (0.1 percentage
