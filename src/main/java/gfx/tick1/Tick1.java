@@ -3,6 +3,7 @@ package gfx.tick1;
 import gfx.tick1.bench.Bench;
 import gfx.tick1.compare.CompareCommand;
 import gfx.tick1.diagnose.DiagnoseCommand;
+import gfx.tick1.diff.DiffCommand;
 import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.grade.GradeCommand;
 import gfx.tick1.image.PngOutput;
@@ -141,7 +142,8 @@ public final class Tick1 implements Callable<Integer> {
 
     /** The subcommands, in the order the help lists them. */
     private static final List<Subcommand> SUBCOMMANDS = List.of(new Subcommand("compare", CompareCommand::new),
-            new Subcommand("diagnose", DiagnoseCommand::new), new Subcommand("grade", GradeCommand::new),
+            new Subcommand("diagnose", DiagnoseCommand::new), new Subcommand("diff", DiffCommand::new),
+            new Subcommand("grade", GradeCommand::new),
             new Subcommand("starter", StarterCommand::new), new Subcommand("bench", Bench::new),
             new Subcommand("preview", Preview::new));
 

@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.SceneLoader;
 import gfx.tick1.tools.UpdateReferenceImages;
 import java.awt.image.BufferedImage;
@@ -40,7 +40,7 @@ class GoldenImageTest {
         assertThat(reference).as("reference image for %s (make it with: gradle updateReferenceImages)", scene)
                 .exists();
         BufferedImage expected = ImageIO.read(reference.toFile());
-        BufferedImage actual = new Renderer(UpdateReferenceImages.WIDTH, UpdateReferenceImages.HEIGHT)
+        BufferedImage actual = new ReferenceRenderer(UpdateReferenceImages.WIDTH, UpdateReferenceImages.HEIGHT)
                 .render(new SceneLoader(scene, false).getScene());
 
         ImageDifference difference = ImageDifference.between(expected, actual);

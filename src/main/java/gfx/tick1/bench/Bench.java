@@ -4,6 +4,7 @@ import gfx.tick1.Tick1;
 import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.render.TruthRenderer;
@@ -147,9 +148,9 @@ public final class Bench implements Callable<Integer> {
                 (s, w, h) -> new FloatRenderer(w, h, FloatRenderer.Formula.HANDOUT).render(s)));
         variants.add(new Variant("float, robust", 1, cores,
                 (s, w, h) -> new FloatRenderer(w, h, FloatRenderer.Formula.ROBUST).render(s)));
-        variants.add(new Variant("readable Renderer, robust", 1, cores, (s, w, h) -> new Renderer(w, h).render(s)));
+        variants.add(new Variant("readable Renderer, robust", 1, cores, (s, w, h) -> new ReferenceRenderer(w, h).render(s)));
         variants.add(new Variant("readable Renderer, handout formula", 1, 1,
-                (s, w, h) -> new Renderer(w, h, Intersection.HANDOUT).render(s)));
+                (s, w, h) -> new ReferenceRenderer(w, h, Intersection.HANDOUT).render(s)));
         return variants;
     }
 

@@ -4,6 +4,7 @@ import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.stream.IntStream;
@@ -42,10 +43,10 @@ final class FloatRenderer {
         float[] red = new float[n], green = new float[n], blue = new float[n];
         for (int i = 0; i < n; i++) {
             Sphere s = spheres.get(i);
-            cx[i] = (float) s.getPosition().x;
-            cy[i] = (float) s.getPosition().y;
-            cz[i] = (float) s.getPosition().z;
-            float r = (float) s.getRadius();
+            cx[i] = (float) SphereGeometry.centre(s).x;
+            cy[i] = (float) SphereGeometry.centre(s).y;
+            cz[i] = (float) SphereGeometry.centre(s).z;
+            float r = (float) SphereGeometry.radius(s);
             rr[i] = r * r;
             red[i] = (float) s.getColour().x;
             green[i] = (float) s.getColour().y;

@@ -9,6 +9,9 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -20,24 +23,31 @@ import picocli.CommandLine.Spec;
 @Command(name = "diagnose", mixinStandardHelpOptions = true, sortOptions = false, usageHelpAutoWidth = true,
         description = {
             "Renders the scene as each entry of a catalogue (the handout's stages, the correct image and the "
-                    + "mistakes students make) and says which one the image is closest to, with the share of pixels "
-                    + "that match exactly and within one level, the top three, why, and what to reread.",
+                    + "mistakes students make) and ranks them by the share of pixels that match exactly and within "
+                    + "one level. An entry is named as the answer only when its render matches every pixel (the "
+                    + "correct image also within 1 level on every pixel, as arithmetic in another order gives); "
+                    + "otherwise the closest entries are shown as candidates, near ties as ties.",
+            "Without --scene the image is recognised as a render of tick1.xml or basic_scene.xml.",
             "Catalogue: background only; flat colour (Figure 4); ambient only (Figure 5a); ambient + diffuse; "
-                    + "correct (Figure 1); L and V not normalised (Figure 6a); N.L not clamped (Figure 6b); R.V not "
-                    + "clamped (Figure 6c); far root; no distance fall-off; fall-off without 4 pi; V pointing away "
-                    + "from the camera; R reflected the wrong way; rounding instead of truncating; image upside "
-                    + "down; red and blue swapped."},
+                    + "ambient term without C_diff; specular term without I; correct (Figure 1); L and V not "
+                    + "normalised (Figure 6a); N.L not clamped (Figure 6b); R.V not clamped (Figure 6c); far root; "
+                    + "hit rejected when either root is negative; no distance fall-off; fall-off without 4 pi; V "
+                    + "pointing away from the camera; R reflected the wrong way; rounding instead of truncating; "
+                    + "image upside down; red and blue swapped."},
         exitCodeListHeading = "%nExit status:%n",
         exitCodeList = {
-            "0:the image is closest to the correct image",
-            "1:the image is closest to an earlier stage or a mistake",
-            "2:the image or the scene cannot be read, or the command line is wrong",
+            "0:the image is correct",
+            "1:an earlier stage or a mistake of the catalogue explains every pixel",
+            "2:the image or the scene cannot be read, the image is not of a scene it knows (give --scene), or the "
+                    + "command line is wrong",
+            "3:no entry of the catalogue explains the image, or two come out level: candidates only",
             "4:an internal error (a bug: please report it)"})
 public final class DiagnoseCommand implements Callable<Integer> {
 
     public static final int EXIT_CORRECT = 0;
     public static final int EXIT_NOT_CORRECT = 1;
     public static final int EXIT_CANNOT_DIAGNOSE = 2;
+    public static final int EXIT_UNSURE = 3;
 
     @Spec
     private CommandSpec spec;
@@ -46,7 +56,7 @@ public final class DiagnoseCommand implements Callable<Integer> {
     private Path imageFile;
 
     @Option(names = "--scene", paramLabel = "SCENE.xml",
-            description = "The scene the image shows (default: the handout's tick1.xml, built in).")
+            description = "The scene the image shows (default: recognise tick1.xml or basic_scene.xml, built in).")
     private Path sceneFile;
 
     @Option(names = "--border", paramLabel = "PIXELS", defaultValue = "0",
@@ -59,26 +69,44 @@ public final class DiagnoseCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         BufferedImage image;
-        Scene scene;
+        Map<String, Scene> scenes = new LinkedHashMap<>();
         try {
             image = PngInput.read(imageFile);
-            scene = sceneFile == null ? BundledScenes.load(BundledScenes.TICK1)
-                    : new SceneLoader(sceneFile, false).getScene();
+            if (sceneFile == null) {
+                BundledScenes.STUDENT_SCENES.forEach(name -> scenes.put(name, BundledScenes.load(name)));
+            } else {
+                scenes.put(sceneFile.toString(), new SceneLoader(sceneFile, false).getScene());
+            }
         } catch (IOException | SceneException e) {
             err.println("tick1 diagnose: " + e.getMessage());
             return EXIT_CANNOT_DIAGNOSE;
         }
-        Diagnosis diagnosis;
+        Diagnoser.SceneDiagnosis result;
         try {
-            diagnosis = new Diagnoser(border).diagnose(image, scene);
+            Diagnoser diagnoser = new Diagnoser(border, 1);
+            // Given a scene, the image is diagnosed as that scene's even when it matches badly (the
+            // report says so); without one, it must look like one of the scenes the kit renders.
+            Optional<Diagnoser.SceneDiagnosis> found = sceneFile != null
+                    ? Optional.of(new Diagnoser.SceneDiagnosis(sceneFile.toString(),
+                            diagnoser.diagnose(image, scenes.get(sceneFile.toString()))))
+                    : diagnoser.recognise(image, scenes);
+            if (found.isEmpty()) {
+                err.println("tick1 diagnose: " + imageFile + ": not a render of "
+                        + String.join(" or ", BundledScenes.STUDENT_SCENES) + "; give the scene with --scene");
+                return EXIT_CANNOT_DIAGNOSE;
+            }
+            result = found.get();
         } catch (IllegalArgumentException e) {
             err.println("tick1 diagnose: --border " + border + ": " + e.getMessage());
             return EXIT_CANNOT_DIAGNOSE;
         }
         out.println(imageFile + " (" + image.getWidth() + " x " + image.getHeight() + ") as a render of "
-                + (sceneFile == null ? "the handout's tick1.xml" : sceneFile)
-                + (border > 0 ? ", inside a " + border + "-pixel border" : "") + ":");
-        diagnosis.report().forEach(line -> out.println("  " + line));
-        return diagnosis.closest().variant().isCorrect() ? EXIT_CORRECT : EXIT_NOT_CORRECT;
+                + result.scene() + (border > 0 ? ", inside a " + border + "-pixel border" : "") + ":");
+        result.diagnosis().report().forEach(line -> out.println("  " + line));
+        return switch (result.diagnosis().verdict()) {
+            case CORRECT -> EXIT_CORRECT;
+            case EXPLAINED -> EXIT_NOT_CORRECT;
+            case UNSURE -> EXIT_UNSURE;
+        };
     }
 }

@@ -2,12 +2,16 @@ package gfx.tick1.diagnose;
 
 import gfx.tick1.diagnose.Diagnosis.Candidate;
 import gfx.tick1.image.ImageDifference;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.Scene;
 import java.awt.image.BufferedImage;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.EnumSet;
 import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
 
 /**
  * Says which entry of the catalogue an image is closest to: renders the scene as every
@@ -29,33 +33,112 @@ public final class Diagnoser {
             .thenComparing(Candidate::variant);
 
     private final int border;
+    private final int tolerance;
 
-    /** @param border the width in pixels of a frame around the image to leave out of every comparison */
-    public Diagnoser(int border) {
+    /**
+     * @param border    the width in pixels of a frame around the image to leave out of every comparison
+     * @param tolerance 0: an entry explains the image only when every pixel is equal (as the course's
+     *                  tester demands); 1: also when every pixel is within one level and no other
+     *                  entry comes as close (arithmetic written in another order moves a few pixels by
+     *                  one level)
+     */
+    public Diagnoser(int border, int tolerance) {
         if (border < 0) {
             throw new IllegalArgumentException("border " + border + ": must be at least 0");
         }
         this.border = border;
+        this.tolerance = tolerance;
     }
 
+    /** Exact matches only, no border: as {@code grade} asks. */
     public Diagnoser() {
-        this(0);
+        this(0, 0);
+    }
+
+    /** A diagnosis of the image as a render of one of several scenes: which one, and the diagnosis. */
+    public record SceneDiagnosis(String scene, Diagnosis diagnosis) {
+    }
+
+    /**
+     * The share of pixels whose being background must agree with some entry's render for an image
+     * to count as showing a scene: any shading, right or wrong, leaves the spheres' outlines where
+     * they are, while another scene's spheres cover other pixels.
+     */
+    public static final double SAME_SCENE = 0.98;
+
+    /**
+     * The entries whose outlines differ from the correct one's: between them they give every
+     * outline any entry can give, so that recognising a scene need not render the whole catalogue.
+     */
+    private static final Set<Variant> OUTLINES = EnumSet.of(Variant.CORRECT, Variant.BACKGROUND_ONLY,
+            Variant.UPSIDE_DOWN, Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT);
+
+    /**
+     * Which of {@code scenes} (by name) the image shows, and its diagnosis as that scene's: the
+     * scene with the best-matching outline (the first named on a tie), or empty when no scene's
+     * outline matches at least {@link #SAME_SCENE} of the pixels.
+     */
+    public Optional<SceneDiagnosis> recognise(BufferedImage image, Map<String, Scene> scenes) {
+        checkBorder(image);
+        BufferedImage inside = inner(image);
+        VariantRenderer renderer = new VariantRenderer(image.getWidth(), image.getHeight());
+        String best = null;
+        double bestMatch = -1;
+        for (Map.Entry<String, Scene> scene : scenes.entrySet()) {
+            double match = renderer.render(scene.getValue(), OUTLINES).values().stream()
+                    .mapToDouble(render -> outlineMatch(inner(render), inside)).max().orElseThrow();
+            if (match > bestMatch) {
+                best = scene.getKey();
+                bestMatch = match;
+            }
+        }
+        return best == null || bestMatch < SAME_SCENE ? Optional.empty()
+                : Optional.of(new SceneDiagnosis(best, diagnose(image, scenes.get(best))));
     }
 
     /** Ranks every catalogue entry against {@code image}, which is taken to show {@code scene}. */
     public Diagnosis diagnose(BufferedImage image, Scene scene) {
+        checkBorder(image);
+        int width = image.getWidth(), height = image.getHeight();
+        VariantRenderer renderer = new VariantRenderer(width, height);
+        BufferedImage inside = inner(image);
+        Map<Variant, BufferedImage> renders = renderer.render(scene, Variant.seenInImages());
+        BufferedImage correct = inner(renders.get(Variant.CORRECT));
+        List<Candidate> candidates = new ArrayList<>();
+        List<Variant> alikeCorrect = new ArrayList<>();
+        renders.forEach((variant, render) -> {
+            // A mistake that draws this scene exactly as the correct code does cannot be seen in it.
+            if (!variant.isCorrect() && ImageDifference.between(correct, inner(render)).differingPixels() == 0) {
+                alikeCorrect.add(variant);
+            } else {
+                candidates.add(new Candidate(variant, ImageDifference.between(inner(render), inside)));
+            }
+        });
+        candidates.sort(CLOSEST_FIRST);
+        return new Diagnosis(candidates, tolerance, alikeCorrect);
+    }
+
+    private void checkBorder(BufferedImage image) {
         int width = image.getWidth(), height = image.getHeight();
         if (width <= 2 * border || height <= 2 * border) {
             throw new IllegalArgumentException("a " + border + "-pixel border leaves nothing of a " + width + " x "
                     + height + " image to compare");
         }
-        VariantRenderer renderer = new VariantRenderer(width, height);
-        BufferedImage inside = inner(image);
-        List<Candidate> candidates = new ArrayList<>();
-        renderer.render(scene, EnumSet.allOf(Variant.class)).forEach((variant, render) ->
-                candidates.add(new Candidate(variant, ImageDifference.between(inner(render), inside))));
-        candidates.sort(CLOSEST_FIRST);
-        return new Diagnosis(candidates);
+    }
+
+    /** The share of pixels that are background in both images or in neither. */
+    private static double outlineMatch(BufferedImage render, BufferedImage image) {
+        int background = ReferenceRenderer.BACKGROUND_COLOUR.toRGB() & 0xFFFFFF;
+        int width = image.getWidth(), height = image.getHeight();
+        int[] a = render.getRGB(0, 0, width, height, null, 0, width);
+        int[] b = image.getRGB(0, 0, width, height, null, 0, width);
+        long agree = 0;
+        for (int i = 0; i < a.length; i++) {
+            if (((a[i] & 0xFFFFFF) == background) == ((b[i] & 0xFFFFFF) == background)) {
+                agree++;
+            }
+        }
+        return (double) agree / a.length;
     }
 
     private BufferedImage inner(BufferedImage image) {

@@ -5,11 +5,23 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Every catalogue entry's distance from an image, closest first.
+ * Every catalogue entry's distance from an image, closest first, and what can be said for
+ * certain: an entry explains the image only when its render matches every pixel (exactly, or
+ * within the 1-level tolerance when that is allowed); anything less is reported as candidates.
  *
- * @param candidates one per {@link Variant}, ordered as {@link Diagnoser#CLOSEST_FIRST} orders them
+ * @param candidates one per {@link Variant} seen in images, ordered as {@link Diagnoser#CLOSEST_FIRST}
+ * @param tolerance  0, or 1 to let an entry within one level on every pixel explain the image
+ * @param alikeCorrect the mistakes left out of the ranking because on this scene they draw exactly
+ *                   the correct image (a hit rejected when a root is negative, with the camera
+ *                   outside every sphere), so that no image can tell them apart from it
  */
-public record Diagnosis(List<Candidate> candidates) {
+public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant> alikeCorrect) {
+
+    /**
+     * Two entries whose shares of exactly matching pixels are closer than this (0.1 percentage
+     * points) are a near tie: the image does not tell them apart, so neither is called the winner.
+     */
+    public static final double NEAR_TIE = 0.001;
 
     /** One catalogue entry and how the image differs from its render. */
     public record Candidate(Variant variant, ImageDifference difference) {
@@ -23,10 +35,32 @@ public record Diagnosis(List<Candidate> candidates) {
         public double withinOneShare() {
             return difference.shareWithin(1);
         }
+
+        boolean matchesExactly() {
+            return difference.differingPixels() == 0;
+        }
+
+        boolean matchesWithinOneLevel() {
+            return difference.isWithin(1);
+        }
+    }
+
+    /** What the image is, as far as the catalogue can tell. */
+    public enum Verdict {
+        /** The correct render, exactly or within the tolerance. */
+        CORRECT,
+        /** One stage or mistake (or several that look the same on this scene) explains every pixel. */
+        EXPLAINED,
+        /** No entry explains the image, or two come out level: only candidates can be shown. */
+        UNSURE
     }
 
     public Diagnosis {
         candidates = List.copyOf(candidates);
+        alikeCorrect = List.copyOf(alikeCorrect);
+        if (tolerance < 0 || tolerance > 1) {
+            throw new IllegalArgumentException("tolerance " + tolerance + ": must be 0 or 1");
+        }
     }
 
     public Candidate closest() {
@@ -38,6 +72,35 @@ public record Diagnosis(List<Candidate> candidates) {
     }
 
     /**
+     * The entries that explain every pixel: those matching exactly; failing that, with a
+     * tolerance of 1, the closest entry within one level everywhere, unless another such entry is
+     * a near tie with it. When the correct render is among them, it alone: a mistake that looks
+     * the same as the correct image on this scene does no harm here.
+     */
+    public List<Candidate> explaining() {
+        List<Candidate> exact = candidates.stream().filter(Candidate::matchesExactly).toList();
+        if (exact.isEmpty() && tolerance == 1) {
+            List<Candidate> within = candidates.stream().filter(Candidate::matchesWithinOneLevel).toList();
+            exact = within.isEmpty() ? within : tiedWith(within.get(0), within);
+        }
+        return exact.stream().anyMatch(c -> c.variant().isCorrect())
+                ? exact.stream().filter(c -> c.variant().isCorrect()).toList() : exact;
+    }
+
+    public Verdict verdict() {
+        List<Candidate> explaining = explaining();
+        if (explaining.isEmpty()) {
+            return Verdict.UNSURE;
+        }
+        if (explaining.get(0).variant().isCorrect()) {
+            return Verdict.CORRECT;
+        }
+        // Several entries each matching every pixel exactly are one explanation as far as the image
+        // goes (the scene cannot tell them apart); within the tolerance, a tie means no winner.
+        return explaining.size() == 1 || explaining.get(0).matchesExactly() ? Verdict.EXPLAINED : Verdict.UNSURE;
+    }
+
+    /**
      * Whether even the closest entry leaves most pixels more than a level off: then the image
      * probably shows another scene, another size of image, or a mistake not in the catalogue.
      */
@@ -45,7 +108,7 @@ public record Diagnosis(List<Candidate> candidates) {
         return closest().withinOneShare() < 0.5;
     }
 
-    /** The diagnosis for a person: the closest entry, the top three, why, and what to reread. */
+    /** The diagnosis for a person: the closest entry, the top three, the verdict, why, and what to reread. */
     public List<String> report() {
         List<String> lines = new ArrayList<>();
         Candidate best = closest();
@@ -54,16 +117,90 @@ public record Diagnosis(List<Candidate> candidates) {
             lines.add("  (a weak match: the image may show another scene or a mistake not in the catalogue)");
         }
         lines.add("top three:");
-        int rank = 1;
-        for (Candidate candidate : top(3)) {
-            lines.add(String.format("  %d. %-45s %s", rank++, candidate.variant().title(), shares(candidate)));
+        List<Candidate> top = top(3);
+        for (int i = 0; i < top.size(); i++) {
+            lines.add(String.format("  %s %-45s %s", rank(i), top.get(i).variant().title(), shares(top.get(i))));
         }
-        Variant variant = best.variant();
-        lines.add((variant.isCorrect() ? "this is " : "likely cause: ") + variant.explanation() + ".");
-        if (!variant.isCorrect()) {
-            lines.add("reread: handout " + variant.reread() + ".");
+        List<Candidate> explaining = explaining();
+        switch (verdict()) {
+            case CORRECT -> {
+                Candidate correct = explaining.get(0);
+                lines.add(correct.matchesExactly() ? "verdict: correct: every pixel is the correct render's."
+                        : "verdict: correct, within the 1-level tolerance: " + correct.difference().differingPixels()
+                                + " pixels are 1 level off the correct render, as when the same arithmetic is "
+                                + "written in another order.");
+                lines.add("this is " + correct.variant().explanation() + ".");
+                if (!alikeCorrect.isEmpty()) {
+                    lines.add("(on this scene these mistakes would draw the same image, so they are not ruled out: "
+                            + String.join(", ", alikeCorrect.stream().map(Variant::title).toList()) + ")");
+                }
+            }
+            case EXPLAINED -> {
+                if (explaining.size() == 1) {
+                    Candidate only = explaining.get(0);
+                    lines.add("verdict: " + only.variant().title() + (only.matchesExactly()
+                            ? ": every pixel matches it exactly." : ": every pixel within 1 level of it."));
+                    lines.add("likely cause: " + only.variant().explanation() + ".");
+                    lines.add("reread: handout " + only.variant().reread() + ".");
+                } else {
+                    lines.add("verdict: a tie: " + titles(explaining) + " each match every pixel exactly; this "
+                            + "scene cannot tell them apart.");
+                    for (Candidate candidate : explaining) {
+                        lines.add("if it is " + candidate.variant().title() + ": " + candidate.variant().explanation()
+                                + "; reread handout " + candidate.variant().reread() + ".");
+                    }
+                }
+            }
+            case UNSURE -> {
+                List<Candidate> level = tiedWith(best, candidates);
+                lines.add("verdict: no entry of the catalogue explains this image exactly; it is not the correct "
+                        + "image, and it may show a mistake the catalogue does not know, or two at once.");
+                if (best.variant().isCorrect()) {
+                    lines.add("the closest is the correct image, but " + best.difference().differingPixels()
+                            + " pixels differ from it, by up to " + best.difference().maxDifference() + " levels.");
+                }
+                lines.add(level.size() > 1
+                        ? "candidates, in a near tie (within " + percent(NEAR_TIE) + " of the pixels): "
+                                + titles(level) + "."
+                        : "candidates, closest first: " + titles(top) + ".");
+                for (Candidate candidate : level.size() > 1 ? level : top) {
+                    if (!candidate.variant().isCorrect()) {
+                        lines.add("if it is " + candidate.variant().title() + ": reread handout "
+                                + candidate.variant().reread() + ".");
+                    }
+                }
+            }
+            default -> throw new IllegalStateException();
         }
         return lines;
+    }
+
+    /** "1.", or "1=" for the members of a near tie, ranked by the first of them. */
+    private String rank(int index) {
+        int first = index;
+        while (first > 0 && nearTie(candidates.get(first - 1), candidates.get(index))) {
+            first--;
+        }
+        boolean tied = first < index
+                || (index + 1 < candidates.size() && nearTie(candidates.get(index), candidates.get(index + 1)));
+        return (first + 1) + (tied ? "=" : ".");
+    }
+
+    /** {@code leader} and the entries of {@code among} in a near tie with it. */
+    private static List<Candidate> tiedWith(Candidate leader, List<Candidate> among) {
+        return among.stream().filter(c -> c == leader || nearTie(leader, c)).toList();
+    }
+
+    private static boolean nearTie(Candidate a, Candidate b) {
+        return Math.abs(a.exactShare() - b.exactShare()) < NEAR_TIE;
+    }
+
+    private static String titles(List<Candidate> candidates) {
+        return String.join(", ", candidates.stream().map(c -> c.variant().title()).toList());
+    }
+
+    private static String percent(double share) {
+        return String.format("%.1f%%", 100 * share);
     }
 
     private static String shares(Candidate candidate) {

@@ -1,5 +1,7 @@
 package gfx.tick1.diagnose;
 
+import java.util.EnumSet;
+
 /**
  * The catalogue {@code diagnose} compares an image with: the stages a student's image passes
  * through while following the handout, the correct image, and the mistakes students make.
@@ -21,6 +23,14 @@ public enum Variant {
     AMBIENT_DIFFUSE("ambient + diffuse", "like Figure 5b",
             "the specular term C_spec k_s I max(0, R.V)^n is missing, so there are no highlights",
             "section 5, \"The Phong illumination model\" (specular lighting)"),
+    AMBIENT_WITHOUT_C_DIFF("ambient term without C_diff", "",
+            "the ambient term is I_a alone instead of C_diff I_a, so every sphere gets the same grey wash whatever "
+                    + "its colour",
+            "section 5, \"The Phong illumination model\" (ambient lighting: C_diff I_a)"),
+    SPECULAR_WITHOUT_I("specular term without I", "",
+            "the specular term leaves out the light's illumination I (C_spec k_s max(0, R.V)^n instead of "
+                    + "C_spec k_s I max(0, R.V)^n), so the highlights ignore the light's colour and distance",
+            "section 5, \"The Phong illumination model\" (specular lighting: C_spec k_s I max(0, R.V)^n)"),
     CORRECT("correct", "Figure 1",
             "the full Phong model with the course's camera, intersection and byte conversion",
             "nothing: this is the image the tester expects"),
@@ -40,6 +50,15 @@ public enum Variant {
             "the intersection takes the farther root of the quadratic, so each pixel shows the back of its sphere, "
                     + "seen from inside",
             "section 4, steps 4 and 5: use the solution closest to the ray origin"),
+    HIT_REJECTED_ON_A_NEGATIVE_ROOT("hit rejected when either root is negative", "",
+            "the intersection gives no hit whenever one of the two roots is negative, so a sphere the camera is "
+                    + "inside (one root behind the camera, one in front) is not seen at all; where the camera is "
+                    + "outside every sphere the image is right, which is why tick1.xml passes",
+            "section 4, steps 4 to 6: the hit is the nearest root with s > 0, whatever the sign of the other"),
+    UNCHECKED_NEGATIVE_SQUARE_ROOT("square root of a negative discriminant not checked", "",
+            "Math.sqrt of a negative b^2 - 4ac is NaN; a RaycastHit at a NaN distance never beats the closest hit "
+                    + "in Scene.findClosestIntersection, so the image is right, but only by luck",
+            "section 4, step 2: if the discriminant is negative, return an empty RaycastHit", false),
     NO_FALL_OFF("no distance fall-off", "",
             "the light does not weaken with distance: I must be the light's colour times intensity / (4 pi d^2), "
                     + "which light.getIlluminationAt(distanceToLight) computes",
@@ -75,12 +94,18 @@ public enum Variant {
     private final String figure;
     private final String explanation;
     private final String reread;
+    private final boolean showsInImages;
 
     Variant(String label, String figure, String explanation, String reread) {
+        this(label, figure, explanation, reread, true);
+    }
+
+    Variant(String label, String figure, String explanation, String reread, boolean showsInImages) {
         this.label = label;
         this.figure = figure;
         this.explanation = explanation;
         this.reread = reread;
+        this.showsInImages = showsInImages;
     }
 
     /** A short name, with the handout figure that shows it, if any: "N.L not clamped (Figure 6b)". */
@@ -96,6 +121,26 @@ public enum Variant {
     /** Where in the handout to look. */
     public String reread() {
         return reread;
+    }
+
+    /**
+     * Whether the mistake can change an image at all. One cannot: an unchecked negative
+     * discriminant gives NaN distances, which the starter's Scene never takes as the closest hit.
+     * {@code diagnose} leaves such entries out; {@code tick1 diff} still names them in code.
+     */
+    public boolean showsInImages() {
+        return showsInImages;
+    }
+
+    /** The entries {@code diagnose} can tell apart by their images. */
+    public static EnumSet<Variant> seenInImages() {
+        EnumSet<Variant> seen = EnumSet.noneOf(Variant.class);
+        for (Variant variant : values()) {
+            if (variant.showsInImages) {
+                seen.add(variant);
+            }
+        }
+        return seen;
     }
 
     public boolean isCorrect() {

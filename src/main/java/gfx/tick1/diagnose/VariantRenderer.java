@@ -5,11 +5,14 @@ import static gfx.tick1.diagnose.Variant.*;
 import gfx.tick1.math.Ray;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.render.Camera;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.Renderer;
+import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.RaycastHit;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.awt.image.BufferedImage;
 import java.util.EnumMap;
 import java.util.EnumSet;
@@ -48,13 +51,20 @@ public final class VariantRenderer {
         Map<Variant, int[]> pixels = new EnumMap<>(Variant.class);
         variants.forEach(variant -> pixels.put(variant, new int[width * height]));
         boolean needsFarRoot = variants.contains(FAR_ROOT);
+        boolean needsBothRootsPositive = variants.contains(HIT_REJECTED_ON_A_NEGATIVE_ROOT);
         IntStream.range(0, height).parallel().forEach(y -> {
             for (int x = 0; x < width; x++) {
                 Ray ray = camera.castRay(x, y);
                 RaycastHit nearHit = scene.findClosestIntersection(ray);
                 RaycastHit farHit = needsFarRoot ? farthestRootHit(scene, ray) : null;
+                RaycastHit bothRootsHit = needsBothRootsPositive ? bothRootsPositiveHit(scene, ray) : null;
                 for (Variant variant : variants) {
-                    Vector3 colour = shade(scene, variant == FAR_ROOT ? farHit : nearHit, variant);
+                    RaycastHit hit = switch (variant) {
+                        case FAR_ROOT -> farHit;
+                        case HIT_REJECTED_ON_A_NEGATIVE_ROOT -> bothRootsHit;
+                        default -> nearHit;
+                    };
+                    Vector3 colour = shade(scene, hit, variant);
                     // Pixel row 0 is the top of the image; writing rows bottom-up turns the picture over.
                     int row = variant == UPSIDE_DOWN ? height - 1 - y : y;
                     pixels.get(variant)[row * width + x] = toRGB(colour, variant);
@@ -73,7 +83,7 @@ public final class VariantRenderer {
     /** Renderer.trace after the intersection: the background, or the shade of the hit. */
     private static Vector3 shade(Scene scene, RaycastHit hit, Variant variant) {
         if (variant == BACKGROUND_ONLY || hit.getObjectHit() == null) {
-            return Renderer.BACKGROUND_COLOUR;
+            return ReferenceRenderer.BACKGROUND_COLOUR;
         }
         return illuminate(scene, hit.getObjectHit(), hit.getLocation(), hit.getNormal(), variant);
     }
@@ -85,7 +95,7 @@ public final class VariantRenderer {
         if (variant == FLAT_COLOUR) {
             return C_diff;
         }
-        Vector3 ambient = C_diff.scale(I_a);
+        Vector3 ambient = variant == AMBIENT_WITHOUT_C_DIFF ? I_a : C_diff.scale(I_a);
 
         PointLight light = scene.getPointLight();
         if (light == null || variant == AMBIENT_ONLY) {
@@ -117,7 +127,8 @@ public final class VariantRenderer {
         if (variant == AMBIENT_DIFFUSE) {
             return ambient.add(diffuse);
         }
-        Vector3 specular = C_spec.scale(I).scale(k_s * Math.pow(specularBase, n));
+        Vector3 specular = variant == SPECULAR_WITHOUT_I ? C_spec.scale(k_s * Math.pow(specularBase, n))
+                : C_spec.scale(I).scale(k_s * Math.pow(specularBase, n));
         return ambient.add(diffuse).add(specular);
     }
 
@@ -137,23 +148,44 @@ public final class VariantRenderer {
     private static RaycastHit farthestRootHit(Scene scene, Ray ray) {
         RaycastHit closest = new RaycastHit();
         for (Sphere sphere : scene.getObjects()) {
-            Vector3 O = ray.getOrigin();
-            Vector3 D = ray.getDirection();
-            Vector3 C = sphere.getPosition();
-            double a = D.dot(D);
-            double b = 2 * D.dot(O.subtract(C));
-            double c = O.subtract(C).dot(O.subtract(C)) - Math.pow(sphere.getRadius(), 2);
-            double discriminant = b * b - 4 * a * c;
-            if (discriminant < 0) {
-                continue;
-            }
-            double s2 = (-b + Math.sqrt(discriminant)) / (2 * a);
-            if (s2 > 0 && s2 < closest.getDistance()) {
+            double s2 = root(sphere, ray, true);
+            if (s2 > 0 && s2 < closest.getDistance()) { // false for NaN: the ray misses
                 Vector3 point = ray.evaluateAt(s2);
                 closest = new RaycastHit(sphere, s2, point, sphere.getNormalAt(point));
             }
         }
         return closest;
+    }
+
+    /**
+     * The nearest hit when a sphere counts only if both roots of its quadratic are positive: a
+     * sphere with the ray's origin inside it (roots of opposite signs, c &lt; 0) is never hit.
+     * Every other sphere is hit where the reference hits it.
+     */
+    private static RaycastHit bothRootsPositiveHit(Scene scene, Ray ray) {
+        RaycastHit closest = new RaycastHit();
+        for (Sphere sphere : scene.getObjects()) {
+            RaycastHit hit = Intersection.DEFAULT.find(sphere, ray);
+            if (hit.getDistance() < closest.getDistance() && !(root(sphere, ray, false) < 0)) {
+                closest = hit;
+            }
+        }
+        return closest;
+    }
+
+    /**
+     * s1 = (-b - sqrt(b^2 - 4ac)) / 2a or, if {@code far}, s2 = (-b + sqrt(b^2 - 4ac)) / 2a, as
+     * Sphere.intersectionWith computes them; NaN when the discriminant is negative.
+     */
+    private static double root(Sphere sphere, Ray ray, boolean far) {
+        Vector3 O = ray.getOrigin();
+        Vector3 D = ray.getDirection();
+        Vector3 C = SphereGeometry.centre(sphere);
+        double a = D.dot(D);
+        double b = 2 * D.dot(O.subtract(C));
+        double c = O.subtract(C).dot(O.subtract(C)) - Math.pow(SphereGeometry.radius(sphere), 2);
+        double discriminant = b * b - 4 * a * c;
+        return far ? (-b + Math.sqrt(discriminant)) / (2 * a) : (-b - Math.sqrt(discriminant)) / (2 * a);
     }
 
     /** Colour to 0xRRGGBB: Vector3.toRGB, or rounded, or with red and blue exchanged. */

@@ -6,6 +6,7 @@ import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.RobustIntersection;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.util.List;
 
 /**
@@ -45,11 +46,11 @@ final class FlatScene {
         blue = new double[size];
         for (int i = 0; i < size; i++) {
             Sphere sphere = spheres.get(i);
-            Vector3 centre = sphere.getPosition();
+            Vector3 centre = SphereGeometry.centre(sphere);
             cx[i] = centre.x;
             cy[i] = centre.y;
             cz[i] = centre.z;
-            radius[i] = sphere.getRadius();
+            radius[i] = SphereGeometry.radius(sphere);
             // f = O - C for O = 0.
             double fx = 0 - centre.x, fy = 0 - centre.y, fz = 0 - centre.z;
             c[i] = (fx * fx + fy * fy + fz * fz) - Math.pow(radius[i], 2);

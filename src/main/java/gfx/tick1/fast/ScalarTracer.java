@@ -1,6 +1,6 @@
 package gfx.tick1.fast;
 
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.SamplePattern;
 
 /**
@@ -167,9 +167,9 @@ final class ScalarTracer implements Tracer {
         for (int p = 0; p < width; p++) {
             double red, green, blue;
             if (hit[p] < 0) {
-                red = Renderer.BACKGROUND_COLOUR.x;
-                green = Renderer.BACKGROUND_COLOUR.y;
-                blue = Renderer.BACKGROUND_COLOUR.z;
+                red = ReferenceRenderer.BACKGROUND_COLOUR.x;
+                green = ReferenceRenderer.BACKGROUND_COLOUR.y;
+                blue = ReferenceRenderer.BACKGROUND_COLOUR.z;
             } else if (!scene.lit) {
                 red = baseRed[p];
                 green = baseGreen[p];

@@ -1,6 +1,6 @@
 package gfx.tick1.fast;
 
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.RobustIntersection;
@@ -487,9 +487,9 @@ final class VectorTracer implements Tracer {
     private void missesAndSpecular(int first, int last) {
         for (int p = first; p <= last; p++) {
             if (hit[p] < 0) {
-                baseRed[p] = Renderer.BACKGROUND_COLOUR.x;
-                baseGreen[p] = Renderer.BACKGROUND_COLOUR.y;
-                baseBlue[p] = Renderer.BACKGROUND_COLOUR.z;
+                baseRed[p] = ReferenceRenderer.BACKGROUND_COLOUR.x;
+                baseGreen[p] = ReferenceRenderer.BACKGROUND_COLOUR.y;
+                baseBlue[p] = ReferenceRenderer.BACKGROUND_COLOUR.z;
                 iRed[p] = iGreen[p] = iBlue[p] = 0;
                 specular[p] = 0;
             } else if (!scene.lit) {
@@ -506,9 +506,9 @@ final class VectorTracer implements Tracer {
 
     /** The background for pixels [from, to), as base + specular I with both of the last zero. */
     private void background(int from, int to) {
-        Arrays.fill(baseRed, from, to, Renderer.BACKGROUND_COLOUR.x);
-        Arrays.fill(baseGreen, from, to, Renderer.BACKGROUND_COLOUR.y);
-        Arrays.fill(baseBlue, from, to, Renderer.BACKGROUND_COLOUR.z);
+        Arrays.fill(baseRed, from, to, ReferenceRenderer.BACKGROUND_COLOUR.x);
+        Arrays.fill(baseGreen, from, to, ReferenceRenderer.BACKGROUND_COLOUR.y);
+        Arrays.fill(baseBlue, from, to, ReferenceRenderer.BACKGROUND_COLOUR.z);
         Arrays.fill(iRed, from, to, 0);
         Arrays.fill(iGreen, from, to, 0);
         Arrays.fill(iBlue, from, to, 0);

@@ -5,7 +5,7 @@ import gfx.tick1.diagnose.Diagnosis;
 import gfx.tick1.grade.StudentProcess.Outcome;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.BundledScenes;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
@@ -189,7 +189,7 @@ public final class GradeCommand implements Callable<Integer> {
     /** Compares one student image with the reference; explains and writes the heat map when they differ. */
     private boolean checkImage(int number, GradingScene grading, BufferedImage image, PrintWriter out, PrintWriter err)
             throws IOException {
-        BufferedImage expected = new Renderer(width, height).render(grading.scene());
+        BufferedImage expected = new ReferenceRenderer(width, height).render(grading.scene());
         ImageDifference difference = ImageDifference.between(expected, image);
         if (difference.differingPixels() == 0) {
             out.println(grading.name() + ": PASS (identical to the reference, " + difference.totalPixels()

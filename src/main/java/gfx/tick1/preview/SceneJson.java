@@ -4,6 +4,7 @@ import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.util.List;
 import java.util.StringJoiner;
 
@@ -22,8 +23,8 @@ final class SceneJson {
     static String describe(String name, Scene scene, List<String> warnings) {
         StringJoiner spheres = new StringJoiner(",", "[", "]");
         for (Sphere sphere : scene.getObjects()) {
-            spheres.add("{\"position\":" + vector(sphere.getPosition()) + ",\"radius\":" + sphere.getRadius()
-                    + ",\"colour\":" + colour(sphere.getColour()) + "}");
+            spheres.add("{\"position\":" + vector(SphereGeometry.centre(sphere))
+                    + ",\"radius\":" + SphereGeometry.radius(sphere) + ",\"colour\":" + colour(sphere.getColour()) + "}");
         }
         PointLight light = scene.getPointLight();
         String lightJson = light == null ? "null"

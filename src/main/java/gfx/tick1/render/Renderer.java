@@ -2,109 +2,106 @@ package gfx.tick1.render;
 
 import gfx.tick1.math.Ray;
 import gfx.tick1.math.Vector3;
-import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.RaycastHit;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
 import java.awt.image.BufferedImage;
-import java.util.stream.IntStream;
 
-/** Traces one ray per pixel and shades hits with the Phong model (handout section 5). */
 public class Renderer {
 
-    /** The colour of a ray that hits nothing: 0.1 grey, which truncates to 25 per channel. */
-    public static final Vector3 BACKGROUND_COLOUR = new Vector3(0.1);
+    // What a ray that meets no sphere sees: 0.1 grey, 25 in each channel of the image
+    private final Vector3 BACKGROUND_COLOUR = new Vector3(0.1);
 
-    private final int width, height;
-    private final Intersection intersection;
+    // Size of the image to render, in pixels
+    private int width, height;
 
     public Renderer(int width, int height) {
-        this(width, height, Intersection.DEFAULT);
-    }
-
-    /** A renderer that intersects rays with spheres by the given method. */
-    public Renderer(int width, int height, Intersection intersection) {
         this.width = width;
         this.height = height;
-        this.intersection = intersection;
     }
 
-    /** The colour seen along a ray: the Phong shade of the nearest hit, or the background. */
+    /*
+     * The colour seen along one ray: the shade of the nearest sphere it meets, or the background.
+     */
     protected Vector3 trace(Scene scene, Ray ray) {
-        RaycastHit closestHit = scene.findClosestIntersection(ray, intersection);
-        Sphere objectHit = closestHit.getObjectHit();
-        if (objectHit == null) {
+
+        // The nearest hit over all spheres of the scene
+        RaycastHit closestHit = scene.findClosestIntersection(ray);
+
+        // A ray that meets nothing sees the background
+        Sphere object = closestHit.getObjectHit();
+        if (object == null) {
             return BACKGROUND_COLOUR;
         }
-        return illuminate(scene, objectHit, closestHit.getLocation(), closestHit.getNormal());
+
+        // Otherwise shade the hit: its point P and the surface normal N there
+        Vector3 P = closestHit.getLocation();
+        Vector3 N = closestHit.getNormal();
+
+        // Phong illumination at P
+        return this.illuminate(scene, object, P, N);
     }
 
-    /**
-     * Phong's model at the point P with unit normal N:
-     * C_diff I_a + C_diff k_d I max(0, N.L) + C_spec k_s I max(0, R.V)^n, where * between
-     * colours is per channel, L and V are the unit directions to the light and to the camera,
-     * and R is L mirrored in N.
+    /*
+     * Phong's model at the point P with unit normal N on the sphere object:
+     * C_diff I_a + C_diff k_d I max(0, N.L) + C_spec k_s I max(0, R.V)^n.
      */
     private Vector3 illuminate(Scene scene, Sphere object, Vector3 P, Vector3 N) {
-        Vector3 I_a = scene.getAmbientLighting();
-        Vector3 C_diff = object.getColour();
-        Vector3 ambient = C_diff.scale(I_a);
 
         PointLight light = scene.getPointLight();
-        if (light == null) {
-            return ambient;
-        }
         double distanceToLight = light.getPosition().subtract(P).magnitude();
-        Vector3 I = light.getIlluminationAt(distanceToLight);
-        Vector3 C_spec = new Vector3(1);
 
+        Vector3 I_a = scene.getAmbientLighting();
+        Vector3 I = light.getIlluminationAt(distanceToLight);
+
+        Vector3 C_diff = object.getColour();           // Diffuse colour
+        Vector3 C_spec = new Vector3(1);             // Specular colour
+
+        // Object's Phong coefficients
         double k_d = object.getPhong_kD();
         double k_s = object.getPhong_kS();
         double n = object.getPhong_n();
 
+        // L and V, unit vectors to the light and to the camera at the origin; R, L mirrored in N
         Vector3 L = light.getPosition().subtract(P).normalised();
-        Vector3 V = P.scale(-1).normalised(); // the camera is at the origin
+        Vector3 V = P.scale(-1).normalised();
         Vector3 R = L.reflectIn(N);
 
+        // The cosines of the diffuse and specular terms
         double NdotL = N.dot(L);
         double RdotV = R.dot(V);
 
+        // The three terms, each a colour; * between two colours is per channel
+        Vector3 ambient = C_diff.scale(I_a);
         Vector3 diffuse = C_diff.scale(I).scale(k_d * Math.max(0, NdotL));
         Vector3 specular = C_spec.scale(I).scale(k_s * Math.pow(Math.max(0, RdotV), n));
 
+        // Their sum
         return ambient.add(diffuse).add(specular);
     }
 
-    /** Renders the scene on all cores; each pixel is computed alone, so the image is the same. */
-    public BufferedImage render(Scene scene) {
-        return render(scene, new SamplePattern(1));
-    }
-
-    /**
-     * Renders the scene, rows shared among the cores. With one sample, one {@code castRay} per
-     * pixel through its centre; with more, the average of the samples' colours, taken before
-     * the conversion to bytes.
+    /*
+     * The image of the scene: one ray through each pixel, row by row from the top.
      */
-    public BufferedImage render(Scene scene, SamplePattern samples) {
-        Camera camera = new Camera(width, height);
-        int[] pixels = new int[width * height];
-        IntStream.range(0, height).parallel().forEach(y -> {
-            for (int x = 0; x < width; x++) {
-                pixels[y * width + x] = pixel(scene, camera, samples, x, y).toRGB();
-            }
-        });
-        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
-        image.setRGB(0, 0, width, height, pixels, 0, width);
-        return image;
-    }
+    public BufferedImage render(Scene scene) {
 
-    /** The mean colour of the pixel's samples; one sample is exactly the ray through its centre. */
-    private Vector3 pixel(Scene scene, Camera camera, SamplePattern samples, int x, int y) {
-        Vector3 sum = trace(scene, camera.castRay(x + samples.dx(0), y + samples.dy(0)));
-        for (int i = 1; i < samples.size(); i++) {
-            sum = sum.add(trace(scene, camera.castRay(x + samples.dx(i), y + samples.dy(i))));
+        // An image with a byte for each of red, green and blue
+        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+
+        // The camera at the origin, looking along z
+        Camera camera = new Camera(width, height);
+
+        // Every pixel, row by row
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+                Ray ray = camera.castRay(x, y);               // The ray through the pixel
+                Vector3 linearRGB = trace(scene, ray);        // The colour it sees
+                image.setRGB(x, y, linearRGB.toRGB());        // Clamped and truncated to bytes
+            }
+            // How much is done
+            System.out.println(String.format("%.2f", 100 * y / (float) (height - 1)) + "% completed");
         }
-        return sum.scale(1.0 / samples.size());
+        return image;
     }
 }

@@ -6,6 +6,7 @@ import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.awt.image.BufferedImage;
 import java.math.BigDecimal;
 import java.util.List;
@@ -45,7 +46,8 @@ public final class TruthRenderer {
         // costly BigDecimal part, is the same for all of them: computed once here.
         Vector3 origin = camera.castRay(0, 0).getOrigin();
         DoubleDouble[] c = scene.getObjects().stream()
-                .map(sphere -> exactC(origin, sphere.getPosition(), sphere.getRadius())).toArray(DoubleDouble[]::new);
+                .map(sphere -> exactC(origin, SphereGeometry.centre(sphere), SphereGeometry.radius(sphere)))
+                .toArray(DoubleDouble[]::new);
         int[] pixels = new int[width * height];
         IntStream.range(0, height).parallel().forEach(y -> {
             for (int x = 0; x < width; x++) {
@@ -60,7 +62,7 @@ public final class TruthRenderer {
     /** The exact colour seen along the ray, before clamping. */
     public Vec trace(Scene scene, Ray ray) {
         DoubleDouble[] c = scene.getObjects().stream()
-                .map(sphere -> exactC(ray.getOrigin(), sphere.getPosition(), sphere.getRadius()))
+                .map(sphere -> exactC(ray.getOrigin(), SphereGeometry.centre(sphere), SphereGeometry.radius(sphere)))
                 .toArray(DoubleDouble[]::new);
         return trace(scene, ray, c);
     }
@@ -82,10 +84,10 @@ public final class TruthRenderer {
             }
         }
         if (closest == null) {
-            return Vec.of(Renderer.BACKGROUND_COLOUR);
+            return Vec.of(ReferenceRenderer.BACKGROUND_COLOUR);
         }
         Vec P = O.add(D.scale(closestDistance));
-        Vec N = P.subtract(Vec.of(closest.getPosition())).normalised();
+        Vec N = P.subtract(Vec.of(SphereGeometry.centre(closest))).normalised();
         return illuminate(scene, closest, P, N);
     }
 
@@ -100,12 +102,13 @@ public final class TruthRenderer {
      * whether the ray hits the surface it starts on; c / q is exactly 0 there.
      */
     public static DoubleDouble hitDistance(Sphere sphere, Ray ray) {
-        return hitDistance(sphere, ray, exactC(ray.getOrigin(), sphere.getPosition(), sphere.getRadius()));
+        return hitDistance(sphere, ray,
+                exactC(ray.getOrigin(), SphereGeometry.centre(sphere), SphereGeometry.radius(sphere)));
     }
 
     private static DoubleDouble hitDistance(Sphere sphere, Ray ray, DoubleDouble c) {
         Vec D = Vec.of(ray.getDirection());
-        Vec f = Vec.of(ray.getOrigin()).subtract(Vec.of(sphere.getPosition()));
+        Vec f = Vec.of(ray.getOrigin()).subtract(Vec.of(SphereGeometry.centre(sphere)));
         DoubleDouble a = D.dot(D);
         DoubleDouble beta = D.dot(f);
         DoubleDouble quarterDiscriminant = beta.multiply(beta).subtract(a.multiply(c));

@@ -105,10 +105,10 @@ public final class RobustIntersection {
     private static RaycastHit intersect(Sphere sphere, Ray ray, boolean keepHandoutWhereAccurate) {
         Vector3 O = ray.getOrigin();
         Vector3 D = ray.getDirection();
-        Vector3 C = sphere.getPosition();
+        Vector3 C = SphereGeometry.centre(sphere);
         // f = O - C is exact for the camera's rays (O = 0). For other origins its rounding is a
         // relative change of u in f: the answer for a sphere moved by u |O - C| at most.
-        double s = nearestRoot(D.x, D.y, D.z, O.x - C.x, O.y - C.y, O.z - C.z, sphere.getRadius(),
+        double s = nearestRoot(D.x, D.y, D.z, O.x - C.x, O.y - C.y, O.z - C.z, SphereGeometry.radius(sphere),
                 keepHandoutWhereAccurate);
         if (s == HANDOUT_IS_ACCURATE) {
             return sphere.intersectionWith(ray);

@@ -20,6 +20,21 @@ public final class Scene {
     private final List<Sphere> objects = new ArrayList<>();
     private Vector3 ambientLight = DEFAULT_AMBIENT;
     private PointLight pointLight;
+    private Intersection intersection = Intersection.DEFAULT;
+
+    /**
+     * The same spheres and lights, intersected by {@code method} in {@link #findClosestIntersection(Ray)}:
+     * how the reference renderer gives the tick's Renderer.trace, which calls that method, another
+     * intersection method.
+     */
+    public Scene using(Intersection method) {
+        Scene scene = new Scene();
+        scene.objects.addAll(objects);
+        scene.ambientLight = ambientLight;
+        scene.pointLight = pointLight;
+        scene.intersection = method;
+        return scene;
+    }
 
     public void addObject(Sphere object) {
         objects.add(object);
@@ -29,9 +44,9 @@ public final class Scene {
         return Collections.unmodifiableList(objects);
     }
 
-    /** The nearest hit over all spheres, found with the renderer's default {@link Intersection}. */
+    /** The nearest hit over all spheres, found with this scene's {@link Intersection} (by default the robust one). */
     public RaycastHit findClosestIntersection(Ray ray) {
-        return findClosestIntersection(ray, Intersection.DEFAULT);
+        return findClosestIntersection(ray, intersection);
     }
 
     /**

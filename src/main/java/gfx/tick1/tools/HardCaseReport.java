@@ -2,7 +2,7 @@ package gfx.tick1.tools;
 
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.TruthRenderer;
 import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.Scene;
@@ -38,9 +38,9 @@ public final class HardCaseReport {
             String name = file.getFileName().toString().replace(".xml", "");
             Scene scene = new SceneLoader(file, false).getScene();
             BufferedImage truth = new TruthRenderer(width, height).render(scene);
-            BufferedImage robust = new Renderer(width, height, Intersection.ROBUST).render(scene);
+            BufferedImage robust = new ReferenceRenderer(width, height, Intersection.ROBUST).render(scene);
             ImageDifference handoutError = ImageDifference.between(truth,
-                    new Renderer(width, height, Intersection.HANDOUT).render(scene));
+                    new ReferenceRenderer(width, height, Intersection.HANDOUT).render(scene));
             PngOutput.write(halve(robust, false), images.resolve(name + ".png"));
             String pictures = "[image](images/hard/" + name + ".png)";
             if (handoutError.maxDifference() > 1) {

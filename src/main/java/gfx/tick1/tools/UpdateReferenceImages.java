@@ -1,7 +1,7 @@
 package gfx.tick1.tools;
 
 import gfx.tick1.image.PngOutput;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.SceneLoader;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -29,7 +29,7 @@ public final class UpdateReferenceImages {
         for (Path scene : scenesUnder(scenes)) {
             Path target = referenceFor(scenes, references, scene);
             Files.createDirectories(target.getParent());
-            PngOutput.write(new Renderer(WIDTH, HEIGHT).render(new SceneLoader(scene, false).getScene()), target);
+            PngOutput.write(new ReferenceRenderer(WIDTH, HEIGHT).render(new SceneLoader(scene, false).getScene()), target);
             System.out.println("wrote " + target);
         }
     }

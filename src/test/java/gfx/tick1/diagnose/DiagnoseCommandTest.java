@@ -40,7 +40,49 @@ class DiagnoseCommandTest {
         Path image = render("scenes/basic_scene.xml", Variant.CORRECT, 64, 48);
         CliRun run = CliRun.of("diagnose", image.toString(), "--scene", "scenes/basic_scene.xml");
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_CORRECT);
-        assertThat(run.out()).contains("closest: correct (Figure 1)").doesNotContain("reread");
+        assertThat(run.out()).contains("closest: correct (Figure 1)", "verdict: correct").doesNotContain("reread");
+    }
+
+    @Test
+    void aCorrectRenderOfTheKitsBasicSceneIsRecognisedAndCorrect() throws IOException {
+        Path image = render("scenes/basic_scene.xml", Variant.CORRECT, 160, 120);
+        CliRun run = CliRun.of("diagnose", image.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_CORRECT);
+        assertThat(run.out()).contains("as a render of basic_scene.xml:", "verdict: correct")
+                .doesNotContain("background only");
+    }
+
+    @Test
+    void anImageOfAnotherSceneAsksForTheScene() throws IOException {
+        Path image = render("scenes/hundred-spheres.xml", Variant.CORRECT, 160, 120);
+        CliRun run = CliRun.of("diagnose", image.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_CANNOT_DIAGNOSE);
+        assertThat(run.err()).isEqualTo("tick1 diagnose: " + image
+                + ": not a render of tick1.xml or basic_scene.xml; give the scene with --scene" + System.lineSeparator());
+        assertThat(run.out()).isEmpty();
+    }
+
+    @Test
+    void aMistakeSeenOnlyWithTheCameraInsideASphereIsNamedOnSuchAScene() throws IOException {
+        String scene = "scenes/hard/camera-inside-sphere.xml";
+        Path image = render(scene, Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT, 160, 120);
+        CliRun run = CliRun.of("diagnose", image.toString(), "--scene", scene);
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_NOT_CORRECT);
+        assertThat(run.out()).contains("verdict: hit rejected when either root is negative: every pixel matches",
+                "reread: handout section 4, steps 4 to 6");
+    }
+
+    @Test
+    void anImageNoEntryExplainsExitsThreeWithCandidatesAndNoCause() throws IOException {
+        Path image = render("scenes/tick1.xml", Variant.CORRECT, 160, 120);
+        java.awt.image.BufferedImage picture = javax.imageio.ImageIO.read(image.toFile());
+        picture.setRGB(80, 60, 0xFFFFFF); // one pixel no entry draws
+        PngOutput.write(picture, image);
+        CliRun run = CliRun.of("diagnose", image.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_UNSURE);
+        assertThat(run.out()).contains("verdict: no entry of the catalogue explains this image exactly",
+                "candidates, closest first: correct (Figure 1)")
+                .doesNotContain("likely cause", "full Phong model");
     }
 
     @Test

@@ -3,7 +3,7 @@ package gfx.tick1.diagnose;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.image.ImageDifference;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.BundledScenes;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
@@ -14,7 +14,6 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.EnumSource;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -39,26 +38,47 @@ class VariantRendererTest {
     }
 
     private static void assertSameAsReference(Scene scene, String name) {
-        BufferedImage reference = new Renderer(640, 480).render(scene);
+        BufferedImage reference = new ReferenceRenderer(640, 480).render(scene);
         BufferedImage correct = new VariantRenderer(640, 480).render(scene, Variant.CORRECT);
         ImageDifference difference = ImageDifference.between(reference, correct);
         assertThat(difference.differingPixels()).as("%s: %s", name, difference.summary()).isZero();
     }
 
+    static Stream<Variant> seenInImages() {
+        return Variant.seenInImages().stream();
+    }
+
     /**
-     * Every entry of the catalogue shows on both grading scenes, even in a small image: its render
-     * is diagnosed as itself, so no two entries are the same picture and none is the correct one.
+     * Every entry of the catalogue that can show in an image shows on both grading scenes, even in
+     * a small image: its render is diagnosed as itself, so no two entries are the same picture and
+     * none is the correct one. A hit rejected on a negative root shows only where the camera is
+     * inside a sphere, so it is checked on such a scene.
      */
     @ParameterizedTest(name = "{0}")
-    @EnumSource(Variant.class)
+    @MethodSource("seenInImages")
     void everyVariantIsTellableFromAllOthersOnTheGradingScenes(Variant variant) {
-        for (String name : BundledScenes.GRADING) {
-            Scene scene = BundledScenes.load(name);
+        List<String> names = variant == Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT
+                ? List.of("scenes/hard/camera-inside-sphere.xml") : BundledScenes.GRADING;
+        for (String name : names) {
+            Scene scene = name.startsWith("scenes/") ? new SceneLoader(Path.of(name), false).getScene()
+                    : BundledScenes.load(name);
             BufferedImage image = new VariantRenderer(160, 120).render(scene, variant);
             Diagnosis diagnosis = new Diagnoser().diagnose(image, scene);
             List<Diagnosis.Candidate> top = diagnosis.top(2);
             assertThat(top.get(0).variant()).as("%s: %s", name, diagnosis.report()).isEqualTo(variant);
             assertThat(top.get(1).exactShare()).as("%s: runner-up %s", name, top.get(1).variant()).isLessThan(1);
+            assertThat(diagnosis.verdict()).isEqualTo(variant.isCorrect() ? Diagnosis.Verdict.CORRECT
+                    : Diagnosis.Verdict.EXPLAINED);
         }
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {BundledScenes.TICK1, BundledScenes.HIDDEN})
+    void aHitRejectedOnANegativeRootDrawsTheCorrectImageWhenTheCameraIsOutsideEverySphere(String name) {
+        Scene scene = BundledScenes.load(name);
+        Diagnosis diagnosis = new Diagnoser().diagnose(
+                new VariantRenderer(160, 120).render(scene, Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT), scene);
+        assertThat(diagnosis.verdict()).as(String.join("\n", diagnosis.report())).isEqualTo(Diagnosis.Verdict.CORRECT);
+        assertThat(diagnosis.alikeCorrect()).containsExactly(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT);
     }
 }

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.math.Vector3;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Intersection;
@@ -49,7 +50,7 @@ class FastRendererTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void matchesTheReadableRendererOnEveryRepositoryScene(Path scene) {
-        BufferedImage expected = new Renderer(640, 480).render(load(scene));
+        BufferedImage expected = new ReferenceRenderer(640, 480).render(load(scene));
         for (boolean vector : TRACERS) {
             assertSamePixels(expected, new FastRenderer(640, 480, new SamplePattern(1), null, Intersection.DEFAULT, vector)
                     .render(load(scene)), scene + ", " + tracer(vector));
@@ -64,7 +65,7 @@ class FastRendererTest {
     @MethodSource("hardScenes")
     void matchesTheReadableRendererWithEveryIntersectionMethodOnTheHardCases(Path scene) {
         for (Intersection intersection : Intersection.values()) {
-            BufferedImage expected = new Renderer(320, 240, intersection).render(load(scene));
+            BufferedImage expected = new ReferenceRenderer(320, 240, intersection).render(load(scene));
             for (boolean vector : TRACERS) {
                 assertSamePixels(expected,
                         new FastRenderer(320, 240, new SamplePattern(1), null, intersection, vector).render(load(scene)),
@@ -78,7 +79,7 @@ class FastRendererTest {
     void matchesTheReadableRendererWhenAntiAliasing(int samples) {
         Scene scene = load(Path.of("scenes/tick1.xml"));
         SamplePattern pattern = new SamplePattern(samples);
-        BufferedImage expected = new Renderer(160, 120).render(scene, pattern);
+        BufferedImage expected = new ReferenceRenderer(160, 120).render(scene, pattern);
         for (boolean vector : TRACERS) {
             assertSamePixels(expected, new FastRenderer(160, 120, pattern, null, Intersection.DEFAULT, vector).render(scene),
                     samples + " samples, " + tracer(vector));
@@ -89,7 +90,7 @@ class FastRendererTest {
     @ValueSource(longs = {1, 2, 3})
     void bvhAndBruteForceAgreeOnLargeScenesIncludingExactTies(long seed) {
         Scene scene = crowd(seed, 1500);
-        BufferedImage readable = new Renderer(200, 150).render(scene);
+        BufferedImage readable = new ReferenceRenderer(200, 150).render(scene);
         for (boolean vector : TRACERS) {
             BufferedImage brute = new FastRenderer(200, 150, new SamplePattern(1), false, Intersection.DEFAULT, vector)
                     .render(scene);
@@ -121,7 +122,7 @@ class FastRendererTest {
         Scene scene = new Scene();
         scene.setAmbientLight(new Vector3(channel));
         scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(1)));
-        assertSamePixels(new Renderer(16, 12).render(scene),
+        assertSamePixels(new ReferenceRenderer(16, 12).render(scene),
                 new FastRenderer(16, 12, new SamplePattern(1), null, Intersection.DEFAULT, true).render(scene),
                 "ambient " + channel);
     }

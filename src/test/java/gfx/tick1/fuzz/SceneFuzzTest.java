@@ -6,6 +6,7 @@ import com.code_intelligence.jazzer.junit.FuzzTest;
 import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.math.Vector3;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Intersection;
@@ -14,6 +15,7 @@ import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -55,7 +57,7 @@ class SceneFuzzTest {
         int[] pixels = image.getRGB(0, 0, 8, 6, null, 0, 8);
         assertThat(new FastRenderer(8, 6, new SamplePattern(1), false, Intersection.DEFAULT).render(scene).getRGB(0, 0, 8, 6, null, 0, 8))
                 .as("fast renderer without the BVH").isEqualTo(pixels);
-        assertThat(new Renderer(8, 6).render(scene).getRGB(0, 0, 8, 6, null, 0, 8))
+        assertThat(new ReferenceRenderer(8, 6).render(scene).getRGB(0, 0, 8, 6, null, 0, 8))
                 .as("readable renderer").isEqualTo(pixels);
         ByteArrayOutputStream png = new ByteArrayOutputStream();
         PngOutput.write(image, png);
@@ -80,8 +82,8 @@ class SceneFuzzTest {
         }
         Scene scene = loader.getScene();
         for (Sphere sphere : scene.getObjects()) {
-            assertBounded(sphere.getPosition());
-            assertThat(sphere.getRadius()).isPositive().isLessThanOrEqualTo(SceneLoader.MAX_MAGNITUDE);
+            assertBounded(SphereGeometry.centre(sphere));
+            assertThat(SphereGeometry.radius(sphere)).isPositive().isLessThanOrEqualTo(SceneLoader.MAX_MAGNITUDE);
             assertColour(sphere.getColour());
         }
         assertColour(scene.getAmbientLighting());

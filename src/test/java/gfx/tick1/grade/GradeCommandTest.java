@@ -85,6 +85,9 @@ class GradeCommandTest {
                         "return ambient.add(diffuse).add(specular);", "return ambient;")),
                 Arguments.of(Variant.AMBIENT_DIFFUSE, correct.editRenderer(
                         "return ambient.add(diffuse).add(specular);", "return ambient.add(diffuse);")),
+                Arguments.of(Variant.AMBIENT_WITHOUT_C_DIFF, correct.editRenderer(
+                        "Vector3 ambient = C_diff.scale(I_a);", "Vector3 ambient = I_a;")),
+                Arguments.of(Variant.SPECULAR_WITHOUT_I, correct.editRenderer("C_spec.scale(I).scale(k_s", "C_spec.scale(k_s")),
                 Arguments.of(Variant.UNNORMALISED_L_V, correct
                         .editRenderer("subtract(P).normalised();", "subtract(P);")
                         .editRenderer("Vector3 V = P.scale(-1).normalised();", "Vector3 V = P.scale(-1);")),
@@ -110,10 +113,26 @@ class GradeCommandTest {
                         "image.setRGB(x, y, new Vector3(linearRGB.z, linearRGB.y, linearRGB.x).toRGB());")));
     }
 
+    /** A mistake that shows only where the camera is inside a sphere, which neither default scene has. */
+    static final StudentSolution HIT_REJECTED_ON_A_NEGATIVE_ROOT = StudentSolution.correct().editSphere(NEAR_ROOT,
+            "if (s1 < 0 || s2 < 0) {\n            return new RaycastHit();\n        }\n        " + NEAR_ROOT);
+
     @Test
     void everyMistakeOfTheCatalogueHasAStudentSolution() {
-        assertThat(mistakes().map(arguments -> arguments.get()[0]))
-                .containsExactlyInAnyOrder(Stream.of(Variant.values()).filter(v -> !v.isCorrect()).toArray());
+        assertThat(Stream.concat(mistakes().map(arguments -> arguments.get()[0]),
+                Stream.of(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT)))
+                .containsExactlyInAnyOrder(Variant.seenInImages().stream().filter(v -> !v.isCorrect()).toArray());
+    }
+
+    @Test
+    void aHitRejectedOnANegativeRootPassesTick1ButFailsWithTheCameraInsideASphere() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("inside"));
+        Files.copy(Path.of("scenes/hard/camera-inside-sphere.xml"), scenes.resolve("camera-inside-sphere.xml"));
+        CliRun run = grade(HIT_REJECTED_ON_A_NEGATIVE_ROOT, "--scenes", scenes.toString());
+        Variant mistake = Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT;
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).as(run.transcript()).contains("tick1.xml: PASS", "camera-inside-sphere.xml: FAIL",
+                "  closest: " + mistake.title() + " (100.000% of pixels exact", "reread: handout " + mistake.reread());
     }
 
     @ParameterizedTest(name = "{0}")

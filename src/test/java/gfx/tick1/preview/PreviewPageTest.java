@@ -9,6 +9,7 @@ import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
@@ -135,7 +136,7 @@ class PreviewPageTest {
         double halfWidth = Math.tan(Math.toRadians(45) / 2), halfHeight = halfWidth * 3 / 4;
         Scene scene = tick1Scene();
         for (Sphere sphere : scene.getObjects()) {
-            Vector3 C = sphere.getPosition();
+            Vector3 C = SphereGeometry.centre(sphere);
             // The test means something only where the ray tracer itself sees this sphere there.
             Ray towardsCentre = new Ray(new Vector3(0), C.normalised());
             assertThat(scene.findClosestIntersection(towardsCentre).getObjectHit()).isSameAs(sphere);

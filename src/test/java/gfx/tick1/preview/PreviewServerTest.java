@@ -3,7 +3,7 @@ package gfx.tick1.preview;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.image.ImageDifference;
-import gfx.tick1.render.Renderer;
+import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
 import java.awt.image.BufferedImage;
@@ -161,7 +161,7 @@ class PreviewServerTest {
         assertThat(response.headers().firstValue("Content-Type")).hasValue("image/png");
 
         BufferedImage served = ImageIO.read(new ByteArrayInputStream(response.body()));
-        BufferedImage expected = new Renderer(640, 480).render(new SceneLoader(TICK1_XML, false).getScene());
+        BufferedImage expected = new ReferenceRenderer(640, 480).render(new SceneLoader(TICK1_XML, false).getScene());
         assertThat(ImageDifference.between(expected, served).differingPixels()).isZero();
     }
 

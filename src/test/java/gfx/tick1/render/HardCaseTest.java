@@ -45,7 +45,7 @@ class HardCaseTest {
     }
 
     private static ImageDifference againstTruth(Path scene, Intersection intersection) {
-        BufferedImage image = new Renderer(WIDTH, HEIGHT, intersection).render(load(scene));
+        BufferedImage image = new ReferenceRenderer(WIDTH, HEIGHT, intersection).render(load(scene));
         return ImageDifference.between(truth(scene), image);
     }
 
@@ -61,7 +61,7 @@ class HardCaseTest {
     @MethodSource("hardCases")
     void noColourTheDefaultRendererComputesIsNaN(Path scene) {
         Scene loaded = load(scene);
-        Renderer renderer = new Renderer(WIDTH, HEIGHT);
+        Renderer renderer = new ReferenceRenderer(WIDTH, HEIGHT);
         Camera camera = new Camera(WIDTH, HEIGHT);
         for (int y = 0; y < HEIGHT; y++) {
             for (int x = 0; x < WIDTH; x++) {
@@ -77,7 +77,7 @@ class HardCaseTest {
     @MethodSource("hardCases")
     void noPixelIsBlackWhereTheTruthIsNot(Path scene) {
         BufferedImage truth = truth(scene);
-        BufferedImage image = new Renderer(WIDTH, HEIGHT).render(load(scene));
+        BufferedImage image = new ReferenceRenderer(WIDTH, HEIGHT).render(load(scene));
         for (int y = 0; y < HEIGHT; y++) {
             for (int x = 0; x < WIDTH; x++) {
                 if ((image.getRGB(x, y) & 0xFFFFFF) == 0) {

@@ -36,8 +36,8 @@ class OrdinaryScenesTest {
     }
 
     private static ImageDifference defaultAgainstHandout(Scene scene, int width, int height) {
-        return ImageDifference.between(new Renderer(width, height, Intersection.HANDOUT).render(scene),
-                new Renderer(width, height).render(scene));
+        return ImageDifference.between(new ReferenceRenderer(width, height, Intersection.HANDOUT).render(scene),
+                new ReferenceRenderer(width, height).render(scene));
     }
 
     @ParameterizedTest(name = "{0}")

@@ -7,6 +7,7 @@ import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
+import gfx.tick1.scene.SphereGeometry;
 import java.awt.image.BufferedImage;
 import java.util.Random;
 import java.util.stream.LongStream;
@@ -43,7 +44,7 @@ class PlainSpecOracleTest {
                     0.2 + random.nextDouble() * 1.5, colour(random)));
         }
 
-        assertMatchesThePlainSpec(scene, new Renderer(W, H).render(scene), "readable Renderer");
+        assertMatchesThePlainSpec(scene, new ReferenceRenderer(W, H).render(scene), "readable Renderer");
         // The command line's renderer, as an outside check that renders unseen scenes sees it.
         assertMatchesThePlainSpec(scene, new FastRenderer(W, H, new SamplePattern(1)).render(scene), "fast renderer");
     }
@@ -87,11 +88,11 @@ class PlainSpecOracleTest {
         double nearest = Double.POSITIVE_INFINITY;
         Sphere hit = null;
         for (Sphere sphere : scene.getObjects()) {
-            Vector3 c = sphere.getPosition();
+            Vector3 c = SphereGeometry.centre(sphere);
             double fx = 0 - c.x, fy = 0 - c.y, fz = 0 - c.z;
             double a = dx * dx + dy * dy + dz * dz;
             double b = 2 * (dx * fx + dy * fy + dz * fz);
-            double cc = (fx * fx + fy * fy + fz * fz) - Math.pow(sphere.getRadius(), 2);
+            double cc = (fx * fx + fy * fy + fz * fz) - Math.pow(SphereGeometry.radius(sphere), 2);
             double disc = b * b - 4 * a * cc;
             if (disc < 0) {
                 continue;
@@ -109,7 +110,7 @@ class PlainSpecOracleTest {
 
         // Shading at P with normal N.
         double x = 0 + nearest * dx, y = 0 + nearest * dy, z = 0 + nearest * dz;
-        Vector3 c = hit.getPosition();
+        Vector3 c = SphereGeometry.centre(hit);
         double nx = x - c.x, ny = y - c.y, nz = z - c.z;
         double nLength = Math.sqrt(nx * nx + ny * ny + nz * nz);
         nx /= nLength;

@@ -5,10 +5,13 @@ import static org.assertj.core.api.Assertions.within;
 
 import gfx.tick1.math.Ray;
 import gfx.tick1.math.Vector3;
+import gfx.tick1.scene.BundledScenes;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
 import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -23,7 +26,7 @@ class RendererTest {
     private static final Vector3 BLACK = new Vector3(0);
     private static final double TOLERANCE = 1e-15;
 
-    private final Renderer renderer = new Renderer(64, 48);
+    private final Renderer renderer = new ReferenceRenderer(64, 48);
 
     private static Scene scene(Vector3 ambient, PointLight light) {
         Scene scene = new Scene();
@@ -95,5 +98,26 @@ class RendererTest {
         assertThat(image.getType()).isEqualTo(BufferedImage.TYPE_INT_RGB);
         assertThat(image.getRGB(0, 0) & 0xFFFFFF).as("corner is background").isEqualTo(0x191919);
         assertThat(image.getRGB(32, 24) & 0xFFFFFF).as("centre is the ambient-lit red sphere").isEqualTo(0xFF0000);
+    }
+
+    /**
+     * The tick's own Renderer.render, one thread, one castRay per pixel, a line per row on
+     * standard output, gives the reference render's image pixel for pixel.
+     */
+    @Test
+    void theTicksRenderGivesTheReferenceImageAndPrintsARowAtATime() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        PrintStream standardOut = System.out;
+        ByteArrayOutputStream printed = new ByteArrayOutputStream();
+        BufferedImage ticks;
+        try {
+            System.setOut(new PrintStream(printed, true));
+            ticks = new Renderer(64, 48).render(scene);
+        } finally {
+            System.setOut(standardOut);
+        }
+        BufferedImage reference = new ReferenceRenderer(64, 48).render(scene);
+        assertThat(ticks.getRGB(0, 0, 64, 48, null, 0, 64)).isEqualTo(reference.getRGB(0, 0, 64, 48, null, 0, 64));
+        assertThat(printed.toString().lines()).hasSize(48).endsWith("100.00% completed");
     }
 }

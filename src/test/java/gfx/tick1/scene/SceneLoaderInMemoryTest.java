@@ -29,8 +29,10 @@ class SceneLoaderInMemoryTest {
 
         assertThat(inMemory.getWarnings()).isNotEmpty().isEqualTo(fromFile.getWarnings());
         assertThat(inMemory.getScene().getObjects()).hasSize(1);
-        assertThat(inMemory.getScene().getObjects().get(0).toString())
-                .isEqualTo(fromFile.getScene().getObjects().get(0).toString());
+        Sphere read = inMemory.getScene().getObjects().get(0), expected = fromFile.getScene().getObjects().get(0);
+        assertThat(SphereGeometry.centre(read)).isEqualTo(SphereGeometry.centre(expected));
+        assertThat(SphereGeometry.radius(read)).isEqualTo(SphereGeometry.radius(expected));
+        assertThat(read.getColour()).isEqualTo(expected.getColour());
     }
 
     @Test

@@ -48,8 +48,8 @@ class SceneLoaderTest {
         assertThat(scene.getPointLight().getIntensity()).isEqualTo(120);
         assertThat(scene.getObjects()).hasSize(2);
         Sphere first = scene.getObjects().get(0);
-        assertThat(first.getPosition()).isEqualTo(new Vector3(0.55, -0.16, 3.5));
-        assertThat(first.getRadius()).isEqualTo(0.5);
+        assertThat(SphereGeometry.centre(first)).isEqualTo(new Vector3(0.55, -0.16, 3.5));
+        assertThat(SphereGeometry.radius(first)).isEqualTo(0.5);
         assertThat(first.getColour()).isEqualTo(new Vector3(0, 0x71 / 255.0, 0xBC / 255.0));
     }
 
@@ -57,8 +57,8 @@ class SceneLoaderTest {
     void missingCoordinatesRadiusAndIntensityTakeTheStarterDefaults() throws IOException {
         Scene scene = load("<scene><point-light colour='#FFFFFF'/><sphere colour='#FF0000'/></scene>");
         Sphere sphere = scene.getObjects().get(0);
-        assertThat(sphere.getPosition()).isEqualTo(new Vector3(0));
-        assertThat(sphere.getRadius()).isEqualTo(1);
+        assertThat(SphereGeometry.centre(sphere)).isEqualTo(new Vector3(0));
+        assertThat(SphereGeometry.radius(sphere)).isEqualTo(1);
         assertThat(scene.getPointLight().getPosition()).isEqualTo(new Vector3(0));
         assertThat(scene.getPointLight().getIntensity()).isEqualTo(100);
     }
@@ -89,15 +89,15 @@ class SceneLoaderTest {
     void elementsNestedAtAnyDepthAreReadInDocumentOrder() throws IOException {
         Scene scene = load("<scene><sphere colour='#FF0000'><sphere x='1' colour='#00FF00'/></sphere>"
                 + "<point-light colour='#FFFFFF'/></scene>");
-        assertThat(scene.getObjects()).extracting(s -> s.getPosition().x).containsExactly(0.0, 1.0);
+        assertThat(scene.getObjects()).extracting(s -> SphereGeometry.centre(s).x).containsExactly(0.0, 1.0);
     }
 
     @Test
     void numbersMayHaveSignsExponentsAndSurroundingSpace() throws IOException {
         Sphere sphere = load("<scene><point-light colour='#FFFFFF'/>"
                 + "<sphere x=' -1.5 ' y='+2' z='3e1' radius='.5' colour='#ff00AA'/></scene>").getObjects().get(0);
-        assertThat(sphere.getPosition()).isEqualTo(new Vector3(-1.5, 2, 30));
-        assertThat(sphere.getRadius()).isEqualTo(0.5);
+        assertThat(SphereGeometry.centre(sphere)).isEqualTo(new Vector3(-1.5, 2, 30));
+        assertThat(SphereGeometry.radius(sphere)).isEqualTo(0.5);
         assertThat(sphere.getColour()).isEqualTo(new Vector3(1, 0, 0xAA / 255.0));
     }
 

@@ -42,7 +42,7 @@ class SceneTest {
             order.forEach(scene::addObject);
             assertThat(scene.findClosestIntersection(FORWARD).getObjectHit())
                     .as("the sphere hit when they are added in the order of z = %s",
-                            order.stream().map(sphere -> sphere.getPosition().z).toList())
+                            order.stream().map(sphere -> SphereGeometry.centre(sphere).z).toList())
                     .isSameAs(near);
         }
     }

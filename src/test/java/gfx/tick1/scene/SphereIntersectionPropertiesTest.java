@@ -32,21 +32,21 @@ class SphereIntersectionPropertiesTest {
             Random random = new Random(seed);
             Sphere sphere = new Sphere(vector(random, 50), 0.01 + random.nextDouble() * 20, COLOUR);
             Vector3 origin = random.nextInt(4) == 0
-                    ? sphere.getPosition().add(vector(random, 1).normalised().scale(sphere.getRadius() * random.nextDouble()))
+                    ? SphereGeometry.centre(sphere).add(vector(random, 1).normalised().scale(SphereGeometry.radius(sphere) * random.nextDouble()))
                     : vector(random, 50);
             // Aim near the sphere half of the time, so that hits, grazes and misses all occur.
             Vector3 direction = random.nextBoolean()
-                    ? sphere.getPosition().add(vector(random, sphere.getRadius())).subtract(origin)
+                    ? SphereGeometry.centre(sphere).add(vector(random, SphereGeometry.radius(sphere))).subtract(origin)
                     : vector(random, 1);
             return new Case(seed, sphere, new Ray(origin, direction.scale(0.1 + random.nextDouble() * 10)));
         }
 
         double scale() {
-            return ray.getOrigin().subtract(sphere.getPosition()).magnitude() + sphere.getRadius();
+            return ray.getOrigin().subtract(SphereGeometry.centre(sphere)).magnitude() + SphereGeometry.radius(sphere);
         }
 
         boolean originOutside() {
-            return ray.getOrigin().subtract(sphere.getPosition()).magnitude() > sphere.getRadius() * (1 + 1e-9);
+            return ray.getOrigin().subtract(SphereGeometry.centre(sphere)).magnitude() > SphereGeometry.radius(sphere) * (1 + 1e-9);
         }
 
         @Override
@@ -73,8 +73,8 @@ class SphereIntersectionPropertiesTest {
         List<Case> all = cases().collect(Collectors.toList());
         long hits = all.stream().filter(c -> c.sphere().intersectionWith(c.ray()).getObjectHit() != null).count();
         long outside = all.stream().filter(Case::originOutside).count();
-        long inside = all.stream().filter(c -> c.ray().getOrigin().subtract(c.sphere().getPosition()).magnitude()
-                <= c.sphere().getRadius() * (1 - 1e-6)).count();
+        long inside = all.stream().filter(c -> c.ray().getOrigin().subtract(SphereGeometry.centre(c.sphere())).magnitude()
+                <= SphereGeometry.radius(c.sphere()) * (1 - 1e-6)).count();
         assertThat(hits).as("hits").isGreaterThan(50);
         assertThat(all.size() - hits).as("misses").isGreaterThan(50);
         assertThat(outside).as("origins outside").isGreaterThan(50);
@@ -88,16 +88,16 @@ class SphereIntersectionPropertiesTest {
         if (hit.getObjectHit() == null) {
             return;
         }
-        Vector3 centre = c.sphere().getPosition();
+        Vector3 centre = SphereGeometry.centre(c.sphere());
         double tolerance = 1e-9 * c.scale();
         assertThat(hit.getDistance()).as("%s", c).isPositive();
-        assertThat(hit.getLocation().subtract(centre).magnitude() - c.sphere().getRadius()).as("%s", c)
+        assertThat(hit.getLocation().subtract(centre).magnitude() - SphereGeometry.radius(c.sphere())).as("%s", c)
                 .isBetween(-tolerance, tolerance);
         if (c.originOutside()) {
             // The nearest root: halfway to the hit the ray has not yet entered the sphere.
             Vector3 halfway = c.ray().evaluateAt(hit.getDistance() / 2);
             assertThat(halfway.subtract(centre).magnitude()).as("%s", c)
-                    .isGreaterThanOrEqualTo(c.sphere().getRadius() - tolerance);
+                    .isGreaterThanOrEqualTo(SphereGeometry.radius(c.sphere()) - tolerance);
         }
     }
 
@@ -118,7 +118,7 @@ class SphereIntersectionPropertiesTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("cases")
     void aRayFromOutsidePointingAwayFromTheSphereMisses(Case c) {
-        Vector3 away = c.ray().getOrigin().subtract(c.sphere().getPosition());
+        Vector3 away = c.ray().getOrigin().subtract(SphereGeometry.centre(c.sphere()));
         if (!c.originOutside()) {
             return;
         }
@@ -131,14 +131,14 @@ class SphereIntersectionPropertiesTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("cases")
     void aRayFromInsideTheSphereAlwaysHitsItsSurface(Case c) {
-        double fromCentre = c.ray().getOrigin().subtract(c.sphere().getPosition()).magnitude();
-        if (fromCentre > c.sphere().getRadius() * (1 - 1e-6)) {
+        double fromCentre = c.ray().getOrigin().subtract(SphereGeometry.centre(c.sphere())).magnitude();
+        if (fromCentre > SphereGeometry.radius(c.sphere()) * (1 - 1e-6)) {
             return; // outside, or too near the surface to say which side rounding puts it
         }
         RaycastHit hit = c.sphere().intersectionWith(c.ray());
         assertThat(hit.getObjectHit()).as("%s", c).isSameAs(c.sphere());
         double tolerance = 1e-9 * c.scale();
-        assertThat(hit.getLocation().subtract(c.sphere().getPosition()).magnitude() - c.sphere().getRadius())
+        assertThat(hit.getLocation().subtract(SphereGeometry.centre(c.sphere())).magnitude() - SphereGeometry.radius(c.sphere()))
                 .as("%s", c).isBetween(-tolerance, tolerance);
     }
 }

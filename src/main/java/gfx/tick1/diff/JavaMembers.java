@@ -1,0 +1,130 @@
+package gfx.tick1.diff;
+
+import com.github.javaparser.JavaParser;
+import com.github.javaparser.ParseResult;
+import com.github.javaparser.ParserConfiguration;
+import com.github.javaparser.Problem;
+import com.github.javaparser.ast.CompilationUnit;
+import com.github.javaparser.ast.Node;
+import com.github.javaparser.ast.body.BodyDeclaration;
+import com.github.javaparser.ast.body.CallableDeclaration;
+import com.github.javaparser.ast.body.FieldDeclaration;
+import com.github.javaparser.ast.body.TypeDeclaration;
+import com.github.javaparser.ast.body.VariableDeclarator;
+import com.github.javaparser.ast.expr.ArrayAccessExpr;
+import com.github.javaparser.ast.expr.EnclosedExpr;
+import com.github.javaparser.ast.expr.Expression;
+import com.github.javaparser.ast.expr.FieldAccessExpr;
+import com.github.javaparser.ast.expr.LiteralExpr;
+import com.github.javaparser.ast.expr.MethodCallExpr;
+import com.github.javaparser.ast.expr.NameExpr;
+import com.github.javaparser.ast.expr.ObjectCreationExpr;
+import com.github.javaparser.ast.expr.ThisExpr;
+import com.github.javaparser.printer.DefaultPrettyPrinter;
+import com.github.javaparser.printer.configuration.DefaultConfigurationOption;
+import com.github.javaparser.printer.configuration.DefaultPrinterConfiguration;
+import com.github.javaparser.printer.configuration.DefaultPrinterConfiguration.ConfigOption;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+/**
+ * One Java file as {@code tick1 diff} compares it: the name of its class and its members, each
+ * printed in one standard layout, keyed by signature. Comments, formatting, the package and
+ * imports are set aside, and so are parentheses that change nothing ({@code (O.subtract(C)).dot}
+ * is {@code O.subtract(C).dot}) and a {@code this.} before a method call.
+ *
+ * @param className the name of the file's first class
+ * @param members   member signature ("intersectionWith(Ray)", "field radius") to its printed text, in
+ *                  the file's order
+ */
+public record JavaMembers(String className, Map<String, String> members) {
+
+    /** A file that is not Java the parser accepts: where, and what the parser said. */
+    public static final class ParseException extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        ParseException(String message) {
+            super(message);
+        }
+    }
+
+    private static final DefaultPrettyPrinter PRINTER = new DefaultPrettyPrinter(new DefaultPrinterConfiguration()
+            .removeOption(new DefaultConfigurationOption(ConfigOption.PRINT_COMMENTS))
+            .removeOption(new DefaultConfigurationOption(ConfigOption.PRINT_JAVADOC)));
+
+    /** Parses {@code source}; {@code name} is the file's name for messages ("Sphere.java:12:5: ..."). */
+    public static JavaMembers parse(String name, String source) throws ParseException {
+        JavaParser parser = new JavaParser(new ParserConfiguration()
+                .setLanguageLevel(ParserConfiguration.LanguageLevel.JAVA_17));
+        ParseResult<CompilationUnit> result = parser.parse(source);
+        if (!result.isSuccessful() || result.getResult().isEmpty()) {
+            Problem problem = result.getProblems().get(0);
+            String where = problem.getLocation().flatMap(range -> range.getBegin().getRange())
+                    .map(range -> ":" + range.begin.line + ":" + range.begin.column).orElse("");
+            throw new ParseException(name + where + ": " + firstLine(problem.getMessage()));
+        }
+        CompilationUnit unit = result.getResult().get();
+        if (unit.getTypes().isEmpty()) {
+            throw new ParseException(name + ": no class in the file");
+        }
+        TypeDeclaration<?> type = unit.getType(0);
+        dropParenthesesThatChangeNothing(type);
+        dropThisBeforeMethodCalls(type);
+        Map<String, String> members = new LinkedHashMap<>();
+        for (BodyDeclaration<?> member : type.getMembers()) {
+            members.put(signature(member), PRINTER.print(member));
+        }
+        return new JavaMembers(type.getNameAsString(), members);
+    }
+
+    /** "trace(Scene, Ray)", "Renderer(int, int)", "field width, height". */
+    static String signature(BodyDeclaration<?> member) {
+        if (member instanceof CallableDeclaration<?> callable) {
+            return callable.getNameAsString() + "(" + callable.getParameters().stream()
+                    .map(parameter -> parameter.getType().asString() + (parameter.isVarArgs() ? "..." : ""))
+                    .collect(Collectors.joining(", ")) + ")";
+        }
+        if (member instanceof FieldDeclaration field) {
+            return "field " + field.getVariables().stream().map(VariableDeclarator::getNameAsString)
+                    .collect(Collectors.joining(", "));
+        }
+        if (member instanceof TypeDeclaration<?> nested) {
+            return "class " + nested.getNameAsString();
+        }
+        return member.getClass().getSimpleName() + " at line " + member.getBegin().map(p -> p.line).orElse(0);
+    }
+
+    /** (x) where x is a name, a call, a field, a literal or a new object, or a whole initialiser or statement. */
+    private static void dropParenthesesThatChangeNothing(Node root) {
+        List<EnclosedExpr> enclosed = root.findAll(EnclosedExpr.class);
+        for (EnclosedExpr parentheses : enclosed) {
+            Expression inner = parentheses.getInner();
+            boolean primary = inner instanceof NameExpr || inner instanceof MethodCallExpr
+                    || inner instanceof FieldAccessExpr || inner instanceof LiteralExpr
+                    || inner instanceof ObjectCreationExpr || inner instanceof ArrayAccessExpr
+                    || inner instanceof ThisExpr || inner instanceof EnclosedExpr;
+            boolean whole = parentheses.getParentNode().map(parent -> !(parent instanceof Expression)
+                    || parent instanceof MethodCallExpr call && call.getArguments().contains(parentheses))
+                    .orElse(false);
+            if (primary || whole) {
+                parentheses.replace(inner);
+            }
+        }
+    }
+
+    private static void dropThisBeforeMethodCalls(Node root) {
+        for (MethodCallExpr call : root.findAll(MethodCallExpr.class)) {
+            if (call.getScope().filter(scope -> scope instanceof ThisExpr this_ && this_.getTypeName().isEmpty())
+                    .isPresent()) {
+                call.removeScope();
+            }
+        }
+    }
+
+    private static String firstLine(String message) {
+        int end = message.indexOf('\n');
+        return (end < 0 ? message : message.substring(0, end)).strip();
+    }
+}

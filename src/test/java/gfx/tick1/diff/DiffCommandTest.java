@@ -1,0 +1,183 @@
+package gfx.tick1.diff;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gfx.tick1.CliRun;
+import gfx.tick1.diagnose.Variant;
+import gfx.tick1.starter.StarterKit;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/** {@code tick1 diff} through the real entry point. */
+class DiffCommandTest {
+
+    private static final String ILLUMINATE = "illuminate(Scene, Sphere, Vector3, Vector3)";
+    private static final String INTERSECTION = "intersectionWith(Ray)";
+    private static final String RENDER = "render(Scene)";
+    private static final String RGB = "image.setRGB(x, y, linearRGB.toRGB());";
+
+    @TempDir
+    Path dir;
+
+    private Path write(String name, String source) throws IOException {
+        Path file = dir.resolve(name);
+        Files.writeString(file, source);
+        return file;
+    }
+
+    private static String ours(String name) throws IOException {
+        return Files.readString(Path.of(name.equals("Sphere") ? "src/main/java/gfx/tick1/scene/Sphere.java"
+                : "src/main/java/gfx/tick1/render/Renderer.java"));
+    }
+
+    /** Our file with its comments removed, every line re-indented, its members in reverse order. */
+    private static String reformatted(String source) {
+        String noComments = source.replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("//[^\n]*", "");
+        String body = noComments.substring(noComments.indexOf('{', noComments.indexOf("class ")) + 1,
+                noComments.lastIndexOf('}'));
+        // Split the body into members at the lines that start one (four spaces of indent, then a word).
+        java.util.List<String> members = new java.util.ArrayList<>();
+        StringBuilder member = new StringBuilder();
+        int depth = 0;
+        for (String line : body.split("\n")) {
+            member.append("  ").append(line.strip()).append("\n");
+            depth += line.chars().filter(c -> c == '{').count() - line.chars().filter(c -> c == '}').count();
+            if (depth == 0 && (line.strip().endsWith(";") || line.strip().endsWith("}"))) {
+                members.add(member.toString());
+                member.setLength(0);
+            }
+        }
+        java.util.Collections.reverse(members);
+        String header = noComments.substring(0, noComments.indexOf('{', noComments.indexOf("class ")) + 1);
+        return header.replace("package ", "\n\npackage  ") + "\n" + String.join("\n\n", members) + "}\n";
+    }
+
+    @Test
+    void ourOwnFilesReformattedWithoutCommentsAndReorderedGiveExitZeroAndNoOutput() throws IOException {
+        Path sphere = write("Sphere.java", reformatted(ours("Sphere")));
+        Path renderer = write("Renderer.java", reformatted(ours("Renderer")));
+        assertThat(Files.readString(sphere)).isNotEqualTo(ours("Sphere")).doesNotContain("//");
+        CliRun run = CliRun.of("diff", sphere.toString(), renderer.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
+        assertThat(run.out()).as(run.transcript()).isEmpty();
+        assertThat(run.err()).isEmpty();
+    }
+
+    @Test
+    void theStudentsCorrectSolutionDiffersInNothing() throws IOException {
+        CliRun run = CliRun.of("diff", "src/test/resources/students/correct/Renderer.java",
+                "src/test/resources/students/correct/Sphere.java");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
+        assertThat(run.out()).isEmpty();
+    }
+
+    /** The mistake edits the grade tests make, on our own files. */
+    static Stream<Arguments> mistakes() {
+        return Stream.of(
+                Arguments.of(Variant.FAR_ROOT, "Sphere", INTERSECTION, "double s = s1 > 0 ? s1 : s2;", "double s = s2;"),
+                Arguments.of(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT, "Sphere", INTERSECTION,
+                        "double s = s1 > 0 ? s1 : s2;",
+                        "if (s1 < 0 || s2 < 0) { return new RaycastHit(); } double s = s1 > 0 ? s1 : s2;"),
+                Arguments.of(Variant.AMBIENT_ONLY, "Renderer", ILLUMINATE,
+                        "return ambient.add(diffuse).add(specular);", "return ambient;"),
+                Arguments.of(Variant.AMBIENT_DIFFUSE, "Renderer", ILLUMINATE,
+                        "return ambient.add(diffuse).add(specular);", "return ambient.add(diffuse);"),
+                Arguments.of(Variant.AMBIENT_WITHOUT_C_DIFF, "Renderer", ILLUMINATE,
+                        "Vector3 ambient = C_diff.scale(I_a);", "Vector3 ambient = I_a;"),
+                Arguments.of(Variant.SPECULAR_WITHOUT_I, "Renderer", ILLUMINATE,
+                        "C_spec.scale(I).scale(k_s", "C_spec.scale(k_s"),
+                Arguments.of(Variant.UNNORMALISED_L_V, "Renderer", ILLUMINATE,
+                        "Vector3 V = P.scale(-1).normalised();", "Vector3 V = P.scale(-1);"),
+                Arguments.of(Variant.UNCLAMPED_N_DOT_L, "Renderer", ILLUMINATE,
+                        "k_d * Math.max(0, NdotL)", "k_d * NdotL"),
+                Arguments.of(Variant.UNCLAMPED_R_DOT_V, "Renderer", ILLUMINATE,
+                        "Math.pow(Math.max(0, RdotV), n)", "Math.pow(RdotV, n)"),
+                Arguments.of(Variant.NO_FALL_OFF, "Renderer", ILLUMINATE, "light.getIlluminationAt(distanceToLight)",
+                        "light.getColour().scale(light.getIntensity() / (Math.PI * 4))"),
+                Arguments.of(Variant.FALL_OFF_WITHOUT_4PI, "Renderer", ILLUMINATE,
+                        "light.getIlluminationAt(distanceToLight)",
+                        "light.getColour().scale(light.getIntensity() / Math.pow(distanceToLight, 2))"),
+                Arguments.of(Variant.V_AWAY_FROM_CAMERA, "Renderer", ILLUMINATE,
+                        "Vector3 V = P.scale(-1).normalised();", "Vector3 V = P.normalised();"),
+                Arguments.of(Variant.R_WRONG_WAY, "Renderer", ILLUMINATE, "L.reflectIn(N)", "N.reflectIn(L)"),
+                Arguments.of(Variant.ROUNDED_BYTES, "Renderer", RENDER, RGB, "image.setRGB(x, y, "
+                        + "(int) Math.round(255 * Math.max(0, Math.min(1, linearRGB.x))) << 16 "
+                        + "| (int) Math.round(255 * Math.max(0, Math.min(1, linearRGB.y))) << 8 "
+                        + "| (int) Math.round(255 * Math.max(0, Math.min(1, linearRGB.z))));"),
+                Arguments.of(Variant.UPSIDE_DOWN, "Renderer", RENDER, RGB,
+                        "image.setRGB(x, height - 1 - y, linearRGB.toRGB());"),
+                Arguments.of(Variant.RED_BLUE_SWAPPED, "Renderer", RENDER, RGB,
+                        "image.setRGB(x, y, new Vector3(linearRGB.z, linearRGB.y, linearRGB.x).toRGB());"),
+                Arguments.of(Variant.UNCHECKED_NEGATIVE_SQUARE_ROOT, "Sphere", INTERSECTION,
+                        "if (discriminant < 0) {\n            return new RaycastHit();\n        }\n", ""));
+    }
+
+    /** The kit's files as handed out: the two stages before any code is written. */
+    @ParameterizedTest(name = "{0}")
+    @CsvSource({"BACKGROUND_ONLY, Sphere, intersectionWith(Ray)",
+        "FLAT_COLOUR, Renderer, 'illuminate(Scene, Sphere, Vector3, Vector3)'"})
+    void theUntouchedKitExitsOneWithTheStagesHint(Variant stage, String className, String method) throws IOException {
+        Path file = write(className + ".java", StarterKit.source(className));
+        CliRun run = CliRun.of("diff", file.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(run.out()).as(run.transcript()).contains("@@ " + method + " @@",
+                "hint: this looks like \"" + stage.title() + "\": reread handout " + stage.reread() + ".");
+        assertThat(run.out().lines().filter(line -> line.startsWith("hint: "))).as(run.transcript()).hasSize(1);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("mistakes")
+    void aMistakeExitsOneNamesItsMethodAndGivesItsHint(Variant mistake, String className, String method,
+            String text, String replacement) throws IOException {
+        String source = ours(className);
+        assertThat(source).as("the edit's text must be in our " + className).containsOnlyOnce(text);
+        Path file = write(className + ".java", source.replace(text, replacement));
+        CliRun run = CliRun.of("diff", file.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(run.out()).as(run.transcript()).contains("@@ " + method + " @@",
+                "hint: this looks like \"" + mistake.title() + "\": reread handout " + mistake.reread() + ".");
+        assertThat(run.out().lines().filter(line -> line.startsWith("hint: "))).as(run.transcript()).hasSize(1);
+        assertThat(run.out()).doesNotContain("\u001B[");
+    }
+
+    @Test
+    void aFileThatDoesNotParseGetsTheParsersMessageWithFileLineAndColumn() throws IOException {
+        Path file = write("Sphere.java", ours("Sphere").replace("double a = D.dot(D);", "double a = D.dot(D)"));
+        CliRun run = CliRun.of("diff", file.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_CANNOT_COMPARE);
+        assertThat(run.err()).matches("tick1 diff: " + java.util.regex.Pattern.quote(file.toString())
+                + ":\\d+:\\d+: .+\\R");
+        assertThat(run.out()).isEmpty();
+    }
+
+    @Test
+    void aFileOfAnotherClassIsOneLineAndExitTwo() throws IOException {
+        Path file = write("Camera.java", "package gfx.tick1; public class Camera { }");
+        CliRun run = CliRun.of("diff", file.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_CANNOT_COMPARE);
+        assertThat(run.err()).isEqualTo("tick1 diff: " + file + ": class Camera: expected Sphere or Renderer, the "
+                + "two classes of the tick" + System.lineSeparator());
+    }
+
+    /** On a terminal the removed lines are red, the added green; captured output has no colour at all. */
+    @Test
+    void colourIsForTerminalsOnly() throws Exception {
+        JavaMembers ours = DiffCommand.ours("Sphere");
+        JavaMembers theirs = JavaMembers.parse("Sphere.java",
+                ours("Sphere").replace("double s = s1 > 0 ? s1 : s2;", "double s = s2;"));
+        java.util.List<String> coloured = DiffCommand.compare(ours, theirs, Path.of("Sphere.java"),
+                new DiffCommand.Colours(true));
+        assertThat(coloured).contains("\u001B[31m-    double s = s1 > 0 ? s1 : s2;\u001B[0m",
+                "\u001B[32m+    double s = s2;\u001B[0m");
+        assertThat(DiffCommand.compare(ours, theirs, Path.of("Sphere.java"), new DiffCommand.Colours(false)))
+                .noneMatch(line -> line.contains("\u001B"));
+    }
+}
