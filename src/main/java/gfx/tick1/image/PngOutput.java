@@ -172,7 +172,7 @@ public final class PngOutput {
         Thread thread = new Thread(() -> {
             try {
                 write(new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB), OutputStream.nullOutputStream());
-            } catch (IOException | RuntimeException e) {
+            } catch (Throwable e) { // even OutOfMemoryError: this thread must never print or fail the run
                 // Only a head start: the real write reports whatever is wrong.
             }
         }, "tick1-prepare-png-writer");

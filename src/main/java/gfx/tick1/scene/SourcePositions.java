@@ -1,8 +1,6 @@
 package gfx.tick1.scene;
 
 import java.util.Arrays;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 /**
  * Line and column look-ups in a scene file's text, so that an error can point at the start of an
@@ -14,12 +12,7 @@ import java.util.regex.Pattern;
 final class SourcePositions {
 
     /** A 1-based line and column, as editors and compilers print them. */
-    record Position(int line, int column) implements Comparable<Position> {
-        @Override
-        public int compareTo(Position other) {
-            return line != other.line ? Integer.compare(line, other.line) : Integer.compare(column, other.column);
-        }
-
+    record Position(int line, int column) {
         @Override
         public String toString() {
             return line + ":" + column;
@@ -55,16 +48,56 @@ final class SourcePositions {
         return start < 0 ? new Position(locatorLine, locatorColumn) : positionOf(start);
     }
 
-    /** The position of {@code name=} inside the tag that starts at {@code tag}, else the tag's. */
+    /**
+     * The position of {@code name=} inside the start tag that begins at {@code tag}, else the
+     * tag's. The tag is read as XML defines it: its name, then name="value" or name='value' pairs,
+     * so that a '&gt;' or a name inside a quoted value is passed over.
+     */
     Position attribute(Position tag, String name) {
-        int start = offsetOf(tag.line(), tag.column());
-        if (start < 0) {
+        int i = offsetOf(tag.line(), tag.column());
+        if (i < 0 || i >= text.length() || text.charAt(i) != '<') {
             return tag;
         }
-        int end = text.indexOf('>', start);
-        String tagText = text.substring(start, end < 0 ? text.length() : end);
-        Matcher m = Pattern.compile("\\s(" + Pattern.quote(name) + ")\\s*=").matcher(tagText);
-        return m.find() ? positionOf(start + m.start(1)) : tag;
+        i = skipName(i + 1);
+        while (true) {
+            i = skipSpace(i);
+            int nameStart = i;
+            i = skipName(i);
+            if (i == nameStart) {
+                return tag; // '>' or '/>': the end of the tag, and no such attribute
+            }
+            if (text.regionMatches(nameStart, name, 0, name.length()) && i - nameStart == name.length()) {
+                return positionOf(nameStart);
+            }
+            i = skipSpace(i);
+            if (i >= text.length() || text.charAt(i) != '=') {
+                return tag;
+            }
+            i = skipSpace(i + 1);
+            if (i >= text.length() || (text.charAt(i) != '"' && text.charAt(i) != '\'')) {
+                return tag;
+            }
+            int close = text.indexOf(text.charAt(i), i + 1);
+            if (close < 0) {
+                return tag;
+            }
+            i = close + 1;
+        }
+    }
+
+    private int skipSpace(int i) {
+        while (i < text.length() && Character.isWhitespace(text.charAt(i))) {
+            i++;
+        }
+        return i;
+    }
+
+    /** Past an XML name: everything up to white space, '=', '/', '&gt;' or a quote. */
+    private int skipName(int i) {
+        while (i < text.length() && "=/>\"'".indexOf(text.charAt(i)) < 0 && !Character.isWhitespace(text.charAt(i))) {
+            i++;
+        }
+        return i;
     }
 
     private int offsetOf(int line, int column) {

@@ -79,6 +79,27 @@ class SceneDocumentTest {
     }
 
     @Test
+    void theParseStopsAtTheFirstElementTheFormatDoesNotHave() {
+        // Nothing after <plane> is read: not the next sphere, not the malformed end.
+        String xml = "<scene>\n<sphere colour='#FF0000'/>\n<plane/>\n<sphere colour='#00FF00'/>\n<broken\n";
+
+        assertThatThrownBy(() -> parse(xml)).isInstanceOfSatisfying(SceneDocument.Partial.class, stop ->
+                assertThat(elementsInDocumentOrder(stop.document())).extracting(Element::getTagName)
+                        .containsExactly("scene", "sphere", "plane"));
+    }
+
+    @Test
+    void attributesAreNamedInTheFilesOrderAndOnlyTheFormatsAreKeptWithTheirValues() throws Exception {
+        Element sphere = (Element) parse("<scene><sphere zeta='1' x='2' alpha='3' colour='#FF0000'/></scene>")
+                .getElementsByTagName("sphere").item(0);
+
+        assertThat(SceneDocument.attributeNames(sphere)).containsExactly("zeta", "x", "alpha", "colour");
+        assertThat(sphere.getAttribute("x")).isEqualTo("2");
+        assertThat(sphere.hasAttribute("zeta")).as("an attribute spheres do not have, kept in the tree").isFalse();
+        assertThat(sphere.getAttributes().getLength()).isEqualTo(2);
+    }
+
+    @Test
     void malformedXmlStopsTheParseButKeepsTheElementsBeforeIt() {
         String xml = "<scene>\n<sphere colour='#FF0000'/>\n<ambient-light colour='#000000'>\n</scene>\n";
 

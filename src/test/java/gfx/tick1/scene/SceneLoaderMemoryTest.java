@@ -7,6 +7,8 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -55,29 +57,69 @@ class SceneLoaderMemoryTest {
         return scene;
     }
 
-    @Test
-    void theLargestLegalScenesLoadInOneGibibyteOfHeap() throws Exception {
-        Path elements = sceneAtTheElementLimit();
-        Path bytes = sceneAtTheSizeLimit();
-        Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                HEAP, "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"), Load.class.getName(),
-                elements.toString(), bytes.toString())
-                .redirectErrorStream(true).start();
-        String output = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        assertThat(process.waitFor(5, TimeUnit.MINUTES)).as("the loads finished").isTrue();
-
-        assertThat(process.exitValue()).as("exit status of loading both scenes with %s; it printed:%n%s", HEAP, output)
-                .isZero();
-        assertThat(output).contains("most-elements.xml: " + (SceneLoader.MAX_ELEMENTS - 2) + " spheres")
-                .contains("most-bytes.xml: ");
+    /**
+     * A file of the largest size allowed, of spheres with as many short attributes the format does
+     * not have as fit: the most attributes a legal file can hold, each one only a warning.
+     */
+    private Path sceneOfShortUnknownAttributes() throws IOException {
+        Path scene = dir.resolve("most-attributes.xml");
+        StringBuilder attributes = new StringBuilder();
+        for (int i = 0; i < 60; i++) {
+            attributes.append(" q").append(i).append("='1'");
+        }
+        String sphere = "<sphere z='5' colour='#FF0000'" + attributes + "/>\n";
+        long spheres = Math.min(SceneLoader.MAX_ELEMENTS - 3, (SceneLoader.MAX_FILE_BYTES - 100) / sphere.length());
+        try (BufferedWriter out = Files.newBufferedWriter(scene, StandardCharsets.UTF_8)) {
+            out.write("<scene>\n<point-light colour='#FFFFFF'/>\n");
+            for (long i = 0; i < spheres; i++) {
+                out.write(sphere);
+            }
+            out.write("</scene>\n");
+        }
+        assertThat(Files.size(scene)).isLessThanOrEqualTo(SceneLoader.MAX_FILE_BYTES);
+        return scene;
     }
 
-    /** The other JVM of the test above: loads each scene in turn. */
+    /** Loads each scene in a JVM with {@code heap}, and returns what it printed; it must exit 0. */
+    private String loadInAnotherJvm(String heap, Path... scenes) throws Exception {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                heap, "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"), Load.class.getName()));
+        for (Path scene : scenes) {
+            command.add(scene.toString());
+        }
+        Path output = dir.resolve("output.txt");
+        Process process = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(output.toFile()).start();
+        boolean finished = process.waitFor(5, TimeUnit.MINUTES);
+        if (!finished) {
+            process.destroyForcibly().waitFor();
+        }
+        String printed = Files.readString(output, StandardCharsets.UTF_8);
+        assertThat(finished).as("the loads finished within 5 minutes; so far the JVM printed:%n%s", printed).isTrue();
+        assertThat(process.exitValue()).as("exit status of loading the scenes with %s; it printed:%n%s", heap, printed)
+                .isZero();
+        return printed;
+    }
+
+    @Test
+    void theLargestLegalScenesLoadInOneGibibyteOfHeap() throws Exception {
+        String printed = loadInAnotherJvm(HEAP, sceneAtTheElementLimit(), sceneAtTheSizeLimit(),
+                sceneOfShortUnknownAttributes());
+
+        assertThat(printed).contains("most-elements.xml: " + (SceneLoader.MAX_ELEMENTS - 2) + " spheres")
+                .containsPattern("most-bytes.xml: [0-9]+ spheres")
+                .containsPattern("most-attributes.xml: [0-9]+ spheres");
+    }
+
+    /** The other JVM of the test above: loads each scene in turn, saying how many spheres or why not. */
     static final class Load {
         public static void main(String[] args) {
             for (String file : args) {
-                Scene scene = new SceneLoader(Path.of(file), false).getScene();
-                System.out.println(Path.of(file).getFileName() + ": " + scene.getObjects().size() + " spheres");
+                try {
+                    Scene scene = new SceneLoader(Path.of(file), false).getScene();
+                    System.out.println(Path.of(file).getFileName() + ": " + scene.getObjects().size() + " spheres");
+                } catch (SceneException e) {
+                    System.out.println(e.getMessage());
+                }
             }
         }
     }

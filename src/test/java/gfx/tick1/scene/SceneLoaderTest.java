@@ -160,6 +160,16 @@ class SceneLoaderTest {
     }
 
     @Test
+    void anUnknownAttributeAfterAValueHoldingAGreaterThanSignIsNamedWhereItIs() throws IOException {
+        Path path = file("<scene><point-light colour='#FFFFFF'/>\n  <sphere colour='#FF0000' note='a>b' zeta='1'/></scene>");
+        assertThat(new SceneLoader(path, false).getWarnings()).extracting(w -> w.replace(path.toString(), ""))
+                .containsExactly(":2:28: warning: sphere attribute \"note\": not part of Tick 1 scenes, ignored "
+                                + "(expected colour, radius, x, y, z)",
+                        ":2:39: warning: sphere attribute \"zeta\": not part of Tick 1 scenes, ignored "
+                                + "(expected colour, radius, x, y, z)");
+    }
+
+    @Test
     void aProblemBeforeMalformedXmlIsTheOneReported() throws IOException {
         assertThat(errorFor("<scene>\n<sphere radius='-1' colour='#FF0000'/>\n<sphere colour='#FF0000'>\n"))
                 .isEqualTo("scene.xml:2:9: sphere radius \"-1\": must be a number greater than 0");
