@@ -29,6 +29,8 @@ import javax.tools.ToolProvider;
  * Compiles a student's {@code Sphere.java} and {@code Renderer.java} with the starter kit's other
  * classes, in memory, through the JDK's own compiler (javax.tools): no files but the student's are
  * read and nothing is written. Errors carry the student's own file names and line numbers.
+ * {@code grade} runs it inside the sandbox, where it must not need anything but the JDK and
+ * {@link StudentFile}: the starter kit is read only by {@link #compile(Path, Path)}.
  */
 public final class StudentCompiler {
 
@@ -59,21 +61,28 @@ public final class StudentCompiler {
     }
 
     /**
-     * Compiles the student's two files. {@code sphere} and {@code renderer} are read as UTF-8;
-     * errors name them as given.
+     * Compiles the student's two files in this JVM. {@code sphere} and {@code renderer} are read
+     * as {@link StudentFile} reads them; errors name them as given.
      */
     public Result compile(Path sphere, Path renderer) throws IOException, NoCompilerException {
+        List<Source> sources = new ArrayList<>();
+        sources.add(new Source("Sphere", sphere.toString(), StudentFile.read(sphere)));
+        sources.add(new Source("Renderer", renderer.toString(), StudentFile.read(renderer)));
+        for (String given : StarterKit.GIVEN_CLASSES) {
+            sources.add(new Source(given, "starter code " + given + ".java", StarterKit.source(given)));
+        }
+        return compile(sources);
+    }
+
+    /**
+     * Compiles the given sources of package gfx.tick1 with nothing on the class path. This method
+     * needs only the JDK: {@code grade} runs it inside the sandbox, through {@link StudentHarness}.
+     */
+    public Result compile(List<Source> sources) throws IOException, NoCompilerException {
         JavaCompiler compiler = ToolProvider.getSystemJavaCompiler();
         if (compiler == null) {
             throw new NoCompilerException();
         }
-        List<JavaFileObject> sources = new ArrayList<>();
-        sources.add(new Source("Sphere", sphere.toString(), Files.readString(sphere, StandardCharsets.UTF_8)));
-        sources.add(new Source("Renderer", renderer.toString(), Files.readString(renderer, StandardCharsets.UTF_8)));
-        for (String given : StarterKit.GIVEN_CLASSES) {
-            sources.add(new Source(given, "starter code " + given + ".java", StarterKit.source(given)));
-        }
-
         DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
         Map<String, byte[]> classes = new TreeMap<>();
         StandardJavaFileManager standard = compiler.getStandardFileManager(diagnostics, Locale.ROOT, StandardCharsets.UTF_8);
@@ -119,12 +128,13 @@ public final class StudentCompiler {
     }
 
     /** A source held in memory under the name to report it by. */
-    private static final class Source extends SimpleJavaFileObject {
+    public static final class Source extends SimpleJavaFileObject {
         private final String className;
         private final String displayName;
         private final String code;
 
-        Source(String className, String displayName, String code) {
+        /** The source of public class {@code className} of gfx.tick1, reported as {@code displayName}. */
+        public Source(String className, String displayName, String code) {
             super(URI.create("memory:///gfx/tick1/" + className + ".java"), Kind.SOURCE);
             this.className = className;
             this.displayName = displayName;

@@ -1,0 +1,185 @@
+package gfx.tick1.grade;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Where {@code grade} runs the student's code: a bubblewrap sandbox (Debian's {@code bubblewrap}
+ * package, the sandbox Flatpak uses). Inside it the student's process
+ *
+ * <ul>
+ *   <li>runs as an unprivileged user of its own when {@code grade} runs as root (through
+ *       {@code setpriv}), with no capabilities and no way to gain any;
+ *   <li>sees a read-only system ({@code /usr} and the JDK's configuration), the folders
+ *       {@code grade} binds in (read-only but for its output folder) and nothing else: no home
+ *       folder, no {@code /tmp}, no other process;
+ *   <li>has no network (a network namespace with nothing in it, not even the host's loopback),
+ *       an empty environment, and a session and PID namespace of its own, so that it cannot
+ *       type into the grader's terminal and everything it starts dies with it
+ *       ({@code --die-with-parent});
+ *   <li>has limits ({@code prlimit}) on CPU seconds, address space, file size, open files and,
+ *       under its own user, processes.
+ * </ul>
+ *
+ * {@link #unconfined()} is {@code --no-sandbox}: the same command, none of the above.
+ */
+final class Sandbox {
+
+    /** The package that provides {@code bwrap}, for the message when it is missing. */
+    static final String PACKAGE = "bubblewrap";
+
+    private static final Path BWRAP = Path.of("/usr/bin/bwrap");
+    private static final Path SETPRIV = Path.of("/usr/bin/setpriv");
+    private static final Path PRLIMIT = Path.of("/usr/bin/prlimit");
+    /** The JDK's configuration files, which java.home links to on Debian. */
+    private static final Path JAVA_CONFIG = Path.of("/etc/java-17-openjdk");
+
+    /** The most files the student's process may write, each at most this big (RLIMIT_FSIZE). */
+    static final long FILE_SIZE_LIMIT = 64L << 20;
+    private static final int OPEN_FILES_LIMIT = 256;
+    /** Threads count as processes: the JVM needs about 20; the student's code one. */
+    private static final int PROCESSES_LIMIT = 96;
+
+    /** A folder of the grader's, bound into the sandbox at {@code inside}, writable or not. */
+    record Bind(Path outside, String inside, boolean writable) {
+    }
+
+    private final boolean confined;
+    /** The user the student's code runs as when the grader is root; -1 to keep the grader's. */
+    private final int uid;
+
+    private Sandbox(boolean confined, int uid) {
+        this.confined = confined;
+        this.uid = uid;
+    }
+
+    /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
+    static Sandbox unconfined() {
+        return new Sandbox(false, -1);
+    }
+
+    /**
+     * The bubblewrap sandbox, after checking that it can be made here.
+     *
+     * @throws Unavailable when bubblewrap is missing or cannot create namespaces
+     */
+    static Sandbox confined() throws Unavailable, InterruptedException {
+        if (!Files.isExecutable(BWRAP) || !Files.isExecutable(PRLIMIT)) {
+            throw new Unavailable("bubblewrap is not installed");
+        }
+        boolean root;
+        try {
+            root = Integer.valueOf(0).equals(Files.getAttribute(Path.of("/proc/self"), "unix:uid"))
+                    && Files.isExecutable(SETPRIV);
+        } catch (IOException | UnsupportedOperationException e) {
+            throw new Unavailable("cannot tell which user this is (" + e.getMessage() + ")");
+        }
+        // A user of its own for each grade running at the same time: the grader's process id is unique.
+        Sandbox sandbox = new Sandbox(true, root ? 100_000 + (int) (ProcessHandle.current().pid() % 50_000) : -1);
+        sandbox.probe();
+        return sandbox;
+    }
+
+    /** Why the sandbox cannot be made. */
+    static final class Unavailable extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        Unavailable(String reason) {
+            super(reason);
+        }
+    }
+
+    boolean isConfined() {
+        return confined;
+    }
+
+    /**
+     * Makes {@code folder} readable (or, if {@code writable}, owned) by the user the student's code
+     * runs as, and no one else. Does nothing when that user is the grader.
+     */
+    void share(Path folder, boolean writable) throws IOException {
+        if (uid < 0) {
+            return;
+        }
+        try (var files = Files.walk(folder)) {
+            for (Path file : files.toList()) {
+                if (writable) {
+                    Files.setAttribute(file, "unix:uid", uid);
+                }
+                Files.setAttribute(file, "unix:gid", uid);
+                Files.setAttribute(file, "unix:mode", Files.isDirectory(file) ? 0750 : 0640);
+            }
+        }
+    }
+
+    /**
+     * The command that runs {@code command} inside the sandbox, with {@code binds}, at most
+     * {@code cpuSeconds} of processor time and {@code addressSpaceMiB} of address space.
+     */
+    List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB) {
+        if (!confined) {
+            return command;
+        }
+        List<String> wrapped = new ArrayList<>();
+        if (uid >= 0) {
+            wrapped.addAll(List.of(SETPRIV.toString(), "--reuid=" + uid, "--regid=" + uid, "--clear-groups",
+                    "--inh-caps=-all", "--bounding-set=-all", "--no-new-privs"));
+        }
+        wrapped.addAll(List.of(PRLIMIT.toString(),
+                "--cpu=" + cpuSeconds,
+                "--as=" + (addressSpaceMiB << 20),
+                "--fsize=" + FILE_SIZE_LIMIT,
+                "--nofile=" + OPEN_FILES_LIMIT,
+                "--core=0"));
+        if (uid >= 0) {
+            // RLIMIT_NPROC counts every process of the user: only meaningful for a user of its own.
+            wrapped.add("--nproc=" + PROCESSES_LIMIT);
+        }
+        wrapped.addAll(List.of("--", BWRAP.toString(),
+                "--unshare-all", "--unshare-user", "--disable-userns",
+                "--die-with-parent", "--new-session", "--cap-drop", "ALL",
+                "--clearenv", "--setenv", "PATH", "/usr/bin", "--setenv", "LANG", "C.UTF-8",
+                "--setenv", "MALLOC_ARENA_MAX", "2",
+                "--ro-bind", "/usr", "/usr",
+                "--symlink", "usr/bin", "/bin", "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64", "/lib64"));
+        if (Files.isDirectory(JAVA_CONFIG)) {
+            wrapped.addAll(List.of("--ro-bind", JAVA_CONFIG.toString(), JAVA_CONFIG.toString()));
+        }
+        Path javaHome = Path.of(System.getProperty("java.home")).toAbsolutePath();
+        if (!javaHome.startsWith("/usr")) {
+            wrapped.addAll(List.of("--ro-bind", javaHome.toString(), javaHome.toString()));
+        }
+        wrapped.addAll(List.of("--proc", "/proc", "--dev", "/dev"));
+        for (Bind bind : binds) {
+            wrapped.addAll(List.of(bind.writable() ? "--bind" : "--ro-bind", bind.outside().toString(), bind.inside()));
+        }
+        wrapped.addAll(List.of("--chdir", "/", "--"));
+        wrapped.addAll(command);
+        return wrapped;
+    }
+
+    /** Runs {@code true} in the sandbox: bubblewrap may be installed where namespaces are not allowed. */
+    private void probe() throws Unavailable, InterruptedException {
+        try {
+            Process process = new ProcessBuilder(wrap(List.of("/usr/bin/true"), List.of(), 5, 256))
+                    .redirectErrorStream(true).start();
+            process.getOutputStream().close();
+            byte[] said = process.getInputStream().readNBytes(4096);
+            if (!process.waitFor(10, TimeUnit.SECONDS)) {
+                process.destroyForcibly();
+                throw new Unavailable("bubblewrap did not start");
+            }
+            if (process.exitValue() != 0) {
+                String why = ChildOutput.printable(new String(said, java.nio.charset.StandardCharsets.UTF_8)).strip();
+                throw new Unavailable("bubblewrap cannot create a sandbox here"
+                        + (why.isEmpty() ? "" : " (" + why.lines().findFirst().orElse("") + ")"));
+            }
+        } catch (IOException e) {
+            throw new Unavailable("bubblewrap cannot be started: " + e.getMessage());
+        }
+    }
+}
