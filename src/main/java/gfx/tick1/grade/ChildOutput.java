@@ -89,9 +89,6 @@ final class ChildOutput {
         // Stored (uncompressed) deflate blocks, filter bytes and chunk headers add a little to the raw 4 bytes a pixel.
         long cap = 4L * width * height + 5L * height + 64 * 1024;
         byte[] bytes = read(file, (int) Math.min(Integer.MAX_VALUE - 16, cap + 1));
-        if (bytes.length > cap) {
-            throw new Unusable("the image file is larger than any " + width + " x " + height + " PNG");
-        }
         // The signature, then the IHDR chunk: length (4), "IHDR" (4), width (4), height (4).
         if (bytes.length < 24 || !Arrays.equals(bytes, 0, 8, PNG_SIGNATURE, 0, 8)
                 || !new String(bytes, 12, 4, StandardCharsets.ISO_8859_1).equals("IHDR")) {
@@ -101,6 +98,9 @@ final class ChildOutput {
         long pngHeight = ByteBuffer.wrap(bytes, 20, 4).getInt() & 0xFFFFFFFFL;
         if (pngWidth != width || pngHeight != height) {
             throw new Unusable("the image is " + pngWidth + " x " + pngHeight + ", expected " + width + " x " + height);
+        }
+        if (bytes.length > cap) {
+            throw new Unusable("the image file is larger than any " + width + " x " + height + " PNG");
         }
         BufferedImage image;
         try {

@@ -4,6 +4,7 @@ import gfx.tick1.starter.StarterKit;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.io.StringWriter;
 import java.net.URI;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -51,6 +52,9 @@ public final class StudentCompiler {
         }
     }
 
+    /** The one error when the compiler itself ran out of memory (a source can make it need any amount). */
+    public static final String OUT_OF_MEMORY = "the compiler ran out of memory";
+
     /** No JDK compiler here (a JRE, or a stripped runtime). */
     public static final class NoCompilerException extends Exception {
         private static final long serialVersionUID = 1L;
@@ -91,7 +95,9 @@ public final class StudentCompiler {
         standard.setLocation(StandardLocation.CLASS_PATH, List.of());
         try (JavaFileManager files = new InMemoryOutput(standard, classes)) {
             List<String> options = List.of("-proc:none", "-Xlint:none", "-nowarn", "-g");
-            Boolean ok = compiler.getTask(null, files, diagnostics, options, null, sources).call();
+            // What javac prints outside diagnostics: a crash, such as running out of memory.
+            StringWriter said = new StringWriter();
+            Boolean ok = compiler.getTask(said, files, diagnostics, options, null, sources).call();
             List<String> errors = new ArrayList<>();
             for (Diagnostic<? extends JavaFileObject> d : diagnostics.getDiagnostics()) {
                 if (d.getKind() == Diagnostic.Kind.ERROR) {
@@ -99,7 +105,8 @@ public final class StudentCompiler {
                 }
             }
             if (!ok && errors.isEmpty()) {
-                errors.add("the compiler failed without saying why");
+                errors.add(said.toString().contains("OutOfMemoryError") ? OUT_OF_MEMORY
+                        : "the compiler failed without saying why");
             }
             return errors.isEmpty() ? new Result(classes, List.of()) : new Result(Map.of(), errors);
         }

@@ -39,7 +39,7 @@ public final class StudentHarness {
     static final String ERRORS_FILE = "errors";
     static final String CLASSES_FOLDER = "classes";
     /** Exit status of {@code compile} when the code does not compile. */
-    static final int DOES_NOT_COMPILE = 1;
+    static final int DOES_NOT_COMPILE = 3;
 
     private StudentHarness() {
     }

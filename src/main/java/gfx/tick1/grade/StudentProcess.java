@@ -87,14 +87,22 @@ public final class StudentProcess {
         if (run.exitStatus() == StudentHarness.DOES_NOT_COMPILE) {
             byte[] errors = ChildOutput.read(output.resolve(StudentHarness.ERRORS_FILE), ChildOutput.TEXT_CAP);
             if (errors != null && errors.length > 0) {
-                return new Compiled(Arrays.stream(new String(errors, StandardCharsets.UTF_8).split("\0"))
-                        .map(ChildOutput::printable).toList(), null);
+                List<String> list = Arrays.stream(new String(errors, StandardCharsets.UTF_8).split("\0"))
+                        .map(ChildOutput::printable).toList();
+                return list.equals(List.of(StudentCompiler.OUT_OF_MEMORY))
+                        ? new Compiled(List.of(), StudentCompiler.OUT_OF_MEMORY + " (its heap limit is "
+                                + Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES) + " MiB)")
+                        : new Compiled(list, null);
             }
+        }
+        if (run.outputTail().contains("OutOfMemoryError")) {
+            return new Compiled(List.of(), StudentCompiler.OUT_OF_MEMORY + " (its heap limit is "
+                    + Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES) + " MiB)");
         }
         if (run.exitStatus() != 0 || !ChildOutput.isDirectory(output.resolve(StudentHarness.CLASSES_FOLDER))) {
             String said = run.outputTail().strip();
             return new Compiled(List.of(), "the compiler stopped with exit status " + run.exitStatus()
-                    + (said.contains("OutOfMemoryError") ? " (out of memory)" : ""));
+                    + (said.isEmpty() ? "" : ": " + said.lines().reduce((first, last) -> last).orElse("")));
         }
         return new Compiled(List.of(), null);
     }
@@ -112,10 +120,13 @@ public final class StudentProcess {
                 new Bind(output, OUTPUT, true)), timeLimit, memoryMegabytes);
 
         String progressText = ChildOutput.readText(output.resolve(StudentHarness.PROGRESS_FILE));
-        List<String> progress = progressText == null ? List.of() : progressText.lines().toList();
         List<Outcome> outcomes = new ArrayList<>();
         for (int i = 0; i < sceneFiles.size(); i++) {
-            outcomes.add(outcome(output, i, progress, run, width, height, timeLimit));
+            outcomes.add(progressText == null && run.finished() && run.exitStatus() == 0
+                    ? new Outcome.Failed("no image: the log of the run's progress is missing or is not a regular file "
+                            + "(did the code remove or replace it?)")
+                    : outcome(output, i, progressText == null ? List.of() : progressText.lines().toList(), run,
+                            width, height, timeLimit));
         }
         return new Result(outcomes, run.outputTail());
     }
@@ -227,12 +238,15 @@ public final class StudentProcess {
                 return new Outcome.Failed("the image written for this scene is unusable: " + e.getMessage());
             }
         }
-        if (!progress.contains("start " + index)) {
-            return new Outcome.Failed("not rendered: the run stopped at an earlier scene");
-        }
         if (!run.finished()) {
+            if (!progress.contains("start " + index) && index > 0) {
+                return new Outcome.Failed("not rendered: the time limit was reached at an earlier scene");
+            }
             return new Outcome.Failed("no image within the time limit of " + describe(timeLimit)
                     + " (an infinite loop?); the program was stopped");
+        }
+        if (!progress.contains("start " + index)) {
+            return new Outcome.Failed("not rendered: the run stopped at an earlier scene");
         }
         int exitStatus = run.exitStatus();
         return new Outcome.Failed("the program ended while rendering this scene, with exit status " + exitStatus
