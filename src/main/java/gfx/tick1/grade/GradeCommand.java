@@ -248,7 +248,8 @@ public final class GradeCommand implements Callable<Integer> {
             }
             String folder = hidden ? "hidden" : "public";
             StudentProcess.Result result = process.render(classes, work.resolve(folder + "-scenes"),
-                    sceneFiles(batch.size()), childFolder(work, folder + "-output", sandbox), width, height, left);
+                    sceneFiles(batch.size()), childFolder(work, folder + "-output", sandbox), width, height, left,
+                    timeLimit());
             outcomes.addAll(result.outcomes());
             if (!hidden) {
                 publicOutput = result.outputTail();

@@ -109,15 +109,16 @@ public final class StudentProcess {
 
     /**
      * Renders each scene with the compiled classes in {@code classes}; {@code output} is an empty
-     * folder for the child's images and logs.
+     * folder for the child's images and logs. The run may take {@code timeLeft}, what is left of
+     * the grade's {@code timeLimit}.
      */
     Result render(Path classes, Path scenes, List<String> sceneFiles, Path output, int width, int height,
-            Duration timeLimit) throws IOException, InterruptedException {
+            Duration timeLeft, Duration timeLimit) throws IOException, InterruptedException {
         List<String> arguments = new ArrayList<>(List.of("render", CLASSES, OUTPUT,
                 Integer.toString(width), Integer.toString(height)));
         sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
         Run run = run(arguments, List.of(new Bind(classes, CLASSES, false), new Bind(scenes, SCENES, false),
-                new Bind(output, OUTPUT, true)), timeLimit, memoryMegabytes);
+                new Bind(output, OUTPUT, true)), timeLeft, memoryMegabytes);
 
         String progressText = ChildOutput.readText(output.resolve(StudentHarness.PROGRESS_FILE));
         List<Outcome> outcomes = new ArrayList<>();
