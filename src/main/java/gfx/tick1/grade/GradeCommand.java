@@ -322,11 +322,12 @@ public final class GradeCommand implements Callable<Integer> {
                 && ImageDifference.between(handout, robust).differingPixels() == 0;
         if (toHandout != null && toHandout.differingPixels() == 0 || toRobust != null && toRobust.differingPixels() == 0) {
             String which = handout == null || robust == null || referencesAgree ? "the reference"
-                    : toHandout.differingPixels() == 0
-                    ? "the handout-arithmetic reference; the robust reference differs on this scene"
-                    : "the robust reference; the handout-arithmetic reference differs on this scene";
+                    : toHandout.differingPixels() == 0 ? "the handout-arithmetic reference" : "the robust reference";
+            String other = handout == null || robust == null || referencesAgree ? ""
+                    : toHandout.differingPixels() == 0 ? "; the robust reference differs on this scene"
+                    : "; the handout-arithmetic reference differs on this scene";
             out.println(grading.name() + ": PASS (identical to " + which + ", "
-                    + (toHandout != null ? toHandout : toRobust).totalPixels() + " pixels)");
+                    + (toHandout != null ? toHandout : toRobust).totalPixels() + " pixels" + other + ")");
             return true;
         }
         // Explain against the closer reference.

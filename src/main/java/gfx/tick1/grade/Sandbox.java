@@ -32,7 +32,8 @@ final class Sandbox {
     /** The package that provides {@code bwrap}, for the message when it is missing. */
     static final String PACKAGE = "bubblewrap";
 
-    private static final Path BWRAP = Path.of("/usr/bin/bwrap");
+    /** Debian's bwrap; the system property tick1.grade.bwrap names another (the tests name a missing one). */
+    private static final String BWRAP_PROPERTY = "tick1.grade.bwrap";
     private static final Path SETPRIV = Path.of("/usr/bin/setpriv");
     private static final Path PRLIMIT = Path.of("/usr/bin/prlimit");
     /** The JDK's configuration files, which java.home links to on Debian. */
@@ -48,18 +49,20 @@ final class Sandbox {
     record Bind(Path outside, String inside, boolean writable) {
     }
 
+    private final Path bwrap;
     private final boolean confined;
     /** The user the student's code runs as when the grader is root; -1 to keep the grader's. */
     private final int uid;
 
-    private Sandbox(boolean confined, int uid) {
+    private Sandbox(Path bwrap, boolean confined, int uid) {
+        this.bwrap = bwrap;
         this.confined = confined;
         this.uid = uid;
     }
 
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
     static Sandbox unconfined() {
-        return new Sandbox(false, -1);
+        return new Sandbox(null, false, -1);
     }
 
     /**
@@ -68,7 +71,8 @@ final class Sandbox {
      * @throws Unavailable when bubblewrap is missing or cannot create namespaces
      */
     static Sandbox confined() throws Unavailable, InterruptedException {
-        if (!Files.isExecutable(BWRAP) || !Files.isExecutable(PRLIMIT)) {
+        Path bwrap = Path.of(System.getProperty(BWRAP_PROPERTY, "/usr/bin/bwrap"));
+        if (!Files.isExecutable(bwrap) || !Files.isExecutable(PRLIMIT)) {
             throw new Unavailable("bubblewrap is not installed");
         }
         boolean root;
@@ -79,7 +83,7 @@ final class Sandbox {
             throw new Unavailable("cannot tell which user this is (" + e.getMessage() + ")");
         }
         // A user of its own for each grade running at the same time: the grader's process id is unique.
-        Sandbox sandbox = new Sandbox(true, root ? 100_000 + (int) (ProcessHandle.current().pid() % 50_000) : -1);
+        Sandbox sandbox = new Sandbox(bwrap, true, root ? 100_000 + (int) (ProcessHandle.current().pid() % 50_000) : -1);
         sandbox.probe();
         return sandbox;
     }
@@ -139,7 +143,7 @@ final class Sandbox {
             // RLIMIT_NPROC counts every process of the user: only meaningful for a user of its own.
             wrapped.add("--nproc=" + PROCESSES_LIMIT);
         }
-        wrapped.addAll(List.of("--", BWRAP.toString(),
+        wrapped.addAll(List.of("--", bwrap.toString(),
                 "--unshare-all", "--unshare-user", "--disable-userns",
                 "--die-with-parent", "--new-session", "--cap-drop", "ALL",
                 "--clearenv", "--setenv", "PATH", "/usr/bin", "--setenv", "LANG", "C.UTF-8",
