@@ -22,7 +22,7 @@ import java.util.concurrent.TimeUnit;
  *       type into the grader's terminal and everything it starts dies with it
  *       ({@code --die-with-parent});
  *   <li>has limits ({@code prlimit}) on CPU seconds, address space, file size, open files and,
- *       under its own user, processes.
+ *       under its own user, processes; the student's code runs on one core ({@code taskset}).
  * </ul>
  *
  * {@link #unconfined()} is {@code --no-sandbox}: the same command, none of the above.
@@ -36,6 +36,7 @@ final class Sandbox {
     private static final String BWRAP_PROPERTY = "tick1.grade.bwrap";
     private static final Path SETPRIV = Path.of("/usr/bin/setpriv");
     private static final Path PRLIMIT = Path.of("/usr/bin/prlimit");
+    private static final Path TASKSET = Path.of("/usr/bin/taskset");
     /** The JDK's configuration files, which java.home links to on Debian. */
     private static final Path JAVA_CONFIG = Path.of("/etc/java-17-openjdk");
 
@@ -122,13 +123,18 @@ final class Sandbox {
 
     /**
      * The command that runs {@code command} inside the sandbox, with {@code binds}, at most
-     * {@code cpuSeconds} of processor time and {@code addressSpaceMiB} of address space.
+     * {@code cpuSeconds} of processor time and {@code addressSpaceMiB} of address space, and, if
+     * {@code oneCore}, on one processor core only.
      */
-    List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB) {
+    List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB, boolean oneCore) {
         if (!confined) {
             return command;
         }
         List<String> wrapped = new ArrayList<>();
+        String core = oneCore ? oneAllowedCore() : null;
+        if (core != null) {
+            wrapped.addAll(List.of(TASKSET.toString(), "--cpu-list", core));
+        }
         if (uid >= 0) {
             wrapped.addAll(List.of(SETPRIV.toString(), "--reuid=" + uid, "--regid=" + uid, "--clear-groups",
                     "--inh-caps=-all", "--bounding-set=-all", "--no-new-privs"));
@@ -166,10 +172,39 @@ final class Sandbox {
         return wrapped;
     }
 
+    /**
+     * One of the cores this process may run on (from /proc/self/status), chosen by the process id
+     * so that grades running at the same time spread over the cores; null if that cannot be told.
+     */
+    private static String oneAllowedCore() {
+        if (!Files.isExecutable(TASKSET)) {
+            return null;
+        }
+        try {
+            for (String line : Files.readAllLines(Path.of("/proc/self/status"))) {
+                if (line.startsWith("Cpus_allowed_list:")) {
+                    List<Integer> cores = new ArrayList<>();
+                    for (String range : line.substring(line.indexOf(':') + 1).strip().split(",")) {
+                        String[] ends = range.split("-");
+                        int first = Integer.parseInt(ends[0]), last = Integer.parseInt(ends[ends.length - 1]);
+                        for (int core = first; core <= last && cores.size() < 4096; core++) {
+                            cores.add(core);
+                        }
+                    }
+                    return cores.isEmpty() ? null
+                            : Integer.toString(cores.get((int) (ProcessHandle.current().pid() % cores.size())));
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // No pinning: the CPU-seconds limit still holds.
+        }
+        return null;
+    }
+
     /** Runs {@code true} in the sandbox: bubblewrap may be installed where namespaces are not allowed. */
     private void probe() throws Unavailable, InterruptedException {
         try {
-            Process process = new ProcessBuilder(wrap(List.of("/usr/bin/true"), List.of(), 5, 256))
+            Process process = new ProcessBuilder(wrap(List.of("/usr/bin/true"), List.of(), 5, 256, false))
                     .redirectErrorStream(true).start();
             process.getOutputStream().close();
             byte[] said = process.getInputStream().readNBytes(4096);

@@ -80,7 +80,7 @@ public final class StudentProcess {
             throws IOException, InterruptedException {
         Run run = run(List.of("compile", SOURCES, OUTPUT, sphereName, rendererName),
                 List.of(new Bind(sources, SOURCES, false), new Bind(output, OUTPUT, true)),
-                timeLimit, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES));
+                timeLimit, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false);
         if (!run.finished()) {
             return new Compiled(List.of(), "the compiler did not finish within the time limit of " + describe(timeLimit));
         }
@@ -118,7 +118,7 @@ public final class StudentProcess {
                 Integer.toString(width), Integer.toString(height)));
         sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
         Run run = run(arguments, List.of(new Bind(classes, CLASSES, false), new Bind(scenes, SCENES, false),
-                new Bind(output, OUTPUT, true)), timeLeft, memoryMegabytes);
+                new Bind(output, OUTPUT, true)), timeLeft, memoryMegabytes, true);
 
         String progressText = ChildOutput.readText(output.resolve(StudentHarness.PROGRESS_FILE));
         List<Outcome> outcomes = new ArrayList<>();
@@ -161,8 +161,9 @@ public final class StudentProcess {
         }
     }
 
-    private Run run(List<String> harnessArguments, List<Bind> binds, Duration timeLimit, int heapMegabytes)
-            throws IOException, InterruptedException {
+    /** Runs the harness; {@code studentCode} when it runs the student's code (on one core), not only javac. */
+    private Run run(List<String> harnessArguments, List<Bind> binds, Duration timeLimit, int heapMegabytes,
+            boolean studentCode) throws IOException, InterruptedException {
         Path inside = sandbox.isConfined() ? Path.of(HARNESS) : harness;
         List<String> command = new ArrayList<>(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
@@ -196,7 +197,7 @@ public final class StudentProcess {
         allBinds.add(new Bind(harness, HARNESS, false));
         int cpuSeconds = (int) Math.ceil(timeLimit.toMillis() / 1000.0) + 1;
         Process process = new ProcessBuilder(sandbox.wrap(command, allBinds, cpuSeconds,
-                heapMegabytes + NON_HEAP_MEGABYTES)).redirectErrorStream(true).start();
+                heapMegabytes + NON_HEAP_MEGABYTES, studentCode)).redirectErrorStream(true).start();
         running = process;
         try {
             process.getOutputStream().close();

@@ -217,10 +217,10 @@ class GradeAttackTest {
     }
 
     @Test
-    void threadsAndNativeMemoryAreLimited() throws Exception {
+    void threadsCoresAndNativeMemoryAreLimited() throws Exception {
         Grade grade = grade("exceed-limits", "--memory", "64");
         assertFailedAndHarmedNothing(grade);
-        assertThat(grade.output()).contains("stopped at").contains("threads")
+        assertThat(grade.output()).contains("stopped at").contains("threads, on 1 cores")
                 .doesNotContain("allocated 2200 MiB");
     }
 

@@ -5,7 +5,7 @@ import java.lang.reflect.Field;
 import java.util.ArrayList;
 import java.util.List;
 
-/** Starts thousands of threads, then allocates gigabytes of native memory outside the Java heap. */
+/** Starts thousands of threads (to use every core), then allocates gigabytes of native memory outside the Java heap. */
 public class Renderer {
 
     public Renderer(int width, int height) {
@@ -37,7 +37,8 @@ public class Renderer {
                 threads.add(thread);
             }
         } catch (Throwable e) {
-            System.out.println("stopped at " + threads.size() + " threads: " + e);
+            System.out.println("stopped at " + threads.size() + " threads, on "
+                    + Runtime.getRuntime().availableProcessors() + " cores: " + e);
         }
         threads.forEach(Thread::interrupt);
         Field field = Class.forName("sun.misc.Unsafe").getDeclaredField("theUnsafe");
