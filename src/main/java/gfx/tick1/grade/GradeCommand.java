@@ -85,8 +85,8 @@ public final class GradeCommand implements Callable<Integer> {
     private Path reportFolder;
 
     @Option(names = "--time-limit", paramLabel = "SECONDS", defaultValue = "60",
-            description = "How long the student's code may take for all scenes together, Java's start included "
-                    + "(default: ${DEFAULT-VALUE}).")
+            description = "How long the student's code may take for all scenes together, Java's start included; "
+                    + "compiling may take as long again (default: ${DEFAULT-VALUE}).")
     private double timeLimitSeconds;
 
     @Option(names = "--memory", paramLabel = "MiB", defaultValue = "512",

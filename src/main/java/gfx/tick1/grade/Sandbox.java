@@ -46,6 +46,9 @@ final class Sandbox {
     /** Threads count as processes: the JVM needs about 20; the student's code one. */
     private static final int PROCESSES_LIMIT = 96;
 
+    /** The first of the user ids the student's code runs as when the grader is root. */
+    static final int FIRST_UID = 1_900_000_000;
+
     /** A folder of the grader's, bound into the sandbox at {@code inside}, writable or not. */
     record Bind(Path outside, String inside, boolean writable) {
     }
@@ -83,8 +86,9 @@ final class Sandbox {
         } catch (IOException | UnsupportedOperationException e) {
             throw new Unavailable("cannot tell which user this is (" + e.getMessage() + ")");
         }
-        // A user of its own for each grade running at the same time: the grader's process id is unique.
-        Sandbox sandbox = new Sandbox(bwrap, true, root ? 100_000 + (int) (ProcessHandle.current().pid() % 50_000) : -1);
+        // A user of its own for each grade running at the same time (the grader's process id is
+        // unique), far above the ranges of real users and of containers' subordinate ids.
+        Sandbox sandbox = new Sandbox(bwrap, true, root ? FIRST_UID + (int) (ProcessHandle.current().pid() % 1_000_000) : -1);
         sandbox.probe();
         return sandbox;
     }
@@ -163,6 +167,10 @@ final class Sandbox {
         if (!javaHome.startsWith("/usr")) {
             wrapped.addAll(List.of("--ro-bind", javaHome.toString(), javaHome.toString()));
         }
+        // tick1 itself may be installed under /usr: hide it, so that there is no renderer to copy.
+        for (Path folder : ownCodeUnder(Path.of("/usr"), ownCode())) {
+            wrapped.addAll(List.of("--tmpfs", folder.toString()));
+        }
         wrapped.addAll(List.of("--proc", "/proc", "--dev", "/dev"));
         for (Bind bind : binds) {
             wrapped.addAll(List.of(bind.writable() ? "--bind" : "--ro-bind", bind.outside().toString(), bind.inside()));
@@ -170,6 +178,43 @@ final class Sandbox {
         wrapped.addAll(List.of("--chdir", "/", "--"));
         wrapped.addAll(command);
         return wrapped;
+    }
+
+    /** Where this program's own classes and libraries are: its class path and its own jar or folder. */
+    private static List<Path> ownCode() {
+        List<Path> code = new ArrayList<>();
+        for (String entry : System.getProperty("java.class.path", "").split(java.io.File.pathSeparator)) {
+            if (!entry.isEmpty()) {
+                code.add(Path.of(entry));
+            }
+        }
+        try {
+            code.add(Path.of(Sandbox.class.getProtectionDomain().getCodeSource().getLocation().toURI()));
+        } catch (java.net.URISyntaxException | RuntimeException e) {
+            // The class path above is all there is to hide.
+        }
+        return code;
+    }
+
+    /**
+     * The folders holding {@code code} (jars: the folder they are in; class folders: themselves)
+     * that lie inside {@code system}, the part of the file system the sandbox shows.
+     */
+    static List<Path> ownCodeUnder(Path system, List<Path> code) {
+        List<Path> folders = new ArrayList<>();
+        for (Path entry : code) {
+            Path real;
+            try {
+                real = entry.toRealPath();
+            } catch (IOException e) {
+                continue;
+            }
+            Path folder = Files.isDirectory(real) ? real : real.getParent();
+            if (folder != null && folder.startsWith(system) && !folder.equals(system) && !folders.contains(folder)) {
+                folders.add(folder);
+            }
+        }
+        return folders;
     }
 
     /**

@@ -215,14 +215,24 @@ public final class StudentProcess {
         }
     }
 
-    /** Kills the process and, without a sandbox, what it started; returns when it is gone. */
+    /**
+     * Kills the process and everything it started, and returns when they are gone, so that no
+     * process of the student's can change its output folder while it is read. (In the sandbox the
+     * first of them is the PID namespace's init, which ends only after every other process in it.)
+     */
     private static void kill(Process process) {
-        process.descendants().forEach(ProcessHandle::destroyForcibly);
+        List<ProcessHandle> started = process.descendants().toList();
+        started.forEach(ProcessHandle::destroyForcibly);
         process.destroyForcibly();
         try {
             process.waitFor();
+            for (ProcessHandle handle : started) {
+                handle.onExit().get(10, TimeUnit.SECONDS);
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+            // A process that will not die within seconds of SIGKILL: nothing more to do.
         }
     }
 

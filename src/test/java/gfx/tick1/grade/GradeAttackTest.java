@@ -238,6 +238,35 @@ class GradeAttackTest {
         assertThat(dir.resolve("report").resolve("2-hidden-expected.png")).doesNotExist();
     }
 
+    @Test
+    void sigtermStopsTheStudentsCodeAndDeletesTheWorkFolder() throws Exception {
+        Path student = Files.createDirectories(dir.resolve("looping"));
+        Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
+                "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
+        Process grade = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                GRADER_HEAP, "-cp", System.getProperty("java.class.path"), Tick1.class.getName(), "grade",
+                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
+                "--width", "16", "--height", "12").redirectErrorStream(true)
+                .redirectOutput(dir.resolve("grade.log").toFile()).start();
+        // Wait (at most a minute) for the student's code to be running: its JVM's class path is /harness.
+        for (int i = 0; i < 600 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
+                .contains("StudentHarness render")); i++) {
+            Thread.sleep(100);
+        }
+        assertThat(grade.descendants().map(p -> p.info().commandLine().orElse("")))
+                .as("the student's code is running").anyMatch(line -> line.contains("StudentHarness render"));
+        List<ProcessHandle> running = grade.descendants().toList();
+
+        grade.destroy();   // SIGTERM
+        assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+        for (ProcessHandle process : running) {
+            process.onExit().get(30, TimeUnit.SECONDS);
+        }
+        assertThat(running).as("processes of the student's").noneMatch(ProcessHandle::isAlive);
+        assertThat(workFolders()).as("grade work folders left in the temporary folder")
+                .isSubsetOf(earlierWorkFolders);
+    }
+
     private String resourceOr(String name, String otherwise) throws IOException {
         try (InputStream in = GradeAttackTest.class.getResourceAsStream(name)) {
             if (in == null) {
