@@ -22,7 +22,9 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 import picocli.CommandLine.Command;
@@ -187,6 +189,7 @@ public final class GradeCommand implements Callable<Integer> {
         List<GradingScene> scenes;
         String sphereCode, rendererCode;
         try {
+            sandbox.checkReachable(work);
             scenes = gradingScenes(work);
             sphereCode = StudentFile.read(sphere);
             rendererCode = StudentFile.read(renderer);
@@ -256,6 +259,11 @@ public final class GradeCommand implements Callable<Integer> {
             }
         }
 
+        Map<String, String> sourceTexts = new HashMap<>();
+        sourceTexts.put("Sphere.java", sphereCode);
+        sourceTexts.put("Renderer.java", rendererCode);
+        StarterKit.GIVEN_CLASSES.forEach(given -> sourceTexts.put(given + ".java", StarterKit.source(given)));
+        HiddenScenes hiddenScenes = new HiddenScenes(sourceTexts, classes);
         int failures = 0;
         boolean crashed = false;
         for (int i = 0; i < scenes.size(); i++) {
@@ -264,7 +272,7 @@ public final class GradeCommand implements Callable<Integer> {
             if (outcome instanceof Outcome.Failed failed) {
                 failures++;
                 crashed = true;
-                String reason = scene.hidden() ? HiddenScenes.withoutMessages(failed.reason()) : failed.reason();
+                String reason = scene.hidden() ? hiddenScenes.withoutMessages(failed.reason()) : failed.reason();
                 out.println(scene.name() + ": FAIL: " + indent(reason));
             } else if (!checkImage(i + 1, scene, ((Outcome.Rendered) outcome).image(), out, err)) {
                 failures++;

@@ -107,6 +107,25 @@ final class Sandbox {
     }
 
     /**
+     * Checks that the user the student's code runs as can reach {@code folder} (bubblewrap opens
+     * the folders it binds as that user): every folder above it must let others through.
+     *
+     * @throws IOException saying which folder does not, and what to do
+     */
+    void checkReachable(Path folder) throws IOException {
+        if (uid < 0) {
+            return;
+        }
+        for (Path above = folder.toAbsolutePath().getParent(); above != null; above = above.getParent()) {
+            Object mode = Files.getAttribute(above, "unix:mode");
+            if (mode instanceof Integer bits && (bits & 01) == 0) {
+                throw new IOException(above + ": the sandbox's user cannot pass through this folder to the work "
+                        + "folder; grade with a temporary folder it can reach (JAVA_OPTS=-Djava.io.tmpdir=/tmp)");
+            }
+        }
+    }
+
+    /**
      * Makes {@code folder} readable (or, if {@code writable}, owned) by the user the student's code
      * runs as, and no one else. Does nothing when that user is the grader.
      */

@@ -16,6 +16,7 @@ import java.net.SocketTimeoutException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -49,8 +50,8 @@ class GradeAttackTest {
 
     private String secret;
     private ServerSocket listener;
-    /** The grade work folders there were before the test (other grades may run at the same time). */
-    private List<Path> earlierWorkFolders;
+    /** The graders' temporary folder, where their work folders go: the test's own, as other grades may run. */
+    private Path temporary;
 
     @BeforeAll
     static void theSandboxCanRunHere() throws InterruptedException {
@@ -68,7 +69,10 @@ class GradeAttackTest {
         Files.writeString(VICTIM, VICTIM_TEXT);
         listener = new ServerSocket(LISTENER_PORT, 5, InetAddress.getLoopbackAddress());
         listener.setSoTimeout(200);
-        earlierWorkFolders = workFolders();
+        // The sandbox's user must be able to reach the work folder in it.
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx--x--x")));
     }
 
     @AfterEach
@@ -99,7 +103,7 @@ class GradeAttackTest {
 
     private Grade gradeFiles(Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                GRADER_HEAP, "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"),
+                GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
                 Tick1.class.getName(), "grade", "--sphere", sphere.toString(), "--renderer", renderer.toString(),
                 "--report", dir.resolve("report").toString()));
         command.addAll(List.of(SMALL));
@@ -137,8 +141,7 @@ class GradeAttackTest {
         assertThat(Files.readString(VICTIM)).as("a file outside the work folder").isEqualTo(VICTIM_TEXT);
         assertThat(leaks()).as("files the attack left behind").isEmpty();
         assertThat(listenerHeard()).as("what reached the loopback listener").isEmpty();
-        assertThat(workFolders()).as("grade work folders left in the temporary folder")
-                .isSubsetOf(earlierWorkFolders);
+        assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
         assertThat(processesOf("tick1-attack")).as("processes of the student's left running").isEmpty();
     }
 
@@ -239,12 +242,36 @@ class GradeAttackTest {
     }
 
     @Test
+    void madeUpClassNamesAndStackFramesCannotCarryAHiddenSceneOut() throws Exception {
+        Grade grade = grade("forge-the-stack-trace");
+        assertFailedAndHarmedNothing(grade);
+        String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: FAIL"));
+        assertThat(grade.output()).as("the public scene's report keeps the message").contains("HIDDENLEAK");
+        assertThat(hidden).as("the hidden scene's report").doesNotContain("HIDDENLEAK")
+                .startsWith("hidden.xml: FAIL: the code threw an exception (its message is not shown for a hidden "
+                        + "scene)\n    at gfx.tick1.Renderer.render(Renderer.java:20)\nFAILED");
+    }
+
+    @Test
+    void aTemporaryFolderTheSandboxCannotReachIsOneLineSayingWhatToDo() throws Exception {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx------"));
+        Path[] files = StudentSolution.correct().writeTo(Files.createDirectories(dir.resolve("student")));
+        Grade grade = gradeFiles(files[0], files[1]);
+        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(grade.output()).isEqualTo("tick1 grade: " + dir + ": the sandbox's user cannot pass through this "
+                + "folder to the work folder; grade with a temporary folder it can reach "
+                + "(JAVA_OPTS=-Djava.io.tmpdir=/tmp)" + System.lineSeparator());
+        assertThat(workFolders()).isEmpty();
+    }
+
+    @Test
     void sigtermStopsTheStudentsCodeAndDeletesTheWorkFolder() throws Exception {
         Path student = Files.createDirectories(dir.resolve("looping"));
         Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
                 "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
         Process grade = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                GRADER_HEAP, "-cp", System.getProperty("java.class.path"), Tick1.class.getName(), "grade",
+                GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName(), "grade",
                 "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
                 "--width", "16", "--height", "12").redirectErrorStream(true)
                 .redirectOutput(dir.resolve("grade.log").toFile()).start();
@@ -263,8 +290,7 @@ class GradeAttackTest {
             process.onExit().get(30, TimeUnit.SECONDS);
         }
         assertThat(running).as("processes of the student's").noneMatch(ProcessHandle::isAlive);
-        assertThat(workFolders()).as("grade work folders left in the temporary folder")
-                .isSubsetOf(earlierWorkFolders);
+        assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
     }
 
     private String resourceOr(String name, String otherwise) throws IOException {
@@ -301,8 +327,8 @@ class GradeAttackTest {
     }
 
     /** Grade work folders are made in the temporary folder; each grade deletes its own. */
-    private static List<Path> workFolders() throws IOException {
-        try (Stream<Path> files = Files.list(Path.of(System.getProperty("java.io.tmpdir")))) {
+    private List<Path> workFolders() throws IOException {
+        try (Stream<Path> files = Files.list(temporary)) {
             return files.filter(f -> f.getFileName().toString().startsWith("tick1-grade")).toList();
         }
     }
