@@ -155,19 +155,26 @@ public final class GradeCommand implements Callable<Integer> {
         // Ctrl-C or SIGTERM: stop the student's process and delete the work folder, scenes and all.
         Thread cleanUp = new Thread(() -> {
             process.stop();
-            WorkFolder.delete(work);
+            reportUndeleted(WorkFolder.delete(work), err);
         });
         Runtime.getRuntime().addShutdownHook(cleanUp);
         try {
             return grade(work, sandbox, process, out, err);
         } finally {
             process.stop();
-            WorkFolder.delete(work);
+            reportUndeleted(WorkFolder.delete(work), err);
             try {
                 Runtime.getRuntime().removeShutdownHook(cleanUp);
             } catch (IllegalStateException e) {
                 // The JVM is shutting down: the hook runs (or ran) anyway.
             }
+        }
+    }
+
+    private static void reportUndeleted(String problem, PrintWriter err) {
+        if (problem != null) {
+            err.println("tick1 grade: " + problem);
+            err.flush();
         }
     }
 

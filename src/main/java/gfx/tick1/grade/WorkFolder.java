@@ -28,8 +28,10 @@ final class WorkFolder {
      * Deletes {@code folder} and everything in it, following no link, and whatever the student's
      * process did to the permissions of what it wrote. Never throws: it runs on the way out,
      * Ctrl-C and SIGTERM included; it may run twice at once (the shutdown hook and the command).
+     *
+     * @return null, or why the folder could not be deleted, in one line
      */
-    static synchronized void delete(Path folder) {
+    static synchronized String delete(Path folder) {
         try {
             Files.walkFileTree(folder, new SimpleFileVisitor<>() {
                 @Override
@@ -64,8 +66,9 @@ final class WorkFolder {
         } catch (NoSuchFileException e) {
             // Already deleted.
         } catch (IOException e) {
-            System.err.println("tick1 grade: cannot delete the work folder " + folder + ": " + e.getMessage());
+            return "cannot delete the work folder " + folder + ": " + e.getMessage();
         }
+        return null;
     }
 
     /**
