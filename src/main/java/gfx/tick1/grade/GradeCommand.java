@@ -78,7 +78,7 @@ public final class GradeCommand implements Callable<Integer> {
 
     @Option(names = "--scenes", paramLabel = "DIR",
             description = "Grade on tick1.xml and every *.xml in DIR instead of tick1.xml and the built-in hidden "
-                    + "scene.")
+                    + "scene. The scenes of DIR are hidden: the report never quotes them and writes no images of them.")
     private Path scenesFolder;
 
     @Option(names = "--report", paramLabel = "DIR", defaultValue = "grade-report",
