@@ -4,6 +4,7 @@ import gfx.tick1.starter.StarterKit;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.io.StringWriter;
 import java.net.URI;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -29,6 +30,8 @@ import javax.tools.ToolProvider;
  * Compiles a student's {@code Sphere.java} and {@code Renderer.java} with the starter kit's other
  * classes, in memory, through the JDK's own compiler (javax.tools): no files but the student's are
  * read and nothing is written. Errors carry the student's own file names and line numbers.
+ * {@code grade} runs it inside the sandbox, where it must not need anything but the JDK and
+ * {@link StudentFile}: the starter kit is read only by {@link #compile(Path, Path)}.
  */
 public final class StudentCompiler {
 
@@ -49,6 +52,9 @@ public final class StudentCompiler {
         }
     }
 
+    /** The one error when the compiler itself ran out of memory (a source can make it need any amount). */
+    public static final String OUT_OF_MEMORY = "the compiler ran out of memory";
+
     /** No JDK compiler here (a JRE, or a stripped runtime). */
     public static final class NoCompilerException extends Exception {
         private static final long serialVersionUID = 1L;
@@ -59,21 +65,28 @@ public final class StudentCompiler {
     }
 
     /**
-     * Compiles the student's two files. {@code sphere} and {@code renderer} are read as UTF-8;
-     * errors name them as given.
+     * Compiles the student's two files in this JVM. {@code sphere} and {@code renderer} are read
+     * as {@link StudentFile} reads them; errors name them as given.
      */
     public Result compile(Path sphere, Path renderer) throws IOException, NoCompilerException {
+        List<Source> sources = new ArrayList<>();
+        sources.add(new Source("Sphere", sphere.toString(), StudentFile.read(sphere)));
+        sources.add(new Source("Renderer", renderer.toString(), StudentFile.read(renderer)));
+        for (String given : StarterKit.GIVEN_CLASSES) {
+            sources.add(new Source(given, "starter code " + given + ".java", StarterKit.source(given)));
+        }
+        return compile(sources);
+    }
+
+    /**
+     * Compiles the given sources of package gfx.tick1 with nothing on the class path. This method
+     * needs only the JDK: {@code grade} runs it inside the sandbox, through {@link StudentHarness}.
+     */
+    public Result compile(List<Source> sources) throws IOException, NoCompilerException {
         JavaCompiler compiler = ToolProvider.getSystemJavaCompiler();
         if (compiler == null) {
             throw new NoCompilerException();
         }
-        List<JavaFileObject> sources = new ArrayList<>();
-        sources.add(new Source("Sphere", sphere.toString(), Files.readString(sphere, StandardCharsets.UTF_8)));
-        sources.add(new Source("Renderer", renderer.toString(), Files.readString(renderer, StandardCharsets.UTF_8)));
-        for (String given : StarterKit.GIVEN_CLASSES) {
-            sources.add(new Source(given, "starter code " + given + ".java", StarterKit.source(given)));
-        }
-
         DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
         Map<String, byte[]> classes = new TreeMap<>();
         StandardJavaFileManager standard = compiler.getStandardFileManager(diagnostics, Locale.ROOT, StandardCharsets.UTF_8);
@@ -82,7 +95,9 @@ public final class StudentCompiler {
         standard.setLocation(StandardLocation.CLASS_PATH, List.of());
         try (JavaFileManager files = new InMemoryOutput(standard, classes)) {
             List<String> options = List.of("-proc:none", "-Xlint:none", "-nowarn", "-g");
-            Boolean ok = compiler.getTask(null, files, diagnostics, options, null, sources).call();
+            // What javac prints outside diagnostics: a crash, such as running out of memory.
+            StringWriter said = new StringWriter();
+            Boolean ok = compiler.getTask(said, files, diagnostics, options, null, sources).call();
             List<String> errors = new ArrayList<>();
             for (Diagnostic<? extends JavaFileObject> d : diagnostics.getDiagnostics()) {
                 if (d.getKind() == Diagnostic.Kind.ERROR) {
@@ -90,7 +105,8 @@ public final class StudentCompiler {
                 }
             }
             if (!ok && errors.isEmpty()) {
-                errors.add("the compiler failed without saying why");
+                errors.add(said.toString().contains("OutOfMemoryError") ? OUT_OF_MEMORY
+                        : "the compiler failed without saying why");
             }
             return errors.isEmpty() ? new Result(classes, List.of()) : new Result(Map.of(), errors);
         }
@@ -119,12 +135,13 @@ public final class StudentCompiler {
     }
 
     /** A source held in memory under the name to report it by. */
-    private static final class Source extends SimpleJavaFileObject {
+    public static final class Source extends SimpleJavaFileObject {
         private final String className;
         private final String displayName;
         private final String code;
 
-        Source(String className, String displayName, String code) {
+        /** The source of public class {@code className} of gfx.tick1, reported as {@code displayName}. */
+        public Source(String className, String displayName, String code) {
             super(URI.create("memory:///gfx/tick1/" + className + ".java"), Kind.SOURCE);
             this.className = className;
             this.displayName = displayName;

@@ -14,35 +14,75 @@ import java.util.List;
 import javax.imageio.ImageIO;
 
 /**
- * The program {@code grade} runs in a JVM of its own to render with a student's code:
- * {@code StudentHarness CLASSES OUTPUT WIDTH HEIGHT SCENE...}. For each scene it loads the scene
- * with the starter code's {@code SceneLoader}, renders it with the student's {@code Renderer} and
- * writes {@code OUTPUT/<index>.png}, or {@code OUTPUT/<index>.error} with what went wrong.
- * {@code OUTPUT/progress} logs "start i" and "end i" lines, so that whoever stops this process
- * (on a time limit) or sees it die (System.exit, a crash) knows which scene it was on.
+ * The program {@code grade} runs in a JVM of its own, inside the sandbox, to compile and to run a
+ * student's code. It needs only the JDK and {@link StudentCompiler}: its class path holds these
+ * classes and nothing else of this program. Two commands:
  *
- * <p>The student's classes are loaded by a class loader of their own whose parent is the
- * platform loader: they see the JDK and the starter code, not this program (whose own
- * {@code gfx.tick1.Tick1} would clash with the starter's).
+ * <ul>
+ *   <li>{@code compile SOURCES OUTPUT SPHERE-NAME RENDERER-NAME}: compiles every {@code *.java}
+ *       in SOURCES ({@code Sphere.java} and {@code Renderer.java} reported under the names given,
+ *       the others as starter code) into {@code OUTPUT/classes}; exits 0, or writes the errors,
+ *       separated by NUL characters, to {@code OUTPUT/errors} and exits 1.
+ *   <li>{@code render CLASSES OUTPUT WIDTH HEIGHT SCENE...}: for each scene, loads it with the
+ *       starter code's {@code SceneLoader}, renders it with the student's {@code Renderer} and
+ *       writes {@code OUTPUT/<index>.png}, or {@code OUTPUT/<index>.error} with what went wrong.
+ *       {@code OUTPUT/progress} logs "start i" and "end i" lines, so that whoever stops this
+ *       process (on a time limit) or sees it die (System.exit, a crash) knows which scene it was on.
+ * </ul>
+ *
+ * <p>Everything this process writes is written while the student's code runs in it, so
+ * {@code grade} trusts none of it (see {@link ChildOutput}).
  */
 public final class StudentHarness {
+
+    static final String PROGRESS_FILE = "progress";
+    static final String ERRORS_FILE = "errors";
+    static final String CLASSES_FOLDER = "classes";
+    /** Exit status of {@code compile} when the code does not compile. */
+    static final int DOES_NOT_COMPILE = 3;
 
     private StudentHarness() {
     }
 
-    public static void main(String[] args) throws IOException {
-        Path classes = Path.of(args[0]);
-        Path output = Path.of(args[1]);
-        int width = Integer.parseInt(args[2]);
-        int height = Integer.parseInt(args[3]);
-        Path progress = output.resolve(StudentProcess.PROGRESS_FILE);
+    public static void main(String[] args) throws Exception {
+        if (args[0].equals("compile")) {
+            System.exit(compile(Path.of(args[1]), Path.of(args[2]), args[3], args[4]));
+        }
+        render(Path.of(args[1]), Path.of(args[2]), Integer.parseInt(args[3]), Integer.parseInt(args[4]),
+                List.of(args).subList(5, args.length));
+    }
+
+    private static int compile(Path sources, Path output, String sphereName, String rendererName) throws Exception {
+        List<StudentCompiler.Source> files = new ArrayList<>();
+        try (var listing = Files.list(sources)) {
+            for (Path file : listing.sorted().toList()) {
+                String className = file.getFileName().toString().replaceAll("\\.java$", "");
+                String name = switch (className) {
+                    case "Sphere" -> sphereName;
+                    case "Renderer" -> rendererName;
+                    default -> "starter code " + className + ".java";
+                };
+                files.add(new StudentCompiler.Source(className, name, Files.readString(file, StandardCharsets.UTF_8)));
+            }
+        }
+        StudentCompiler.Result result = new StudentCompiler().compile(files);
+        if (!result.compiled()) {
+            Files.writeString(output.resolve(ERRORS_FILE), String.join("\0", result.errors()), StandardCharsets.UTF_8);
+            return DOES_NOT_COMPILE;
+        }
+        result.writeClasses(output.resolve(CLASSES_FOLDER));
+        return 0;
+    }
+
+    private static void render(Path classes, Path output, int width, int height, List<String> scenes)
+            throws IOException {
+        Path progress = output.resolve(PROGRESS_FILE);
         try (URLClassLoader student = new URLClassLoader(new URL[] {classes.toUri().toURL()},
                 ClassLoader.getPlatformClassLoader())) {
-            for (int i = 4; i < args.length; i++) {
-                int index = i - 4;
+            for (int index = 0; index < scenes.size(); index++) {
                 log(progress, "start " + index);
                 try {
-                    BufferedImage image = render(student, args[i], width, height);
+                    BufferedImage image = render(student, scenes.get(index), width, height);
                     ImageIO.write(image, "png", output.resolve(index + ".png").toFile());
                 } catch (Throwable failure) { // the student's code may throw anything, errors included
                     Files.writeString(output.resolve(index + ".error"), describe(failure), StandardCharsets.UTF_8);

@@ -1,5 +1,6 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.grade.Sandbox.Bind;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.InputStream;
@@ -8,21 +9,30 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import javax.imageio.ImageIO;
 
 /**
- * Runs compiled student code in a separate JVM ({@link StudentHarness}) with a memory limit and a
- * time limit, so that an infinite loop, a crash, or a call to System.exit in the student's code is
- * reported and never inherited. The child is the same Java as this program, started with
- * {@code -Xmx}; on the time limit it is killed with everything it started.
+ * Runs {@link StudentHarness} in a JVM of its own inside the {@link Sandbox}, with a heap limit and
+ * a time limit, so that an infinite loop, a crash, or a call to System.exit in the student's code
+ * is reported and never inherited, and so that the student's code can do nothing outside it. The
+ * child is the same Java as this program; its class path is {@code /harness}, a folder that holds
+ * the harness's classes and nothing else of this program. On the time limit the sandbox is killed,
+ * and with it everything the student's code started.
  */
 public final class StudentProcess {
 
-    static final String PROGRESS_FILE = "progress";
     /** How much of what the student's code printed is kept, from the end. */
     private static final int OUTPUT_TAIL_CHARS = 2000;
+    /** The compiler's heap when --memory is less: javac needs about this much for the starter code. */
+    private static final int COMPILER_HEAP_MEGABYTES = 256;
+    /** Address space beyond the heap: the JVM's code, class metadata, thread stacks, libraries. */
+    private static final int NON_HEAP_MEGABYTES = 1024;
+
+    /** Where the harness's classes, the compiled classes, scenes and output appear inside the sandbox. */
+    static final String HARNESS = "/harness", SOURCES = "/sources", CLASSES = "/classes", SCENES = "/scenes",
+            OUTPUT = "/output";
 
     /** What became of one scene. */
     public sealed interface Outcome {
@@ -39,91 +49,223 @@ public final class StudentProcess {
     public record Result(List<Outcome> outcomes, String outputTail) {
     }
 
-    private final Duration timeLimit;
-    private final int memoryMegabytes;
+    /** How a run of the harness ended, and the end of what it printed (printable characters only). */
+    record Run(boolean finished, int exitStatus, String outputTail) {
+    }
 
-    public StudentProcess(Duration timeLimit, int memoryMegabytes) {
-        this.timeLimit = timeLimit;
+    /** What compiling gave: the errors, or a reason the compiler did not finish, or neither (it compiled). */
+    record Compiled(List<String> errors, String failure) {
+        boolean compiled() {
+            return errors.isEmpty() && failure == null;
+        }
+    }
+
+    private final Sandbox sandbox;
+    private final Path harness;
+    private final int memoryMegabytes;
+    private volatile Process running;
+
+    /** Runs the harness whose classes are in {@code harness}, in {@code sandbox}, with {@code memoryMegabytes} of heap. */
+    public StudentProcess(Sandbox sandbox, Path harness, int memoryMegabytes) {
+        this.sandbox = sandbox;
+        this.harness = harness;
         this.memoryMegabytes = memoryMegabytes;
     }
 
     /**
-     * Renders each scene with the student's classes in {@code classes}; {@code work} is an empty
-     * folder for the child's images and logs.
+     * Compiles the {@code *.java} files of {@code sources} into {@code output}/classes, in the
+     * sandbox; the student's files are reported as {@code sphereName} and {@code rendererName}.
      */
-    public Result render(Path classes, Path work, int width, int height, List<Path> scenes)
+    Compiled compile(Path sources, Path output, String sphereName, String rendererName, Duration timeLimit)
             throws IOException, InterruptedException {
-        List<String> command = new ArrayList<>(List.of(
-                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx" + memoryMegabytes + "m",
-                "-XX:+UseSerialGC",               // one GC thread: the student's code is single-threaded
-                "-XX:TieredStopAtLevel=1",        // quick start; small renders are over before C2 pays
-                "-Djava.awt.headless=true",
-                "-cp", harnessClassPath(),
-                StudentHarness.class.getName(),
-                classes.toAbsolutePath().toString(), work.toAbsolutePath().toString(),
-                Integer.toString(width), Integer.toString(height)));
-        scenes.forEach(scene -> command.add(scene.toAbsolutePath().toString()));
-
-        Process process = new ProcessBuilder(command).redirectErrorStream(true)
-                .redirectInput(ProcessBuilder.Redirect.PIPE).start();
-        process.getOutputStream().close();
-        OutputTail tail = new OutputTail(process.getInputStream());
-        tail.start();
-        boolean finished = process.waitFor(timeLimit.toMillis(), TimeUnit.MILLISECONDS);
-        if (!finished) {
-            process.descendants().forEach(ProcessHandle::destroyForcibly);
-            process.destroyForcibly();
-            process.waitFor();
+        Run run = run(List.of("compile", SOURCES, OUTPUT, sphereName, rendererName),
+                List.of(new Bind(sources, SOURCES, false), new Bind(output, OUTPUT, true)),
+                timeLimit, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false);
+        if (!run.finished()) {
+            return new Compiled(List.of(), "the compiler did not finish within the time limit of " + describe(timeLimit));
         }
-        tail.join(1000);
-
-        List<String> progress = Files.exists(work.resolve(PROGRESS_FILE))
-                ? Files.readAllLines(work.resolve(PROGRESS_FILE), StandardCharsets.UTF_8) : List.of();
-        List<Outcome> outcomes = new ArrayList<>();
-        for (int i = 0; i < scenes.size(); i++) {
-            outcomes.add(outcome(work, i, progress, finished, process.exitValue()));
+        if (run.exitStatus() == StudentHarness.DOES_NOT_COMPILE) {
+            byte[] errors = ChildOutput.read(output.resolve(StudentHarness.ERRORS_FILE), ChildOutput.TEXT_CAP);
+            if (errors != null && errors.length > 0) {
+                List<String> list = Arrays.stream(new String(errors, StandardCharsets.UTF_8).split("\0"))
+                        .map(ChildOutput::printable).toList();
+                return list.equals(List.of(StudentCompiler.OUT_OF_MEMORY))
+                        ? new Compiled(List.of(), StudentCompiler.OUT_OF_MEMORY + " (its heap limit is "
+                                + Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES) + " MiB)")
+                        : new Compiled(list, null);
+            }
         }
-        return new Result(outcomes, tail.text());
+        if (run.outputTail().contains("OutOfMemoryError")) {
+            return new Compiled(List.of(), StudentCompiler.OUT_OF_MEMORY + " (its heap limit is "
+                    + Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES) + " MiB)");
+        }
+        if (run.exitStatus() != 0 || !ChildOutput.isDirectory(output.resolve(StudentHarness.CLASSES_FOLDER))) {
+            String said = run.outputTail().strip();
+            return new Compiled(List.of(), "the compiler stopped with exit status " + run.exitStatus()
+                    + (said.isEmpty() ? "" : ": " + said.lines().reduce((first, last) -> last).orElse("")));
+        }
+        return new Compiled(List.of(), null);
     }
 
     /**
-     * Where this program's classes are (its jar, or a classes folder in a build): the harness needs
-     * nothing else, and java.class.path is not it under every launcher (test runners, IDEs).
+     * Renders each scene with the compiled classes in {@code classes}; {@code output} is an empty
+     * folder for the child's images and logs. The run may take {@code timeLeft}, what is left of
+     * the grade's {@code timeLimit}.
      */
-    private static String harnessClassPath() throws IOException {
-        try {
-            return Path.of(StudentHarness.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
-        } catch (java.net.URISyntaxException | RuntimeException e) {
-            throw new IOException("cannot find this program's own classes to run the student's code with", e);
+    Result render(Path classes, Path scenes, List<String> sceneFiles, Path output, int width, int height,
+            Duration timeLeft, Duration timeLimit) throws IOException, InterruptedException {
+        List<String> arguments = new ArrayList<>(List.of("render", CLASSES, OUTPUT,
+                Integer.toString(width), Integer.toString(height)));
+        sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
+        Run run = run(arguments, List.of(new Bind(classes, CLASSES, false), new Bind(scenes, SCENES, false),
+                new Bind(output, OUTPUT, true)), timeLeft, memoryMegabytes, true);
+
+        String progressText = ChildOutput.readText(output.resolve(StudentHarness.PROGRESS_FILE));
+        List<Outcome> outcomes = new ArrayList<>();
+        for (int i = 0; i < sceneFiles.size(); i++) {
+            outcomes.add(progressText == null && run.finished() && run.exitStatus() == 0
+                    ? new Outcome.Failed("no image: the log of the run's progress is missing or is not a regular file "
+                            + "(did the code remove or replace it?)")
+                    : outcome(output, i, progressText == null ? List.of() : progressText.lines().toList(), run,
+                            width, height, timeLimit));
+        }
+        return new Result(outcomes, run.outputTail());
+    }
+
+    /**
+     * Writes the harness's class path into {@code folder}: the class files of {@link StudentHarness},
+     * {@link StudentCompiler} and {@link StudentFile}, their nested classes, and nothing else of
+     * this program (no reference renderer, no scenes, no images for the student's code to use).
+     */
+    static void writeHarness(Path folder) throws IOException {
+        for (Class<?> top : List.of(StudentHarness.class, StudentCompiler.class, StudentFile.class)) {
+            for (Class<?> type : top.getNestMembers()) {
+                String file = type.getName().replace('.', '/') + ".class";
+                try (InputStream in = type.getResourceAsStream("/" + file)) {
+                    if (in == null) {
+                        throw new IOException("cannot find this program's own class " + file);
+                    }
+                    Path target = folder.resolve(file);
+                    Files.createDirectories(target.getParent());
+                    Files.write(target, in.readAllBytes());
+                }
+            }
         }
     }
 
-    private Outcome outcome(Path work, int index, List<String> progress, boolean finished, int exitStatus)
-            throws IOException {
-        Path image = work.resolve(index + ".png");
-        Path error = work.resolve(index + ".error");
-        if (Files.exists(error)) {
-            return new Outcome.Failed("the code threw " + Files.readString(error, StandardCharsets.UTF_8));
+    /** Kills the sandbox that is running, if one is (on Ctrl-C or SIGTERM). */
+    void stop() {
+        Process process = running;
+        if (process != null) {
+            kill(process);
         }
-        if (progress.contains("end " + index) && Files.exists(image)) {
-            BufferedImage picture = ImageIO.read(image.toFile());
-            if (picture != null) {
-                return new Outcome.Rendered(picture);
+    }
+
+    /** Runs the harness; {@code studentCode} when it runs the student's code (on one core), not only javac. */
+    private Run run(List<String> harnessArguments, List<Bind> binds, Duration timeLimit, int heapMegabytes,
+            boolean studentCode) throws IOException, InterruptedException {
+        Path inside = sandbox.isConfined() ? Path.of(HARNESS) : harness;
+        List<String> command = new ArrayList<>(List.of(
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Xmx" + heapMegabytes + "m",
+                "-XX:MaxDirectMemorySize=32m",
+                "-XX:CompressedClassSpaceSize=64m",
+                "-XX:ReservedCodeCacheSize=64m",
+                "-XX:+UseSerialGC",               // one GC thread: the student's code is single-threaded
+                "-XX:TieredStopAtLevel=1",        // quick start; small renders are over before C2 pays
+                "-XX:-UsePerfData",               // no shared-memory file in /tmp (there is no /tmp)
+                "-Djava.awt.headless=true",
+                "-Djava.io.tmpdir=" + (sandbox.isConfined() ? OUTPUT : System.getProperty("java.io.tmpdir")),
+                "-cp", inside.toString(),
+                StudentHarness.class.getName()));
+        if (sandbox.isConfined()) {
+            command.addAll(harnessArguments);
+        } else {
+            // Without a sandbox the folders keep their own names.
+            List<Bind> all = new ArrayList<>(binds);
+            for (String argument : harnessArguments) {
+                String real = argument;
+                for (Bind bind : all) {
+                    if (argument.equals(bind.inside()) || argument.startsWith(bind.inside() + "/")) {
+                        real = bind.outside() + argument.substring(bind.inside().length());
+                    }
+                }
+                command.add(real);
             }
+        }
+        List<Bind> allBinds = new ArrayList<>(binds);
+        allBinds.add(new Bind(harness, HARNESS, false));
+        int cpuSeconds = (int) Math.ceil(timeLimit.toMillis() / 1000.0) + 1;
+        Process process = new ProcessBuilder(sandbox.wrap(command, allBinds, cpuSeconds,
+                heapMegabytes + NON_HEAP_MEGABYTES, studentCode)).redirectErrorStream(true).start();
+        running = process;
+        try {
+            process.getOutputStream().close();
+            OutputTail tail = new OutputTail(process.getInputStream());
+            tail.start();
+            boolean finished = process.waitFor(timeLimit.toMillis(), TimeUnit.MILLISECONDS);
+            if (!finished) {
+                kill(process);
+            }
+            tail.join(1000);
+            return new Run(finished, process.exitValue(), ChildOutput.printable(tail.text()));
+        } finally {
+            kill(process);
+            running = null;
+        }
+    }
+
+    /**
+     * Kills the process and everything it started, and returns when they are gone, so that no
+     * process of the student's can change its output folder while it is read. (In the sandbox the
+     * first of them is the PID namespace's init, which ends only after every other process in it.)
+     */
+    private static void kill(Process process) {
+        List<ProcessHandle> started = process.descendants().toList();
+        started.forEach(ProcessHandle::destroyForcibly);
+        process.destroyForcibly();
+        try {
+            process.waitFor();
+            for (ProcessHandle handle : started) {
+                handle.onExit().get(10, TimeUnit.SECONDS);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+            // A process that will not die within seconds of SIGKILL: nothing more to do.
+        }
+    }
+
+    private static Outcome outcome(Path output, int index, List<String> progress, Run run, int width, int height,
+            Duration timeLimit) throws IOException {
+        Path image = output.resolve(index + ".png");
+        String error = ChildOutput.readText(output.resolve(index + ".error"));
+        if (error != null) {
+            return new Outcome.Failed("the code threw " + error);
+        }
+        if (progress.contains("end " + index) && ChildOutput.isRegularFile(image)) {
+            try {
+                return new Outcome.Rendered(ChildOutput.readPng(image, width, height));
+            } catch (ChildOutput.Unusable e) {
+                return new Outcome.Failed("the image written for this scene is unusable: " + e.getMessage());
+            }
+        }
+        if (!run.finished()) {
+            if (!progress.contains("start " + index) && index > 0) {
+                return new Outcome.Failed("not rendered: the time limit was reached at an earlier scene");
+            }
+            return new Outcome.Failed("no image within the time limit of " + describe(timeLimit)
+                    + " (an infinite loop?); the program was stopped");
         }
         if (!progress.contains("start " + index)) {
             return new Outcome.Failed("not rendered: the run stopped at an earlier scene");
         }
-        if (!finished) {
-            return new Outcome.Failed("no image within the time limit of " + describe(timeLimit)
-                    + " (an infinite loop?); the program was stopped");
-        }
+        int exitStatus = run.exitStatus();
         return new Outcome.Failed("the program ended while rendering this scene, with exit status " + exitStatus
                 + (exitStatus == 0 ? " (does the code call System.exit?)" : " (System.exit, or the JVM crashed)"));
     }
 
-    private static String describe(Duration duration) {
+    static String describe(Duration duration) {
         long millis = duration.toMillis();
         return millis % 1000 == 0 ? millis / 1000 + " s" : millis / 1000.0 + " s";
     }

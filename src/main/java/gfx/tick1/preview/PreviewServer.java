@@ -8,6 +8,7 @@ import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
+import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -18,8 +19,9 @@ import java.net.URI;
 import java.net.URLDecoder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.Semaphore;
+import java.util.concurrent.TimeUnit;
 
 /**
  * The previewer's HTTP server, on 127.0.0.1 only. It answers:
@@ -35,6 +37,13 @@ import java.util.concurrent.Executors;
  * A scene the loader rejects is answered 422 with {@code {"error": message}}, the message being
  * the CLI's own {@code file:line:column} line. The render is the CLI's: {@link Renderer} at the
  * CLI's default 640 x 480.
+ *
+ * <p>Nothing a client does can hold the server: every request must arrive, headers and body,
+ * within {@link #REQUEST_DEADLINE_SECONDS} ({@link RequestDeadline}: a stalled connection is
+ * closed and its thread freed), at most {@link #CONCURRENT_RENDERS} renders run at a
+ * time, a scene of more than {@link #RENDER_BUDGET} sphere-pixels is refused before it is
+ * rendered, and a render still running after {@link #RENDER_DEADLINE_SECONDS} is stopped. Each
+ * refusal is one clear message.
  */
 public final class PreviewServer implements AutoCloseable {
 
@@ -43,14 +52,28 @@ public final class PreviewServer implements AutoCloseable {
     /** The name an upload is given in messages when the page sends none. */
     private static final String UNNAMED = "scene.xml";
 
+    /** How long a client has to send a whole request, headers and body. */
+    public static final int REQUEST_DEADLINE_SECONDS = 10;
+    /** How many renders run at the same time; more wait, up to the render deadline. */
+    public static final int CONCURRENT_RENDERS = 2;
+    /**
+     * The most spheres x pixels a render may cost: the bundled scenes cost up to 3 x 10^7, and a
+     * scene at the budget (about 30,000 spheres at 640 x 480) still renders in seconds.
+     */
+    public static final long RENDER_BUDGET = 10_000_000_000L;
+    /** How long one render may run (or wait for its turn) before it is stopped. */
+    public static final int RENDER_DEADLINE_SECONDS = 30;
+
+    private static final Semaphore RENDERS = new Semaphore(CONCURRENT_RENDERS, true);
+
     private final HttpServer server;
-    private final ExecutorService executor;
+    private final RequestDeadline executor;
     private final Path commandLineScene;
     private final LoopbackGuard guard;
     private final StaticFiles files = new StaticFiles();
     private final String contentSecurityPolicy;
 
-    private PreviewServer(HttpServer server, ExecutorService executor, Path commandLineScene) {
+    private PreviewServer(HttpServer server, RequestDeadline executor, Path commandLineScene) {
         this.server = server;
         this.executor = executor;
         this.commandLineScene = commandLineScene;
@@ -70,11 +93,7 @@ public final class PreviewServer implements AutoCloseable {
     public static PreviewServer start(Path commandLineScene, int port) throws IOException {
         HttpServer server = HttpServer.create(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 0);
         // A few threads, so that a long render does not hold up the page's other requests.
-        ExecutorService executor = Executors.newFixedThreadPool(4, task -> {
-            Thread thread = new Thread(task, "tick1-preview");
-            thread.setDaemon(true);
-            return thread;
-        });
+        RequestDeadline executor = new RequestDeadline(4, TimeUnit.SECONDS.toMillis(REQUEST_DEADLINE_SECONDS));
         PreviewServer preview = new PreviewServer(server, executor, commandLineScene);
         server.createContext("/", preview::handle);
         server.setExecutor(executor);
@@ -120,12 +139,16 @@ public final class PreviewServer implements AutoCloseable {
         String method = exchange.getRequestMethod();
         String path = exchange.getRequestURI().getPath();
         boolean api = path.equals("/api/scene") || path.equals("/api/render");
+        if (!(api && method.equals("POST"))) {
+            RequestDeadline.requestRead();   // no body to wait for
+        }
         if (api && method.equals("GET")) {
             answer(exchange, path, commandLineScene == null ? null : commandLineScene.toString(),
                     () -> new SceneLoader(commandLineScene, false));
         } else if (api && method.equals("POST")) {
             String name = uploadName(exchange.getRequestURI().getRawQuery());
             byte[] upload = readUpload(exchange, name);
+            RequestDeadline.requestRead();
             if (upload != null) {
                 answer(exchange, path, name, () -> new SceneLoader(name, upload, false));
             }
@@ -168,9 +191,51 @@ public final class PreviewServer implements AutoCloseable {
         if (path.equals("/api/scene")) {
             sendJson(exchange, 200, SceneJson.describe(name, loader.getScene(), loader.getWarnings()));
         } else {
+            long cost = (long) loader.getScene().getObjects().size() * IMAGE_WIDTH * IMAGE_HEIGHT;
+            if (cost > RENDER_BUDGET) {
+                sendJson(exchange, 422, SceneJson.error(name + ": " + loader.getScene().getObjects().size()
+                        + " spheres at " + IMAGE_WIDTH + " x " + IMAGE_HEIGHT + " is more than the previewer renders "
+                        + "(at most " + RENDER_BUDGET / (IMAGE_WIDTH * IMAGE_HEIGHT) + " spheres); render it with "
+                        + "tick1 --input instead"));
+                return;
+            }
+            BufferedImage image = renderWithinDeadline(loader);
+            if (image == null) {
+                sendJson(exchange, 503, SceneJson.error(name + ": not rendered within " + RENDER_DEADLINE_SECONDS
+                        + " s (the previewer renders " + CONCURRENT_RENDERS + " scenes at a time); render it "
+                        + "with tick1 --input instead"));
+                return;
+            }
             ByteArrayOutputStream png = new ByteArrayOutputStream();
-            PngOutput.write(new FastRenderer(IMAGE_WIDTH, IMAGE_HEIGHT, new SamplePattern(1)).render(loader.getScene()), png);
+            PngOutput.write(image, png);
             send(exchange, 200, "image/png", png.toByteArray());
+        }
+    }
+
+    /**
+     * The scene's render, waiting for a turn among {@link #CONCURRENT_RENDERS}, or null when the
+     * wait and the render together take longer than {@link #RENDER_DEADLINE_SECONDS}.
+     */
+    private static BufferedImage renderWithinDeadline(SceneLoader loader) {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(RENDER_DEADLINE_SECONDS);
+        try {
+            if (!RENDERS.tryAcquire(RENDER_DEADLINE_SECONDS, TimeUnit.SECONDS)) {
+                return null;
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return null;
+        }
+        try {
+            return new FastRenderer(IMAGE_WIDTH, IMAGE_HEIGHT, new SamplePattern(1)).render(loader.getScene(), rows -> {
+                if (System.nanoTime() > deadline) {
+                    throw new CancellationException();
+                }
+            });
+        } catch (CancellationException e) {
+            return null;
+        } finally {
+            RENDERS.release();
         }
     }
 

@@ -229,4 +229,99 @@ class GradeCommandTest {
         assertThat(run.err().lines()).hasSize(1);
         assertThat(run.err()).contains("no *.xml scene files");
     }
+    @Test
+    void aFileInAnotherPackageFailsWithOneLineNamingThePackageTheTesterNeeds() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editSphere("package gfx.tick1;", "package tick1;"));
+        Path sphere = dir.resolve("student").resolve("Sphere.java");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).isEqualTo("FAILED: " + sphere + ": the tester needs the file in package gfx.tick1 (its "
+                + "first line \"package gfx.tick1;\", as in the starter code), but it declares package tick1"
+                + System.lineSeparator());
+    }
+
+    @Test
+    void aFileThatIsNotUtf8IsNamedWithItsLineColumnAndByte() throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        String renderer = Files.readString(files[1]);
+        List<String> lines = renderer.lines().toList();
+        int line = lines.indexOf(lines.stream().filter(l -> l.contains("// The colour")).findFirst().orElseThrow()) + 1;
+        Files.write(files[1], renderer.replace("// The colour", "// Th\u00e9 colour")
+                .getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
+        CliRun run = CliRun.of("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
+                "--width", "16", "--height", "12");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err()).isEqualTo("tick1 grade: " + files[1] + ":" + line + ":"
+                + (lines.get(line - 1).indexOf("// The") + 6) + ": not UTF-8 text: byte 0xE9 is "
+                + "not part of a UTF-8 character; save the file as UTF-8" + System.lineSeparator());
+    }
+
+    @Test
+    void aUtf8ByteOrderMarkIsAccepted() throws IOException {
+        StudentSolution correct = StudentSolution.correct();
+        CliRun run = grade(new StudentSolution("\uFEFF" + correct.sphere(), "\uFEFF" + correct.renderer()));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+    }
+
+    @Test
+    void theReportFolderShowsOnlyThisGradesImages() throws IOException {
+        grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
+        assertThat(dir.resolve("report").resolve("1-tick1-diff.png")).exists();
+        Files.writeString(dir.resolve("report").resolve("notes.txt"), "the organiser's own file");
+        CliRun run = grade(StudentSolution.correct());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        try (Stream<Path> files = Files.list(dir.resolve("report"))) {
+            assertThat(files.map(f -> f.getFileName().toString())).containsExactly("notes.txt");
+        }
+    }
+
+    @Test
+    void aFailingHiddenSceneIsExplainedByFiguresAndDiagnosisWithoutImages() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
+        assertThat(run.out()).contains("hidden.xml: FAIL", "(a hidden scene: no images are written for it)");
+        try (Stream<Path> files = Files.list(dir.resolve("report"))) {
+            assertThat(files.map(f -> f.getFileName().toString())).allMatch(name -> name.startsWith("1-tick1-"));
+        }
+    }
+
+    @Test
+    void theHandoutsFormulaPassesAHardSceneAndTheReportSaysWhichReferenceItMatched() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("hard"));
+        Files.copy(Path.of("scenes/hard/giant-floor-1e16.xml"), scenes.resolve("giant-floor-1e16.xml"));
+        CliRun run = grade(StudentSolution.correct(), "--scenes", scenes.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("giant-floor-1e16.xml: PASS (identical to the handout-arithmetic reference, "
+                + "19200 pixels; the robust reference differs on this scene)");
+    }
+
+    @Test
+    void anOrganiserCanDemandTheRobustReference() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("hard"));
+        Files.copy(Path.of("scenes/hard/giant-floor-1e16.xml"), scenes.resolve("giant-floor-1e16.xml"));
+        CliRun run = grade(StudentSolution.correct(), "--scenes", scenes.toString(), "--reference", "robust");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).contains("giant-floor-1e16.xml: FAIL");
+    }
+
+    @Test
+    void withoutTheSandboxTheGradeWarnsAndStillGrades() throws IOException {
+        CliRun run = grade(StudentSolution.correct(), "--no-sandbox");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.err().lines()).singleElement().asString()
+                .startsWith("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions");
+    }
+
+    @Test
+    void withoutBubblewrapTheGradeRefusesInOneLineNamingThePackage() throws IOException {
+        String property = "tick1.grade.bwrap";
+        System.setProperty(property, dir.resolve("no-bwrap-here").toString());
+        try {
+            CliRun run = grade(StudentSolution.correct());
+            assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+            assertThat(run.out()).isEmpty();
+            assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
+                    .contains("bubblewrap is not installed", "install the bubblewrap package", "--no-sandbox");
+        } finally {
+            System.clearProperty(property);
+        }
+    }
 }

@@ -19,6 +19,9 @@ import java.net.http.HttpResponse;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -209,5 +212,45 @@ class PreviewServerTest {
                 .POST(HttpRequest.BodyPublishers.ofString("<scene/>")));
         assertThat(response.statusCode()).isEqualTo(200);
         assertThat(text(response)).startsWith("{\"name\":\"\\\"?}.xml\",");
+    }
+    @Test
+    void stalledConnectionsDoNotHoldUpThePage() throws Exception {
+        List<Socket> stalled = new ArrayList<>();
+        try {
+            for (int i = 0; i < PreviewServer.CONCURRENT_RENDERS + 4; i++) {
+                Socket socket = new Socket("127.0.0.1", port());
+                String request = i % 2 == 0
+                        ? "GET / HTTP/1.1\r\nHost: 127.0.0.1:" + port() + "\r\nX-Half: "    // headers never end
+                        : "POST /api/scene?name=a.xml HTTP/1.1\r\nHost: 127.0.0.1:" + port() + "\r\nOrigin: "
+                                + "http://127.0.0.1:" + port() + "\r\nContent-Length: 1000\r\n\r\n<scene>"; // body never ends
+                socket.getOutputStream().write(request.getBytes(StandardCharsets.ISO_8859_1));
+                socket.getOutputStream().flush();
+                stalled.add(socket);
+            }
+            // Not a timing check: a bound on how long to wait for a server that may hang.
+            HttpResponse<byte[]> page = send(get("/").timeout(Duration.ofSeconds(
+                    10L * PreviewServer.REQUEST_DEADLINE_SECONDS)));
+            assertThat(page.statusCode()).isEqualTo(200);
+        } finally {
+            for (Socket socket : stalled) {
+                socket.close();
+            }
+        }
+    }
+
+    @Test
+    void aSceneOverTheRenderBudgetGetsOneClearMessageAndNoRender() throws Exception {
+        int spheres = (int) (PreviewServer.RENDER_BUDGET / (640 * 480)) + 1;
+        StringBuilder xml = new StringBuilder("<scene>\n<point-light x=\"0\" y=\"5\" z=\"0\" colour=\"#FFFFFF\"/>\n");
+        for (int i = 0; i < spheres; i++) {
+            xml.append("<sphere x=\"").append(i % 100).append("\" y=\"").append(i / 100).append("\" z=\"50\" colour=\"#FF0000\"/>\n");
+        }
+        xml.append("</scene>\n");
+        HttpResponse<byte[]> response = send(upload("/api/render", "crowd.xml",
+                xml.toString().getBytes(StandardCharsets.UTF_8)));
+        assertThat(response.statusCode()).isEqualTo(422);
+        assertThat(text(response)).isEqualTo("{\"error\":\"crowd.xml: " + spheres + " spheres at 640 x 480 is more "
+                + "than the previewer renders (at most " + (spheres - 1) + " spheres); render it with tick1 --input "
+                + "instead\"}");
     }
 }

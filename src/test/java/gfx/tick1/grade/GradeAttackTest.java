@@ -1,0 +1,342 @@
+package gfx.tick1.grade;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assumptions.assumeThat;
+
+import gfx.tick1.Tick1;
+import gfx.tick1.starter.StarterKit;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The hostile submissions of {@code src/test/resources/students/attacks}, each graded through the
+ * real {@code tick1 grade}, in a JVM of its own with a small heap (so that a grader that needs
+ * more memory than that fails with exit status 4). Every attack must fail with a reason that says
+ * what happened, and leave the secret nowhere, every file outside the work folder as it was, no
+ * process behind, and the next student's grade as it would have been.
+ */
+class GradeAttackTest {
+
+    private static final Path SECRET = Path.of("/tmp/tick1-attack-secret.txt");
+    private static final Path VICTIM = Path.of("/tmp/tick1-attack-victim.txt");
+    private static final int LISTENER_PORT = 47811;
+    private static final String VICTIM_TEXT = "the launcher: do not change\n";
+    /** The grader's heap in these tests: far less than decoding a 40000 x 40000 image would take. */
+    private static final String GRADER_HEAP = "-Xmx160m";
+
+    private static final String[] SMALL = {"--width", "160", "--height", "120"};
+
+    @TempDir
+    Path dir;
+
+    private String secret;
+    private ServerSocket listener;
+    /** The graders' temporary folder, where their work folders go: the test's own, as other grades may run. */
+    private Path temporary;
+
+    @BeforeAll
+    static void theSandboxCanRunHere() throws InterruptedException {
+        try {
+            Sandbox.confined();
+        } catch (Sandbox.Unavailable e) {
+            assumeThat(e.getMessage()).as("bubblewrap is needed for the attack tests").isNull();
+        }
+    }
+
+    @BeforeEach
+    void plantTheSecretTheVictimAndTheListener() throws IOException {
+        secret = "tick1-secret-" + Long.toHexString(Double.doubleToLongBits(Math.random()));
+        Files.writeString(SECRET, secret);
+        Files.writeString(VICTIM, VICTIM_TEXT);
+        listener = new ServerSocket(LISTENER_PORT, 5, InetAddress.getLoopbackAddress());
+        listener.setSoTimeout(200);
+        // The sandbox's user must be able to reach the work folder in it.
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx--x--x")));
+    }
+
+    @AfterEach
+    void removeThem() throws IOException {
+        listener.close();
+        Files.deleteIfExists(SECRET);
+        Files.deleteIfExists(VICTIM);
+        try (Stream<Path> leaks = Files.list(Path.of("/tmp"))) {
+            for (Path leak : leaks.filter(f -> f.getFileName().toString().startsWith("tick1-attack-leak")).toList()) {
+                Files.delete(leak);
+            }
+        }
+        Files.deleteIfExists(Path.of("/usr/tick1-attack-leak.txt"));
+    }
+
+    /** One grade in a JVM of its own: what it printed, its exit status, and whether it ended. */
+    private record Grade(int status, String output, boolean ended) {
+    }
+
+    private Grade grade(String attack, String... options) throws IOException, InterruptedException {
+        Path student = Files.createDirectories(dir.resolve(attack));
+        Path sphere = student.resolve("Sphere.java"), renderer = student.resolve("Renderer.java");
+        String folder = "/students/attacks/" + attack + "/";
+        Files.writeString(sphere, resourceOr(folder + "Sphere.java", StarterKit.source("Sphere")));
+        Files.writeString(renderer, resourceOr(folder + "Renderer.java", null));
+        return gradeFiles(sphere, renderer, options);
+    }
+
+    private Grade gradeFiles(Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName(), "grade", "--sphere", sphere.toString(), "--renderer", renderer.toString(),
+                "--report", dir.resolve("report").toString()));
+        command.addAll(List.of(SMALL));
+        if (!List.of(options).contains("--time-limit")) {
+            command.addAll(List.of("--time-limit", "10"));
+        }
+        command.addAll(List.of(options));
+        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
+        process.getOutputStream().close();
+        ByteArrayOutputStream output = new ByteArrayOutputStream();
+        Thread reader = new Thread(() -> {
+            try (InputStream in = process.getInputStream()) {
+                in.transferTo(output);
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+        });
+        reader.start();
+        // Not a timing check: a bound on how long to wait for a grade that may hang.
+        boolean ended = process.waitFor(120, TimeUnit.SECONDS);
+        if (!ended) {
+            process.destroyForcibly().waitFor();
+        }
+        reader.join();
+        return new Grade(ended ? process.exitValue() : -1, output.toString(StandardCharsets.UTF_8), ended);
+    }
+
+    /** The checks every attack must pass, whatever it tried. */
+    private void assertFailedAndHarmedNothing(Grade grade) throws IOException, InterruptedException {
+        assertThat(grade.ended()).as("the grade ended:\n" + grade.output()).isTrue();
+        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(grade.output()).as("the verdict").contains("FAILED")
+                .doesNotContain("\n" + GradeCommand.CONGRATULATIONS);
+        assertThat(grade.output()).as("the secret in the grader's output").doesNotContain(secret);
+        assertThat(Files.readString(VICTIM)).as("a file outside the work folder").isEqualTo(VICTIM_TEXT);
+        assertThat(leaks()).as("files the attack left behind").isEmpty();
+        assertThat(listenerHeard()).as("what reached the loopback listener").isEmpty();
+        assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
+        assertThat(processesOf("tick1-attack")).as("processes of the student's left running").isEmpty();
+    }
+
+    @Test
+    void codeThatCopiesTheReferenceRendererFindsNoneToCopy() throws Exception {
+        Grade grade = grade("copy-the-reference");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the code threw",
+                "ClassNotFoundException: gfx.tick1.scene.SceneLoader");
+    }
+
+    @Test
+    void codeThatStealsSecretsFindsNoneAndCannotSendThem() throws Exception {
+        Grade grade = grade("steal-secrets");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("/tmp/tick1-attack-secret.txt: NoSuchFileException",
+                "ConnectException").doesNotContain("HOME=", "USER=");
+    }
+
+    @Test
+    void codeThatDeletesAndChangesFilesOutsideItsFolderCannot() throws Exception {
+        Grade grade = grade("damage-files");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("Read-only file system").doesNotContain("changed the victim",
+                "deleted the victim", "wrote into");
+    }
+
+    @Test
+    void processesTheCodeStartsDoNotOutliveTheGradeNorTouchTheNextOne() throws Exception {
+        Grade attack = grade("outlive-the-grade");
+        assertFailedAndHarmedNothing(attack);
+        Path student = Files.createDirectories(dir.resolve("next-student"));
+        Path[] files = StudentSolution.correct().writeTo(student);
+        Grade next = gradeFiles(files[0], files[1]);
+        assertThat(next.status()).as(next.output()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(processesOf("tick1-attack")).isEmpty();
+    }
+
+    @Test
+    void linksPlantedWhereTheGraderReadsAreNotFollowed() throws Exception {
+        Grade grade = grade("link-to-a-secret");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: 19200 of 19200 pixels differ");
+    }
+
+    @Test
+    void aFifoWhereTheGraderReadsCannotHangIt() throws Exception {
+        Grade grade = grade("fifo-progress", "--time-limit", "4");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: no image within the time limit of 4 s");
+    }
+
+    @Test
+    void aGiantPngIsRefusedFromItsHeaderWithoutDecodingIt() throws Exception {
+        Grade grade = grade("giant-png");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the image written for this scene is unusable: "
+                + "the image is 40000 x 40000, expected 160 x 120");
+    }
+
+    @Test
+    void aSourceThatBlowsUpTheCompilerFailsInsideTheMemoryLimit() throws Exception {
+        Grade grade = grade("compiler-bomb", "--memory", "64");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("FAILED: the code could not be compiled: the compiler ran out of memory");
+    }
+
+    @Test
+    void controlCharactersCannotRewriteTheVerdict() throws Exception {
+        Grade grade = grade("spoof-the-verdict");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("control characters in the report")
+                .doesNotContain("\r", "\033", "\007", "\u202E", "\u200B");
+        assertThat(grade.output().lines().reduce((first, last) -> last)).hasValueSatisfying(
+                last -> assertThat(last).startsWith("FAILED: 2 of 2 scenes wrong."));
+    }
+
+    @Test
+    void threadsCoresAndNativeMemoryAreLimited() throws Exception {
+        Grade grade = grade("exceed-limits", "--memory", "64");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("stopped at").contains("threads, on 1 cores")
+                .doesNotContain("allocated 2200 MiB");
+    }
+
+    @Test
+    void theHiddenScenesContentNeverReachesTheReport() throws Exception {
+        Grade grade = grade("quote-the-hidden-scene");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("hidden.xml: FAIL: the code threw java.lang.IllegalStateException "
+                + "(its message is not shown for a hidden scene)", "SCENES /scenes/0.xml");
+        String tick1 = resourceOr("/gfx/tick1/scenes/tick1.xml", null);
+        assertThat(resourceOr("/gfx/tick1/scenes/hidden.xml", null).lines().map(String::strip)
+                .filter(line -> line.length() > 8 && !tick1.contains(line)))
+                .as("lines of the hidden scene").isNotEmpty()
+                .allSatisfy(line -> assertThat(grade.output()).doesNotContain(line));
+        assertThat(dir.resolve("report").resolve("2-hidden-expected.png")).doesNotExist();
+    }
+
+    @Test
+    void madeUpClassNamesAndStackFramesCannotCarryAHiddenSceneOut() throws Exception {
+        Grade grade = grade("forge-the-stack-trace");
+        assertFailedAndHarmedNothing(grade);
+        String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: FAIL"));
+        assertThat(grade.output()).as("the public scene's report keeps the message").contains("HIDDENLEAK");
+        assertThat(hidden).as("the hidden scene's report").doesNotContain("HIDDENLEAK")
+                .startsWith("hidden.xml: FAIL: the code threw an exception (its message is not shown for a hidden "
+                        + "scene)\n    at gfx.tick1.Renderer.render(Renderer.java:20)\nFAILED");
+    }
+
+    @Test
+    void aTemporaryFolderTheSandboxCannotReachIsOneLineSayingWhatToDo() throws Exception {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx------"));
+        Path[] files = StudentSolution.correct().writeTo(Files.createDirectories(dir.resolve("student")));
+        Grade grade = gradeFiles(files[0], files[1]);
+        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(grade.output()).isEqualTo("tick1 grade: " + dir + ": the sandbox's user cannot pass through this "
+                + "folder to the work folder; grade with a temporary folder it can reach "
+                + "(JAVA_OPTS=-Djava.io.tmpdir=/tmp)" + System.lineSeparator());
+        assertThat(workFolders()).isEmpty();
+    }
+
+    @Test
+    void sigtermStopsTheStudentsCodeAndDeletesTheWorkFolder() throws Exception {
+        Path student = Files.createDirectories(dir.resolve("looping"));
+        Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
+                "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
+        Process grade = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName(), "grade",
+                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
+                "--width", "16", "--height", "12").redirectErrorStream(true)
+                .redirectOutput(dir.resolve("grade.log").toFile()).start();
+        // Wait (at most a minute) for the student's code to be running: its JVM's class path is /harness.
+        for (int i = 0; i < 600 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
+                .contains("StudentHarness render")); i++) {
+            Thread.sleep(100);
+        }
+        assertThat(grade.descendants().map(p -> p.info().commandLine().orElse("")))
+                .as("the student's code is running").anyMatch(line -> line.contains("StudentHarness render"));
+        List<ProcessHandle> running = grade.descendants().toList();
+
+        grade.destroy();   // SIGTERM
+        assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+        for (ProcessHandle process : running) {
+            process.onExit().get(30, TimeUnit.SECONDS);
+        }
+        assertThat(running).as("processes of the student's").noneMatch(ProcessHandle::isAlive);
+        assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
+    }
+
+    private String resourceOr(String name, String otherwise) throws IOException {
+        try (InputStream in = GradeAttackTest.class.getResourceAsStream(name)) {
+            if (in == null) {
+                assertThat(otherwise).as("test resource " + name).isNotNull();
+                return otherwise;
+            }
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+    }
+
+    private static List<Path> leaks() throws IOException {
+        List<Path> found = new ArrayList<>();
+        for (Path folder : List.of(Path.of("/tmp"), Path.of("/usr"), Path.of(System.getProperty("java.home")),
+                Path.of(System.getProperty("user.home")), Path.of("").toAbsolutePath())) {
+            try (Stream<Path> files = Files.list(folder)) {
+                files.filter(f -> f.getFileName().toString().startsWith("tick1-attack-leak")).forEach(found::add);
+            }
+        }
+        return found;
+    }
+
+    private String listenerHeard() throws IOException {
+        StringBuilder heard = new StringBuilder();
+        while (true) {
+            try (Socket client = listener.accept()) {
+                client.setSoTimeout(1000);
+                heard.append(new String(client.getInputStream().readAllBytes(), StandardCharsets.UTF_8)).append('|');
+            } catch (SocketTimeoutException e) {
+                return heard.toString();
+            }
+        }
+    }
+
+    /** Grade work folders are made in the temporary folder; each grade deletes its own. */
+    private List<Path> workFolders() throws IOException {
+        try (Stream<Path> files = Files.list(temporary)) {
+            return files.filter(f -> f.getFileName().toString().startsWith("tick1-grade")).toList();
+        }
+    }
+
+    /** The processes whose command line mentions {@code marker}. */
+    private static List<String> processesOf(String marker) {
+        return ProcessHandle.allProcesses().filter(p -> p.pid() != ProcessHandle.current().pid())
+                .map(p -> p.info().commandLine().orElse(""))
+                .filter(line -> line.contains(marker) && !line.contains("GradeAttackTest")).toList();
+    }
+}
