@@ -20,8 +20,15 @@ import java.net.URLDecoder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.concurrent.CancellationException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * The previewer's HTTP server, on 127.0.0.1 only. It answers:
@@ -30,7 +37,7 @@ import java.util.concurrent.TimeUnit;
  *   <li>{@code GET /three/...}: three.js, from its WebJar;</li>
  *   <li>{@code GET /api/scene} and {@code GET /api/render}: the scene named on the command line
  *       (read afresh each time, so reloading the page shows the file as it is now), as JSON and as
- *       the ray-traced PNG;</li>
+ *       the ray-traced PNG ({@code {"png": base64}}, see {@link #renderWhileTheClientWaits});</li>
  *   <li>{@code POST /api/scene?name=N} and {@code POST /api/render?name=N}: the same for a scene
  *       file the page uploads (the request body), parsed in memory: nothing is written to disk.</li>
  * </ul>
@@ -42,8 +49,9 @@ import java.util.concurrent.TimeUnit;
  * within {@link #REQUEST_DEADLINE_SECONDS} ({@link RequestDeadline}: a stalled connection is
  * closed and its thread freed), at most {@link #CONCURRENT_RENDERS} renders run at a
  * time, a scene of more than {@link #RENDER_BUDGET} sphere-pixels is refused before it is
- * rendered, and a render still running after {@link #RENDER_DEADLINE_SECONDS} is stopped. Each
- * refusal is one clear message.
+ * rendered, a render still running after {@link #RENDER_DEADLINE_SECONDS} is stopped, and a
+ * render whose client has gone is stopped within a fraction of a second. Each refusal is one
+ * clear message.
  */
 public final class PreviewServer implements AutoCloseable {
 
@@ -64,7 +72,18 @@ public final class PreviewServer implements AutoCloseable {
     /** How long one render may run (or wait for its turn) before it is stopped. */
     public static final int RENDER_DEADLINE_SECONDS = 30;
 
+    /** How often an answer still rendering sends a space, to find out whether its client is still there. */
+    private static final long HEARTBEAT_MILLIS = 200;
+
     private static final Semaphore RENDERS = new Semaphore(CONCURRENT_RENDERS, true);
+    /** Where renders run, while the request's own thread keeps its client's connection under watch. */
+    private static final ExecutorService RENDER_THREADS = Executors.newCachedThreadPool(task -> {
+        Thread thread = new Thread(task, "tick1-preview-render");
+        thread.setDaemon(true);
+        return thread;
+    });
+    /** Renders stopped because their client had gone, for the tests. */
+    private static final AtomicInteger RENDERS_ABANDONED = new AtomicInteger();
 
     private final HttpServer server;
     private final RequestDeadline executor;
@@ -199,24 +218,73 @@ public final class PreviewServer implements AutoCloseable {
                         + "tick1 --input instead"));
                 return;
             }
-            BufferedImage image = renderWithinDeadline(loader);
-            if (image == null) {
-                sendJson(exchange, 503, SceneJson.error(name + ": not rendered within " + RENDER_DEADLINE_SECONDS
-                        + " s (the previewer renders " + CONCURRENT_RENDERS + " scenes at a time); render it "
-                        + "with tick1 --input instead"));
-                return;
+            exchange.getResponseHeaders().set("Content-Type", "application/json; charset=utf-8");
+            exchange.sendResponseHeaders(200, 0);
+            try (OutputStream out = exchange.getResponseBody()) {
+                out.write(renderWhileTheClientWaits(loader, name, out).getBytes(StandardCharsets.UTF_8));
             }
-            ByteArrayOutputStream png = new ByteArrayOutputStream();
-            PngOutput.write(image, png);
-            send(exchange, 200, "image/png", png.toByteArray());
         }
     }
 
     /**
-     * The scene's render, waiting for a turn among {@link #CONCURRENT_RENDERS}, or null when the
-     * wait and the render together take longer than {@link #RENDER_DEADLINE_SECONDS}.
+     * The render's answer, {@code {"png": base64}} or {@code {"error": message}}, rendered on a
+     * thread of its own while this one watches the client.
+     *
+     * <p>The JDK's HTTP server never says that a client has closed its connection; writing to it
+     * is the only way to find out. So the answer is begun at once, and while the render runs a
+     * space is sent every {@link #HEARTBEAT_MILLIS} (white space before a JSON value is still JSON,
+     * which is why the image is sent as JSON and not as a bare PNG). Once the client has gone, a
+     * write fails within a heartbeat or two (the first is refused by the client's end, the next
+     * one fails here), and the render is stopped at its next row.
+     *
+     * @throws IOException when the client has gone
      */
-    private static BufferedImage renderWithinDeadline(SceneLoader loader) {
+    private static String renderWhileTheClientWaits(SceneLoader loader, String name, OutputStream out)
+            throws IOException {
+        AtomicBoolean clientGone = new AtomicBoolean();
+        Future<BufferedImage> render = RENDER_THREADS.submit(() -> renderWithinDeadline(loader, clientGone));
+        BufferedImage image;
+        while (true) {
+            try {
+                image = render.get(HEARTBEAT_MILLIS, TimeUnit.MILLISECONDS);
+                break;
+            } catch (TimeoutException stillRendering) {
+                try {
+                    out.write(' ');
+                    out.flush();
+                } catch (IOException gone) {
+                    clientGone.set(true);
+                    RENDERS_ABANDONED.incrementAndGet();
+                    throw gone;
+                }
+            } catch (InterruptedException e) {
+                clientGone.set(true);
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted while rendering", e);
+            } catch (ExecutionException e) {
+                throw new IllegalStateException(e.getCause());
+            }
+        }
+        if (image == null) {
+            return SceneJson.error(name + ": not rendered within " + RENDER_DEADLINE_SECONDS + " s (the previewer "
+                    + "renders " + CONCURRENT_RENDERS + " scenes at a time); render it with tick1 --input instead");
+        }
+        ByteArrayOutputStream png = new ByteArrayOutputStream();
+        PngOutput.write(image, png);
+        return SceneJson.image(png.toByteArray());
+    }
+
+    /** How many renders have been stopped because their client had gone. */
+    static int rendersAbandoned() {
+        return RENDERS_ABANDONED.get();
+    }
+
+    /**
+     * The scene's render, waiting for a turn among {@link #CONCURRENT_RENDERS}, or null when the
+     * wait and the render together take longer than {@link #RENDER_DEADLINE_SECONDS} or the
+     * client has gone.
+     */
+    private static BufferedImage renderWithinDeadline(SceneLoader loader, AtomicBoolean clientGone) {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(RENDER_DEADLINE_SECONDS);
         try {
             if (!RENDERS.tryAcquire(RENDER_DEADLINE_SECONDS, TimeUnit.SECONDS)) {
@@ -227,8 +295,11 @@ public final class PreviewServer implements AutoCloseable {
             return null;
         }
         try {
+            if (clientGone.get()) {
+                return null;
+            }
             return new FastRenderer(IMAGE_WIDTH, IMAGE_HEIGHT, new SamplePattern(1)).render(loader.getScene(), rows -> {
-                if (System.nanoTime() > deadline) {
+                if (clientGone.get() || System.nanoTime() > deadline) {
                     throw new CancellationException();
                 }
             });

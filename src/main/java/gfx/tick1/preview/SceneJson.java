@@ -5,6 +5,7 @@ import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.Sphere;
 import gfx.tick1.scene.SphereGeometry;
+import java.util.Base64;
 import java.util.List;
 import java.util.StringJoiner;
 
@@ -40,6 +41,11 @@ final class SceneJson {
     /** {@code {"error": message}}: what the page shows instead of a scene. */
     static String error(String message) {
         return "{\"error\":" + string(message) + "}";
+    }
+
+    /** {@code {"png": base64}}: a ray-traced image, as the page shows it. */
+    static String image(byte[] png) {
+        return "{\"png\":\"" + Base64.getEncoder().encodeToString(png) + "\"}";
     }
 
     // The loader accepts only finite numbers, and Java prints those in a form JSON accepts

@@ -226,6 +226,7 @@ const raytraced = document.getElementById('raytraced');
 const raytracedLink = document.getElementById('raytraced-link');
 const raytracedCaption = document.getElementById('raytraced-caption');
 let generation = 0;   // a later load supersedes any earlier one still in flight
+let inFlight = null;  // the AbortController of that earlier load: aborting it stops its render on the server
 
 function showMessage(kind, lines) {
   message.hidden = lines.length === 0;
@@ -254,17 +255,26 @@ function showImage(blob, name) {
   raytracedLink.download = name.replace(/^.*[\\/]/, '').replace(/\.xml$/i, '') + '.png';
 }
 
+/** A PNG sent as base64 (the render's answer is JSON: see PreviewServer), as a Blob to show. */
+function pngBlob(base64) {
+  const bytes = Uint8Array.from(atob(base64), c => c.charCodeAt(0));
+  return new Blob([bytes], { type: 'image/png' });
+}
+
 /**
- * Shows one scene: {@code request(path)} fetches /api/scene or /api/render for it (GET for the
- * command line's scene, POST of the file for a dropped one).
+ * Shows one scene: {@code request(path, signal)} fetches /api/scene or /api/render for it (GET
+ * for the command line's scene, POST of the file for a dropped one).
  */
 async function load(name, request) {
   const mine = ++generation;
+  if (inFlight) inFlight.abort();
+  const controller = new AbortController();
+  inFlight = controller;
   body.dataset.status = 'loading';
   delete body.dataset.rendered;
   nameLine.textContent = name;
   try {
-    const response = await request('/api/scene');
+    const response = await request('/api/scene', controller.signal);
     const description = await response.json();
     if (mine !== generation) return;
     if (!response.ok) {
@@ -281,17 +291,19 @@ async function load(name, request) {
     showMessage('warning', description.warnings);
     body.dataset.status = 'rendering';
     raytracedCaption.textContent = 'Ray tracing...';
-    const render = await request('/api/render');
+    const render = await request('/api/render', controller.signal);
+    // The answer may begin with spaces, sent while the server renders; JSON allows them.
+    const result = await render.json();
     if (mine !== generation) return;
-    if (!render.ok) {
+    if (!render.ok || result.error) {
       showImage(null);
-      showMessage('error', [(await render.json()).error]);
+      showMessage('error', [result.error]);
       body.dataset.status = 'error';
       return;
     }
-    showImage(await render.blob(), description.name);
+    showImage(pngBlob(result.png), description.name);
   } catch (error) {
-    if (mine !== generation) return;
+    if (mine !== generation || error.name === 'AbortError') return;
     showMessage('error', ['The previewer did not answer (is tick1 preview still running?): ' + error.message]);
     body.dataset.status = 'error';
   }
@@ -301,7 +313,8 @@ function loadFile(file) {
   // The File goes as the request body as it is: the browser streams it, and the server applies
   // the loader's size limit.
   const query = '?name=' + encodeURIComponent(file.name);
-  load(file.name, path => fetch(path + query, { method: 'POST', body: file, headers: { 'Content-Type': 'application/xml' } }));
+  load(file.name, (path, signal) => fetch(path + query,
+    { method: 'POST', body: file, headers: { 'Content-Type': 'application/xml' }, signal }));
 }
 
 document.getElementById('file').addEventListener('change', event => {
@@ -325,4 +338,4 @@ window.addEventListener('drop', event => {
 
 resize();
 build(null);
-load('', path => fetch(path));
+load('', (path, signal) => fetch(path, { signal }));

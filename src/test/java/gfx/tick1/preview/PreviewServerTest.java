@@ -21,7 +21,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Base64;
 import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -157,13 +160,20 @@ class PreviewServerTest {
                 + "{\"position\":[-0.55,0.0,5.0],\"radius\":0.9,\"colour\":\"#FF1D25\"}]}");
     }
 
+    /** The PNG of a render's answer, {@code {"png": base64}} after any spaces sent while it rendered. */
+    private static byte[] png(HttpResponse<byte[]> response) {
+        Matcher answer = Pattern.compile("\\s*\\{\"png\":\"([A-Za-z0-9+/=]*)\"}").matcher(text(response));
+        assertThat(answer.matches()).as("a render's answer: %s", text(response)).isTrue();
+        return Base64.getDecoder().decode(answer.group(1));
+    }
+
     @Test
     void rendersAnUploadWithTheCommandLinesRenderer() throws Exception {
         HttpResponse<byte[]> response = send(upload("/api/render", "tick1.xml", Files.readAllBytes(TICK1_XML)));
         assertThat(response.statusCode()).isEqualTo(200);
-        assertThat(response.headers().firstValue("Content-Type")).hasValue("image/png");
+        assertThat(response.headers().firstValue("Content-Type")).hasValue("application/json; charset=utf-8");
 
-        BufferedImage served = ImageIO.read(new ByteArrayInputStream(response.body()));
+        BufferedImage served = ImageIO.read(new ByteArrayInputStream(png(response)));
         BufferedImage expected = new ReferenceRenderer(640, 480).render(new SceneLoader(TICK1_XML, false).getScene());
         assertThat(ImageDifference.between(expected, served).differingPixels()).isZero();
     }
@@ -252,5 +262,39 @@ class PreviewServerTest {
         assertThat(text(response)).isEqualTo("{\"error\":\"crowd.xml: " + spheres + " spheres at 640 x 480 is more "
                 + "than the previewer renders (at most " + (spheres - 1) + " spheres); render it with tick1 --input "
                 + "instead\"}");
+    }
+
+    @Test
+    void aRenderWhoseClientHasGoneIsStopped() throws Exception {
+        // Concentric spheres: every ray meets every sphere's bounds, so this render, within the
+        // budget, would take longer than the render deadline.
+        int spheres = (int) (PreviewServer.RENDER_BUDGET / (640 * 480));
+        StringBuilder xml = new StringBuilder("<scene>\n<point-light x=\"0\" y=\"5\" z=\"0\" colour=\"#FFFFFF\"/>\n");
+        for (int i = 0; i < spheres; i++) {
+            xml.append("<sphere z=\"100\" radius=\"").append(1 + i * 0.001).append("\" colour=\"#FF0000\"/>\n");
+        }
+        xml.append("</scene>\n");
+        byte[] scene = xml.toString().getBytes(StandardCharsets.UTF_8);
+        int abandonedBefore = PreviewServer.rendersAbandoned();
+
+        try (Socket socket = new Socket("127.0.0.1", port())) {
+            OutputStream out = socket.getOutputStream();
+            out.write(("POST /api/render?name=onion.xml HTTP/1.1\r\nHost: 127.0.0.1:" + port() + "\r\nOrigin: "
+                    + "http://127.0.0.1:" + port() + "\r\nContent-Length: " + scene.length + "\r\n\r\n")
+                    .getBytes(StandardCharsets.ISO_8859_1));
+            out.write(scene);
+            out.flush();
+            // The answer has begun: the status line, then spaces while the render runs.
+            InputStream in = socket.getInputStream();
+            assertThat(new String(in.readNBytes(15), StandardCharsets.ISO_8859_1)).isEqualTo("HTTP/1.1 200 OK");
+        }
+
+        // Not a timing check: a bound on how long to wait for a server that never notices.
+        long giveUp = System.nanoTime() + Duration.ofSeconds(PreviewServer.RENDER_DEADLINE_SECONDS).toNanos();
+        while (PreviewServer.rendersAbandoned() == abandonedBefore && System.nanoTime() < giveUp) {
+            Thread.sleep(50);
+        }
+        assertThat(PreviewServer.rendersAbandoned()).as("renders stopped because their client had gone")
+                .isEqualTo(abandonedBefore + 1);
     }
 }
