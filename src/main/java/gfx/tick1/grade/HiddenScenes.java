@@ -23,6 +23,10 @@ final class HiddenScenes {
             "at (gfx\\.tick1\\.[\\w$]{1,60})\\.([\\w$<>]{1,60})\\(([\\w$]{1,60})\\.java:(\\d{1,6})\\)");
     private static final Pattern LAMBDA = Pattern.compile("lambda\\$(\\w+)\\$\\d{1,4}");
     private static final Pattern WORD = Pattern.compile("[A-Za-z_$][\\w$]*");
+    /** The size a PNG header claims, in StudentProcess's reason for an unusable image. */
+    private static final Pattern CHOSEN_SIZE = Pattern.compile("the image is \\d+ x \\d+, expected (\\d+ x \\d+)");
+    /** The exit status the program ended with, in StudentProcess's reason. */
+    private static final Pattern CHOSEN_EXIT_STATUS = Pattern.compile(", with exit status -?\\d+ \\(.*\\)$");
 
     /** The words of the sources: the only method and file names a true stack frame can have. */
     private final Set<String> words = new HashSet<>();
@@ -43,10 +47,16 @@ final class HiddenScenes {
         });
     }
 
-    /** {@code reason} without anything of the student's code's own words. */
+    /**
+     * {@code reason} without anything of the student's code's own words or numbers: its
+     * exception's message, and the numbers it chose (an image's width and height as its PNG header
+     * gives them, its exit status), any of which could carry bytes of the scene it read.
+     */
     String withoutMessages(String reason) {
         if (!reason.startsWith(THREW)) {
-            return reason;
+            return CHOSEN_SIZE.matcher(CHOSEN_EXIT_STATUS.matcher(reason)
+                    .replaceAll(", with an exit status of its own (System.exit, or the JVM crashed)"))
+                    .replaceAll("the image is not $1");
         }
         List<String> reasonLines = reason.substring(THREW.length()).lines().toList();
         String first = reasonLines.isEmpty() ? "" : reasonLines.get(0);

@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.nio.file.SimpleFileVisitor;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
 
 /**
@@ -29,9 +30,18 @@ final class WorkFolder {
      * process did to the permissions of what it wrote. Never throws: it runs on the way out,
      * Ctrl-C and SIGTERM included; it may run twice at once (the shutdown hook and the command).
      *
-     * @return null, or why the folder could not be deleted, in one line
+     * @return null, or why the folder could not be deleted, in one line that names only the work
+     *     folder itself (the names inside it are the student's, and may hold anything)
      */
     static synchronized String delete(Path folder) {
+        if (deleteByWalking(folder) || deleteWithRm(folder)) {
+            return null;
+        }
+        return "cannot delete the work folder " + folder + ": delete it by hand (it may hold hidden scenes)";
+    }
+
+    /** Whether walking the tree deleted it all. */
+    private static boolean deleteByWalking(Path folder) {
         try {
             Files.walkFileTree(folder, new SimpleFileVisitor<>() {
                 @Override
@@ -64,11 +74,33 @@ final class WorkFolder {
                 }
             });
         } catch (NoSuchFileException e) {
-            // Already deleted.
+            return true;   // already deleted
         } catch (IOException e) {
-            return "cannot delete the work folder " + folder + ": " + e.getMessage();
+            return false;
         }
-        return null;
+        return !Files.exists(folder, LinkOption.NOFOLLOW_LINKS);
+    }
+
+    /**
+     * Whether {@code rm -rf} deleted the tree. The student's code can make a tree deeper than a
+     * path may be long (PATH_MAX, 4096 bytes), which no deletion by whole paths can reach; GNU
+     * rm descends folder by folder, relative to each one it has open, at any depth.
+     */
+    private static boolean deleteWithRm(Path folder) {
+        try {
+            Process rm = new ProcessBuilder("/bin/rm", "-rf", "--one-file-system", "--", folder.toString())
+                    .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            if (!rm.waitFor(2, TimeUnit.MINUTES)) {
+                rm.destroyForcibly();
+                return false;
+            }
+        } catch (IOException e) {
+            return false;   // no rm here
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
+        }
+        return !Files.exists(folder, LinkOption.NOFOLLOW_LINKS);
     }
 
     /**

@@ -19,6 +19,8 @@ import java.util.concurrent.TimeUnit;
 final class RequestDeadline implements Executor {
 
     private static final ThreadLocal<ScheduledFuture<?>> ALARM = new ThreadLocal<>();
+    /** How long a request taken up after its deadline has to be read. */
+    private static final long LATE_GRACE_MILLIS = 200;
 
     private final ExecutorService threads;
     private final ScheduledExecutorService timer;
@@ -32,9 +34,17 @@ final class RequestDeadline implements Executor {
 
     @Override
     public void execute(Runnable exchange) {
+        // The deadline runs from the request's arrival, not from when a thread takes it up: else
+        // stalled connections waiting in the queue would each hold a thread for a whole deadline
+        // in turn, and a page request behind N of them would wait N / threads deadlines.
+        long arrived = System.nanoTime();
         threads.execute(() -> {
             Thread thread = Thread.currentThread();
-            ScheduledFuture<?> alarm = timer.schedule(thread::interrupt, deadlineMillis, TimeUnit.MILLISECONDS);
+            long waited = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - arrived);
+            // A request that waited past its deadline has had all that time to arrive whole: a
+            // moment is enough to read it from the connection's buffer.
+            long left = Math.max(LATE_GRACE_MILLIS, deadlineMillis - waited);
+            ScheduledFuture<?> alarm = timer.schedule(thread::interrupt, left, TimeUnit.MILLISECONDS);
             ALARM.set(alarm);
             try {
                 exchange.run();

@@ -223,6 +223,13 @@ class GradeAttackTest {
     }
 
     @Test
+    void aTreeDeeperThanAPathMayBeLongIsDeletedAndNoNameOfItIsPrinted() throws Exception {
+        Grade grade = grade("deep-tree");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("left a deep tree").doesNotContain("\u001b", "cannot delete");
+    }
+
+    @Test
     void threadsCoresAndNativeMemoryAreLimited() throws Exception {
         Grade grade = grade("exceed-limits", "--memory", "64");
         assertFailedAndHarmedNothing(grade);
