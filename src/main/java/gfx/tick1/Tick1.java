@@ -117,7 +117,6 @@ public final class Tick1 implements Callable<Integer> {
 
     public static void main(String[] args) {
         Timings.mainStarted();
-        PngOutput.prepareInBackground();
         CommandLine commandLine = commandLine(new Tick1(), args);
         int status;
         try {

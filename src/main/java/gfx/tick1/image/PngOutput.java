@@ -163,24 +163,6 @@ public final class PngOutput {
     }
 
     /**
-     * Loads ImageIO's PNG writer on a background thread. Its first use reads ImageIO's plugin
-     * registry and loads the writer's classes, a cost paid once per process that a render would
-     * otherwise add to its end; started first thing, it runs beside the command line's set-up and
-     * the scene's loading, which keep only one core busy.
-     */
-    public static void prepareInBackground() {
-        Thread thread = new Thread(() -> {
-            try {
-                write(new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB), OutputStream.nullOutputStream());
-            } catch (Throwable e) { // even OutOfMemoryError: this thread must never print or fail the run
-                // Only a head start: the real write reports whatever is wrong.
-            }
-        }, "tick1-prepare-png-writer");
-        thread.setDaemon(true);
-        thread.start();
-    }
-
-    /**
      * ImageIO reports a failed write ("No space left on device", a closed pipe) as "I/O error
      * writing PNG file!" with the real reason as its cause; the reason is what a user needs.
      */
