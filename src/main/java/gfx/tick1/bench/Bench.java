@@ -177,8 +177,8 @@ public final class Bench implements Callable<Integer> {
         BufferedImage frame = new FastRenderer(settings.width, settings.height, new SamplePattern(1)).render(scene);
         Map<String, String> rows = new LinkedHashMap<>();
         Map<String, Encoder> encoders = new LinkedHashMap<>();
+        encoders.put("ImageIO, deflate level 1", (image, stream) -> PngOutput.write(image, stream, 1));
         encoders.put("ImageIO, deflate level " + PngOutput.DEFLATE_LEVEL + " (tick1's setting)", PngOutput::write);
-        encoders.put("ImageIO, deflate level 2", (image, stream) -> PngOutput.write(image, stream, 2));
         encoders.put("ImageIO, defaults (deflate level 4)", (image, stream) -> ImageIO.write(image, "png", stream));
         encoders.put("ImageIO, deflate level 9", (image, stream) -> PngOutput.write(image, stream, 9));
         for (Map.Entry<String, Encoder> encoder : encoders.entrySet()) {
