@@ -166,10 +166,16 @@ public final class Bench implements Callable<Integer> {
         Result result = new Result(variant.name(), sceneName, width, height, variant.samples(), variant.threads(),
                 timing, errorAgainst, ImageDifference.between(reference, small), reference.getWidth(),
                 reference.getHeight());
-        log.printf("  %-45s %-16s %4d threads %9.1f ms %8.1f Mrays/s  max error %d levels%n", variant.name(), sceneName,
-                variant.threads(), timing.median(), result.megaRaysPerSecond(), result.error().maxDifference());
+        log.printf("  %-45s %-16s %-11s %9.1f ms %8.1f Mrays/s  max error %s%n", variant.name(), sceneName,
+                count(variant.threads(), "thread"), timing.median(), result.megaRaysPerSecond(),
+                count(result.error().maxDifference(), "level"));
         log.flush();
         return result;
+    }
+
+    /** "1 thread", "2 threads": a count and its noun, in the number English gives it. */
+    static String count(int n, String noun) {
+        return n + " " + noun + (n == 1 ? "" : "s");
     }
 
     /** ImageIO's PNG writer at several deflate levels on the benchmark's largest tick1 frame: time and size. */

@@ -43,6 +43,11 @@ class BenchCommandTest {
     }
 
     @Test
+    void aCountOfOneIsSingular() {
+        assertThat(printed).contains(" 1 thread ", "max error 1 level\n").doesNotContain("1 threads", "1 levels");
+    }
+
+    @Test
     void theCsvHasARowForEveryVariantWithTimeAndError() throws IOException {
         List<String> lines = Files.readAllLines(out.resolve("results.csv"));
         assertThat(lines.get(0)).startsWith("variant,scene,width,height,samples,threads,median_ms")
