@@ -183,7 +183,7 @@ final class SceneDocument {
             element.setUserData(ORIGIN, new Origin(at, shared(names)), null);
             current.appendChild(element);
             current = element;
-            if (!name.equals("scene") && !SceneLoader.ATTRIBUTES.containsKey(name)) {
+            if (!name.equals(SceneLoader.ROOT) && !SceneLoader.ATTRIBUTES.containsKey(name)) {
                 throw new UnknownElement(name);
             }
         }

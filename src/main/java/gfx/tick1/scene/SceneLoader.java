@@ -53,6 +53,8 @@ public final class SceneLoader {
     /** The largest magnitude accepted for any coordinate, radius or intensity. */
     public static final double MAX_MAGNITUDE = 1e16;
 
+    /** The root element of every scene file. */
+    static final String ROOT = "scene";
     /** The elements inside {@code <scene>}, each with the attributes it may have. */
     static final Map<String, Set<String>> ATTRIBUTES = Map.of(
             "sphere", Set.of("x", "y", "z", "radius", "colour"),
@@ -206,7 +208,7 @@ public final class SceneLoader {
                 return;
             }
             SourcePositions.Position at = SceneDocument.positionOf(root);
-            if (!root.getTagName().equals("scene")) {
+            if (!root.getTagName().equals(ROOT)) {
                 throw error(at, "root element <" + root.getTagName() + ">: expected <scene>");
             }
             checkAttributes(at, root, Set.of());
