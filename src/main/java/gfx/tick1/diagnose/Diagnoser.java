@@ -64,7 +64,7 @@ public final class Diagnoser {
      * to count as showing a scene: any shading, right or wrong, leaves the spheres' outlines where
      * they are, while another scene's spheres cover other pixels.
      */
-    public static final double SAME_SCENE = 0.98;
+    private static final double SAME_SCENE = 0.98;
 
     /**
      * The entries whose outlines differ from the correct one's: between them they give every

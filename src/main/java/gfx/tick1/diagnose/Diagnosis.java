@@ -21,7 +21,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
      * Two entries whose shares of exactly matching pixels are closer than this (0.1 percentage
      * points) are a near tie: the image does not tell them apart, so neither is called the winner.
      */
-    public static final double NEAR_TIE = 0.001;
+    private static final double NEAR_TIE = 0.001;
 
     /** One catalogue entry and how the image differs from its render. */
     public record Candidate(Variant variant, ImageDifference difference) {
@@ -104,7 +104,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
      * Whether even the closest entry leaves most pixels more than a level off: then the image
      * probably shows another scene, another size of image, or a mistake not in the catalogue.
      */
-    public boolean isWeak() {
+    private boolean isWeak() {
         return closest().withinOneShare() < 0.5;
     }
 

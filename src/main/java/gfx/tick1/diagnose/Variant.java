@@ -94,6 +94,11 @@ public enum Variant {
     private final String figure;
     private final String explanation;
     private final String reread;
+    /**
+     * Whether the mistake can change an image at all. One cannot: an unchecked negative
+     * discriminant gives NaN distances, which the starter's Scene never takes as the closest hit.
+     * {@code diagnose} leaves such entries out; {@code tick1 diff} still names them in code.
+     */
     private final boolean showsInImages;
 
     Variant(String label, String figure, String explanation, String reread) {
@@ -121,15 +126,6 @@ public enum Variant {
     /** Where in the handout to look. */
     public String reread() {
         return reread;
-    }
-
-    /**
-     * Whether the mistake can change an image at all. One cannot: an unchecked negative
-     * discriminant gives NaN distances, which the starter's Scene never takes as the closest hit.
-     * {@code diagnose} leaves such entries out; {@code tick1 diff} still names them in code.
-     */
-    public boolean showsInImages() {
-        return showsInImages;
     }
 
     /** The entries {@code diagnose} can tell apart by their images. */

@@ -1,6 +1,7 @@
 package gfx.tick1.diff;
 
 import gfx.tick1.diagnose.Variant;
+import gfx.tick1.starter.StarterKit;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.PrintWriter;
@@ -47,7 +48,6 @@ public final class DiffCommand implements Callable<Integer> {
     public static final int EXIT_CANNOT_COMPARE = 2;
 
     /** The classes a student writes, whose reference source the program carries. */
-    static final List<String> STUDENT_CLASSES = List.of("Sphere", "Renderer");
 
     @Spec
     private CommandSpec spec;
@@ -64,7 +64,7 @@ public final class DiffCommand implements Callable<Integer> {
         for (Path file : files) {
             try {
                 JavaMembers parsed = JavaMembers.parse(file.toString(), read(file));
-                if (!STUDENT_CLASSES.contains(parsed.className())) {
+                if (!StarterKit.STUDENT_CLASSES.contains(parsed.className())) {
                     err.println("tick1 diff: " + file + ": class " + parsed.className()
                             + ": expected Sphere or Renderer, the two classes of the tick");
                     return EXIT_CANNOT_COMPARE;
@@ -116,8 +116,11 @@ public final class DiffCommand implements Callable<Integer> {
                 for (LineDiff.Line line : hunk) {
                     String text = line.kind() + line.text();
                     lines.add(line.kind() == '-' ? colours.red(text) : line.kind() == '+' ? colours.green(text) : text);
-                    (line.kind() == '-' ? removed : line.kind() == '+' ? added : new ArrayList<String>())
-                            .add(line.text().strip());
+                    if (line.kind() == '-') {
+                        removed.add(line.text().strip());
+                    } else if (line.kind() == '+') {
+                        added.add(line.text().strip());
+                    }
                 }
             }
             for (Variant hint : Hints.of(new Hints.Change(signature, removed, added, b))) {

@@ -11,7 +11,7 @@ import java.util.List;
 public final class LineDiff {
 
     /** Unchanged lines shown before and after each change, as {@code diff -u} shows. */
-    public static final int CONTEXT = 3;
+    private static final int CONTEXT = 3;
 
     /** One line of a hunk: ' ', '-' or '+', and its text. */
     public record Line(char kind, String text) {

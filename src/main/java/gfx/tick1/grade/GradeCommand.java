@@ -336,11 +336,12 @@ public final class GradeCommand implements Callable<Integer> {
         boolean referencesAgree = handout != null && robust != null
                 && ImageDifference.between(handout, robust).differingPixels() == 0;
         if (toHandout != null && toHandout.differingPixels() == 0 || toRobust != null && toRobust.differingPixels() == 0) {
-            String which = handout == null || robust == null || referencesAgree ? "the reference"
-                    : toHandout.differingPixels() == 0 ? "the handout-arithmetic reference" : "the robust reference";
-            String other = handout == null || robust == null || referencesAgree ? ""
-                    : toHandout.differingPixels() == 0 ? "; the robust reference differs on this scene"
-                    : "; the handout-arithmetic reference differs on this scene";
+            String which = "the reference", other = "";
+            if (handout != null && robust != null && !referencesAgree) {
+                boolean handoutMatched = toHandout.differingPixels() == 0;
+                which = handoutMatched ? "the handout-arithmetic reference" : "the robust reference";
+                other = "; the " + (handoutMatched ? "robust" : "handout-arithmetic") + " reference differs on this scene";
+            }
             out.println(grading.name() + ": PASS (identical to " + which + ", "
                     + (toHandout != null ? toHandout : toRobust).totalPixels() + " pixels" + other + ")");
             return true;
