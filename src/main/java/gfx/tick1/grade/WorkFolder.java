@@ -82,25 +82,51 @@ final class WorkFolder {
     }
 
     /**
-     * Whether {@code rm -rf} deleted the tree. The student's code can make a tree deeper than a
-     * path may be long (PATH_MAX, 4096 bytes), which no deletion by whole paths can reach; GNU
-     * rm descends folder by folder, relative to each one it has open, at any depth.
+     * Whether {@code chmod -R u+rwx} then {@code rm -rf} deleted the tree. The student's code can
+     * make a tree deeper than a path may be long (PATH_MAX, 4096 bytes), which no deletion by
+     * whole paths can reach; GNU chmod and rm descend folder by folder, relative to each one they
+     * have open, at any depth, and neither follows a link. chmod first, because below that depth
+     * the walk above could not undo what the code did to permissions (it runs as the grader's
+     * user when the grader is not root).
      */
     private static boolean deleteWithRm(Path folder) {
+        String name = folder.toString();
+        run("/bin/chmod", "-R", "u+rwx", "--", name);   // what it cannot change, rm reports by failing
+        return run("/bin/rm", "-rf", "--one-file-system", "--", name)
+                && !Files.exists(folder, LinkOption.NOFOLLOW_LINKS);
+    }
+
+    /**
+     * Runs a command to its end, at most two minutes, whatever this thread's interrupt status (the
+     * grade may be stopping: the folder must still go); whether it exited 0.
+     */
+    private static boolean run(String... command) {
+        Process process;
         try {
-            Process rm = new ProcessBuilder("/bin/rm", "-rf", "--one-file-system", "--", folder.toString())
-                    .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-            if (!rm.waitFor(2, TimeUnit.MINUTES)) {
-                rm.destroyForcibly();
-                return false;
-            }
+            process = new ProcessBuilder(command).redirectErrorStream(true)
+                    .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         } catch (IOException e) {
-            return false;   // no rm here
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return false;
+            return false;   // no such program here
         }
-        return !Files.exists(folder, LinkOption.NOFOLLOW_LINKS);
+        long deadline = System.nanoTime() + TimeUnit.MINUTES.toNanos(2);
+        boolean interrupted = false;
+        try {
+            while (true) {
+                try {
+                    if (process.waitFor(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS)) {
+                        return process.exitValue() == 0;
+                    }
+                    process.destroyForcibly();
+                    return false;
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+        } finally {
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+        }
     }
 
     /**

@@ -253,16 +253,18 @@ public final class PreviewServer implements AutoCloseable {
                     out.write(' ');
                     out.flush();
                 } catch (IOException gone) {
-                    clientGone.set(true);
+                    abandon(render, clientGone);
                     RENDERS_ABANDONED.incrementAndGet();
                     throw gone;
                 }
             } catch (InterruptedException e) {
-                clientGone.set(true);
+                abandon(render, clientGone);
                 Thread.currentThread().interrupt();
                 throw new IOException("interrupted while rendering", e);
             } catch (ExecutionException e) {
-                throw new IllegalStateException(e.getCause());
+                // The answer has begun (200 and spaces): say what went wrong in its body.
+                return SceneJson.error("tick1 preview: internal error: " + e.getCause()
+                        + " (please report this with the scene file)");
             }
         }
         if (image == null) {
@@ -272,6 +274,15 @@ public final class PreviewServer implements AutoCloseable {
         ByteArrayOutputStream png = new ByteArrayOutputStream();
         PngOutput.write(image, png);
         return SceneJson.image(png.toByteArray());
+    }
+
+    /**
+     * Stops a render nobody waits for: a running one at its next row, through {@code clientGone};
+     * one still waiting for its turn at once, through the interrupt, so that it holds no thread.
+     */
+    private static void abandon(Future<BufferedImage> render, AtomicBoolean clientGone) {
+        clientGone.set(true);
+        render.cancel(true);
     }
 
     /** How many renders have been stopped because their client had gone. */

@@ -20,7 +20,7 @@ final class RequestDeadline implements Executor {
 
     private static final ThreadLocal<ScheduledFuture<?>> ALARM = new ThreadLocal<>();
     /** How long a request taken up after its deadline has to be read. */
-    private static final long LATE_GRACE_MILLIS = 200;
+    private static final long LATE_GRACE_MILLIS = 1000;
 
     private final ExecutorService threads;
     private final ScheduledExecutorService timer;
@@ -41,8 +41,9 @@ final class RequestDeadline implements Executor {
         threads.execute(() -> {
             Thread thread = Thread.currentThread();
             long waited = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - arrived);
-            // A request that waited past its deadline has had all that time to arrive whole: a
-            // moment is enough to read it from the connection's buffer.
+            // A request that waited past its deadline has had all that time to arrive: its headers
+            // and a small body are in the connection's buffer, and a second is enough to read
+            // them. (A large upload taken up that late may be cut off; the page then says so.)
             long left = Math.max(LATE_GRACE_MILLIS, deadlineMillis - waited);
             ScheduledFuture<?> alarm = timer.schedule(thread::interrupt, left, TimeUnit.MILLISECONDS);
             ALARM.set(alarm);
