@@ -1,0 +1,29 @@
+package gfx.tick1.grade.cohort;
+
+/**
+ * How much of a cohort's download the intake will read, so that a zip bomb or a huge upload costs a clear message,
+ * not the grader's memory. Sizes count bytes actually inflated, never the sizes an archive's headers claim.
+ *
+ * @param maxFileBytes      the largest Sphere.java or Renderer.java read; a real one is a few KiB
+ * @param maxNestedZipBytes the largest zip inside a student's folder that is opened (it is held in memory)
+ * @param maxEntries        the most entries one zip, or one student's unpacked folder, may have
+ * @param maxTotalBytes     the most bytes inflated in one intake, all students together
+ */
+public record IntakeLimits(long maxFileBytes, long maxNestedZipBytes, int maxEntries, long maxTotalBytes) {
+
+    private static final long MIB = 1024 * 1024;
+
+    /** The limits of {@code tick1 grade --submissions}. */
+    public static final IntakeLimits DEFAULT = new IntakeLimits(MIB, 64 * MIB, 65_535, 1024 * MIB);
+
+    public IntakeLimits {
+        if (maxFileBytes <= 0 || maxNestedZipBytes <= 0 || maxEntries <= 0 || maxTotalBytes <= 0) {
+            throw new IllegalArgumentException("intake limits must be positive");
+        }
+    }
+
+    /** A size for messages: "1 MiB", "64 MiB", or bytes when smaller than a MiB. */
+    static String size(long bytes) {
+        return bytes % MIB == 0 ? bytes / MIB + " MiB" : bytes + " bytes";
+    }
+}
