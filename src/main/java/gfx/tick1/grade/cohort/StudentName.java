@@ -22,7 +22,8 @@ record StudentName(String id, String fullName) {
 
     private static final Pattern MOODLE_FOLDER = Pattern.compile("(.*)_(\\d+)" + MOODLE_SUFFIX);
     private static final Pattern MOODLE_LOOSE_FILE = Pattern.compile("((.*)_(\\d+)" + MOODLE_SUFFIX + ")(.+)");
-    private static final Pattern OTHER_PLUGIN_FOLDER = Pattern.compile(".*_\\d+_assignsubmission_[a-z]+_");
+    private static final Pattern OTHER_SUBMISSION_TYPE =
+            Pattern.compile(".*_\\d+_assignsubmission_(?!file_)[a-z]+_.*");
 
     /** The student a top-level folder belongs to. */
     static StudentName ofFolder(String folder) {
@@ -31,11 +32,11 @@ record StudentName(String id, String fullName) {
     }
 
     /**
-     * Moodle's folder of another submission type (online text, comments), which holds no Java files: {@code
-     * Jane Doe_123_assignsubmission_onlinetext_}.
+     * Moodle's folder, or loose file, of another submission type (online text, comments), which holds no Java
+     * files: {@code Jane Doe_123_assignsubmission_onlinetext_}.
      */
-    static boolean isOtherSubmissionType(String folder) {
-        return OTHER_PLUGIN_FOLDER.matcher(folder).matches() && !MOODLE_FOLDER.matcher(folder).matches();
+    static boolean isOtherSubmissionType(String name) {
+        return OTHER_SUBMISSION_TYPE.matcher(name).matches();
     }
 
     /**

@@ -118,10 +118,10 @@ public final class Submissions {
     }
 
     /** An entry of the download: refusals inside it are the download's, a size over the cap the student's. */
-    private static Reader outerReader(Path path, ZipArchive zip, ZipArchive.Entry entry) {
+    private Reader outerReader(Path path, ZipArchive zip, ZipArchive.Entry entry) {
         return cap -> {
             try {
-                return zip.read(entry, cap);
+                return charge(zip.read(entry, cap));
             } catch (ZipArchive.Refused e) {
                 throw new CohortInputException(path + ": " + e.getMessage());
             }
@@ -186,7 +186,7 @@ public final class Submissions {
     }
 
     /** A file on disk, opened without following a link, read no further than the cap. */
-    private static Reader fileReader(Path file) {
+    private Reader fileReader(Path file) {
         return cap -> {
             try (SeekableByteChannel channel = Files.newByteChannel(file, StandardOpenOption.READ,
                     LinkOption.NOFOLLOW_LINKS)) {
@@ -201,8 +201,8 @@ public final class Submissions {
                 }
                 byte[] bytes = new byte[buffer.position()];
                 buffer.flip().get(bytes);
-                return bytes;
-            } catch (ZipArchive.TooLarge e) {
+                return charge(bytes);
+            } catch (ZipArchive.TooLarge | CohortInputException e) {
                 throw e;
             } catch (IOException e) {
                 throw new ZipArchive.Refused("cannot read it (" + reason(e) + ")");
@@ -271,11 +271,9 @@ public final class Submissions {
         void add(String path, Reader reader) throws IOException {
             files++;
             String name = path.substring(path.lastIndexOf('/') + 1);
-            if (name.equals(SPHERE)) {
-                spheres.add(new Candidate(path, reader));
-            } else if (name.equals(RENDERER)) {
-                renderers.add(new Candidate(path, reader));
-            } else if (name.toLowerCase(Locale.ROOT).endsWith(".zip")) {
+            if (candidate(name)) {
+                (name.equals(SPHERE) ? spheres : renderers).add(new Candidate(path, reader));
+            } else if (isZip(name)) {
                 openNested(path, reader);
             }
         }
@@ -284,7 +282,7 @@ public final class Submissions {
         private void openNested(String path, Reader reader) throws IOException {
             ZipArchive zip;
             try {
-                zip = ZipArchive.open(ZipArchive.Source.of(charge(reader.read(limits.maxNestedZipBytes()))),
+                zip = ZipArchive.open(ZipArchive.Source.of(reader.read(limits.maxNestedZipBytes())),
                         limits.maxEntries());
             } catch (ZipArchive.TooLarge e) {
                 refuse(path + " is larger than " + IntakeLimits.size(limits.maxNestedZipBytes())
@@ -300,19 +298,41 @@ public final class Submissions {
                 }
                 String inner = path + "!/" + entry.name();
                 String name = entry.name().substring(entry.name().lastIndexOf('/') + 1);
-                Reader inside = cap -> zip.read(entry, cap);
-                if (name.equals(SPHERE)) {
-                    spheres.add(new Candidate(inner, inside));
-                } else if (name.equals(RENDERER)) {
-                    renderers.add(new Candidate(inner, inside));
-                } else if (name.toLowerCase(Locale.ROOT).endsWith(".zip")) {
+                if (candidate(name)) {
+                    (name.equals(SPHERE) ? spheres : renderers).add(new Candidate(inner, inflatedNow(zip, entry)));
+                } else if (isZip(name)) {
                     unopened.add(inner);
                 }
             }
         }
     }
 
-    /** Counts bytes read into memory against the whole intake's budget. */
+    /**
+     * A file of a student's zip, inflated now, so that the zip need not stay in memory until the submission is
+     * resolved; a failure is kept for then.
+     */
+    private Reader inflatedNow(ZipArchive zip, ZipArchive.Entry entry) throws CohortInputException {
+        try {
+            byte[] bytes = charge(zip.read(entry, limits.maxFileBytes()));
+            return cap -> bytes;
+        } catch (CohortInputException e) {
+            throw e;
+        } catch (IOException e) {
+            return cap -> {
+                throw e;
+            };
+        }
+    }
+
+    private static boolean candidate(String fileName) {
+        return fileName.equals(SPHERE) || fileName.equals(RENDERER);
+    }
+
+    private static boolean isZip(String fileName) {
+        return fileName.toLowerCase(Locale.ROOT).endsWith(".zip");
+    }
+
+    /** Counts bytes read into memory against the whole intake's budget, whatever they are read from. */
     private byte[] charge(byte[] bytes) throws CohortInputException {
         inflated += bytes.length;
         if (inflated > limits.maxTotalBytes()) {
@@ -377,7 +397,7 @@ public final class Submissions {
 
     private Submission.SourceFile read(Candidate candidate) throws IOException {
         try {
-            return new Submission.SourceFile(candidate.path(), charge(candidate.reader().read(limits.maxFileBytes())));
+            return new Submission.SourceFile(candidate.path(), candidate.reader().read(limits.maxFileBytes()));
         } catch (ZipArchive.TooLarge e) {
             throw new ZipArchive.TooLarge(candidate.path() + " is larger than "
                     + IntakeLimits.size(limits.maxFileBytes()) + ", far more than any " + fileName(candidate));

@@ -38,7 +38,8 @@ class SubmissionsTest {
     @Test
     void moodleFolderNamesGiveTheParticipantIdAndFullNameReadFromTheRight() throws IOException {
         String folder = "Zoë Ann_O'Brien_42_assignsubmission_file_";
-        List<Submission> cohort = readZip(entries(folder + "/Sphere.java", SPHERE, folder + "/Renderer.java", RENDERER));
+        List<Submission> cohort = readZip(entries(folder + "/Sphere.java", SPHERE,
+                folder + "/Renderer.java", RENDERER));
 
         assertThat(cohort).singleElement().satisfies(s -> {
             assertThat(s.folder()).isEqualTo(folder);
@@ -137,6 +138,14 @@ class SubmissionsTest {
             assertThat(s.problem()).isEqualTo("README.txt is a file at the top of the download, not in a student's "
                     + "folder");
         });
+    }
+
+    @Test
+    void moodlesFoldersAndFilesOfOtherSubmissionTypesArePassedOver() throws IOException {
+        List<Submission> cohort = readZip(entries("Ann_7_assignsubmission_onlinetext_/onlinetext.html", "<p>hi</p>",
+                "Bob_8_assignsubmission_onlinetext_onlinetext.html", "<p>hi</p>"));
+
+        assertThat(cohort).isEmpty();
     }
 
     @Test
