@@ -22,8 +22,11 @@ public record IntakeLimits(long maxFileBytes, long maxNestedZipBytes, int maxEnt
         }
     }
 
-    /** A size for messages: "1 MiB", "64 MiB", or bytes when smaller than a MiB. */
+    /** A size for messages: "1 GiB", "64 MiB", or bytes when not a whole number of MiB. */
     static String size(long bytes) {
+        if (bytes % (1024 * MIB) == 0) {
+            return bytes / (1024 * MIB) + " GiB";
+        }
         return bytes % MIB == 0 ? bytes / MIB + " MiB" : bytes + " bytes";
     }
 }
