@@ -6,18 +6,23 @@ package gfx.tick1.grade.cohort;
  *
  * @param maxFileBytes      the largest Sphere.java or Renderer.java read; a real one is a few KiB
  * @param maxNestedZipBytes the largest zip inside a student's folder that is opened (it is held in memory)
+ * @param maxStudentBytes   the most bytes read for one student (their zips and the two files); beyond it, that
+ *                          student's submission is a problem, so one student cannot stop a cohort being graded
  * @param maxEntries        the most entries one zip, or one student's unpacked folder, may have
- * @param maxTotalBytes     the most bytes inflated in one intake, all students together
+ * @param maxTotalBytes     the most bytes read in one intake, all students together; beyond it, the download is
+ *                          refused (a bound on the work a download can cause, well above any real cohort's)
  */
-public record IntakeLimits(long maxFileBytes, long maxNestedZipBytes, int maxEntries, long maxTotalBytes) {
+public record IntakeLimits(long maxFileBytes, long maxNestedZipBytes, long maxStudentBytes, int maxEntries,
+        long maxTotalBytes) {
 
     private static final long MIB = 1024 * 1024;
 
     /** The limits of {@code tick1 grade --submissions}. */
-    public static final IntakeLimits DEFAULT = new IntakeLimits(MIB, 64 * MIB, 65_535, 1024 * MIB);
+    public static final IntakeLimits DEFAULT = new IntakeLimits(MIB, 64 * MIB, 256 * MIB, 65_535, 16 * 1024 * MIB);
 
     public IntakeLimits {
-        if (maxFileBytes <= 0 || maxNestedZipBytes <= 0 || maxEntries <= 0 || maxTotalBytes <= 0) {
+        if (maxFileBytes <= 0 || maxNestedZipBytes <= 0 || maxStudentBytes <= 0 || maxEntries <= 0
+                || maxTotalBytes <= 0) {
             throw new IllegalArgumentException("intake limits must be positive");
         }
     }

@@ -121,7 +121,7 @@ public final class Submissions {
     private Reader outerReader(Path path, ZipArchive zip, ZipArchive.Entry entry) {
         return cap -> {
             try {
-                return charge(zip.read(entry, cap));
+                return zip.read(entry, cap);
             } catch (ZipArchive.Refused e) {
                 throw new CohortInputException(path + ": " + e.getMessage());
             }
@@ -201,8 +201,8 @@ public final class Submissions {
                 }
                 byte[] bytes = new byte[buffer.position()];
                 buffer.flip().get(bytes);
-                return charge(bytes);
-            } catch (ZipArchive.TooLarge | CohortInputException e) {
+                return bytes;
+            } catch (ZipArchive.TooLarge e) {
                 throw e;
             } catch (IOException e) {
                 throw new ZipArchive.Refused("cannot read it (" + reason(e) + ")");
@@ -258,6 +258,7 @@ public final class Submissions {
         final List<String> unopened = new ArrayList<>();
         int entries;
         int files;
+        long read;
 
         Student(String folder) {
             this.folder = folder;
@@ -265,6 +266,16 @@ public final class Submissions {
 
         void refuse(String why) {
             refusals.add(why);
+        }
+
+        /** Counts bytes read into memory against the student's budget, then the whole intake's. */
+        byte[] charge(byte[] bytes) throws IOException {
+            read += bytes.length;
+            if (read > limits.maxStudentBytes()) {
+                throw new OverBudget("the folder holds more than " + IntakeLimits.size(limits.maxStudentBytes())
+                        + " of zips and source files to read");
+            }
+            return Submissions.this.charge(bytes);
         }
 
         /** A file of the student's, at {@code path} in their folder. */
@@ -282,7 +293,7 @@ public final class Submissions {
         private void openNested(String path, Reader reader) throws IOException {
             ZipArchive zip;
             try {
-                zip = ZipArchive.open(ZipArchive.Source.of(reader.read(limits.maxNestedZipBytes())),
+                zip = ZipArchive.open(ZipArchive.Source.of(charge(reader.read(limits.maxNestedZipBytes()))),
                         limits.maxEntries());
             } catch (ZipArchive.TooLarge e) {
                 refuse(path + " is larger than " + IntakeLimits.size(limits.maxNestedZipBytes())
@@ -290,6 +301,9 @@ public final class Submissions {
                 return;
             } catch (ZipArchive.Refused e) {
                 refuse(path + ": " + e.getMessage());
+                return;
+            } catch (OverBudget e) {
+                refuse(e.getMessage());
                 return;
             }
             for (ZipArchive.Entry entry : zip.entries()) {
@@ -299,7 +313,8 @@ public final class Submissions {
                 String inner = path + "!/" + entry.name();
                 String name = entry.name().substring(entry.name().lastIndexOf('/') + 1);
                 if (candidate(name)) {
-                    (name.equals(SPHERE) ? spheres : renderers).add(new Candidate(inner, inflatedNow(zip, entry)));
+                    List<Candidate> same = name.equals(SPHERE) ? spheres : renderers;
+                    same.add(new Candidate(inner, same.isEmpty() ? inflatedNow(zip, entry) : null));
                 } else if (isZip(name)) {
                     unopened.add(inner);
                 }
@@ -309,14 +324,13 @@ public final class Submissions {
 
     /**
      * A file of a student's zip, inflated now, so that the zip need not stay in memory until the submission is
-     * resolved; a failure is kept for then.
+     * resolved; a failure is kept for then. Only a first candidate is inflated (a second one makes the submission
+     * a problem, whatever it holds), so this holds at most two files' worth of memory per student.
      */
-    private Reader inflatedNow(ZipArchive zip, ZipArchive.Entry entry) throws CohortInputException {
+    private Reader inflatedNow(ZipArchive zip, ZipArchive.Entry entry) {
         try {
-            byte[] bytes = charge(zip.read(entry, limits.maxFileBytes()));
+            byte[] bytes = zip.read(entry, limits.maxFileBytes());
             return cap -> bytes;
-        } catch (CohortInputException e) {
-            throw e;
         } catch (IOException e) {
             return cap -> {
                 throw e;
@@ -332,7 +346,16 @@ public final class Submissions {
         return fileName.toLowerCase(Locale.ROOT).endsWith(".zip");
     }
 
-    /** Counts bytes read into memory against the whole intake's budget, whatever they are read from. */
+    /** A student's reads over their budget: their problem, not the download's. */
+    private static final class OverBudget extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        OverBudget(String message) {
+            super(message);
+        }
+    }
+
+    /** Counts bytes read into memory against the whole intake's budget. */
     private byte[] charge(byte[] bytes) throws CohortInputException {
         inflated += bytes.length;
         if (inflated > limits.maxTotalBytes()) {
@@ -365,9 +388,9 @@ public final class Submissions {
         }
         if (problems.isEmpty()) {
             try {
-                sphere = read(student.spheres.get(0));
-                renderer = read(student.renderers.get(0));
-            } catch (ZipArchive.Refused | ZipArchive.TooLarge e) {
+                sphere = read(student, student.spheres.get(0));
+                renderer = read(student, student.renderers.get(0));
+            } catch (ZipArchive.Refused | ZipArchive.TooLarge | OverBudget e) {
                 problems.add(e.getMessage());
             }
         }
@@ -395,9 +418,10 @@ public final class Submissions {
         return line;
     }
 
-    private Submission.SourceFile read(Candidate candidate) throws IOException {
+    private Submission.SourceFile read(Student student, Candidate candidate) throws IOException {
         try {
-            return new Submission.SourceFile(candidate.path(), candidate.reader().read(limits.maxFileBytes()));
+            return new Submission.SourceFile(candidate.path(),
+                    student.charge(candidate.reader().read(limits.maxFileBytes())));
         } catch (ZipArchive.TooLarge e) {
             throw new ZipArchive.TooLarge(candidate.path() + " is larger than "
                     + IntakeLimits.size(limits.maxFileBytes()) + ", far more than any " + fileName(candidate));

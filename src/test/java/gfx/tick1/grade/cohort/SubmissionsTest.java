@@ -18,7 +18,7 @@ class SubmissionsTest {
 
     private static final String SPHERE = "package gfx.tick1;\nclass Sphere {}\n";
     private static final String RENDERER = "package gfx.tick1;\nclass Renderer {}\n";
-    private static final IntakeLimits SMALL = new IntakeLimits(1024, 64 * 1024, 20, 256 * 1024);
+    private static final IntakeLimits SMALL = new IntakeLimits(1024, 64 * 1024, 128 * 1024, 20, 256 * 1024);
 
     @TempDir
     Path temp;
@@ -302,6 +302,17 @@ class SubmissionsTest {
 
         assertThatThrownBy(() -> Submissions.read(download, SMALL)).hasMessage(download
                 + ": the download inflates to more than 262144 bytes of files tick1 must read; refused as a zip bomb");
+    }
+
+    @Test
+    void aStudentReadingMoreThanTheirBudgetIsTheirProblemAlone() throws IOException {
+        byte[] big = new TestZips.Raw().add("filler.bin", new String(new char[60 * 1024])).bytes();
+        List<Submission> cohort = Submissions.read(write("greedy.zip", zip(entries("a/1.zip", big, "a/2.zip", big,
+                "a/3.zip", big, "b/Sphere.java", SPHERE, "b/Renderer.java", RENDERER))), SMALL);
+
+        assertThat(cohort.get(0).problem()).isEqualTo("the folder holds more than 131072 bytes of zips and source "
+                + "files to read");
+        assertThat(cohort.get(1).problem()).isNull();
     }
 
     @Test
