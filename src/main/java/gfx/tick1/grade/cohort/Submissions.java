@@ -63,7 +63,13 @@ public final class Submissions {
     public static List<Submission> read(Path path, IntakeLimits limits) throws IOException {
         Submissions intake = new Submissions(path, limits);
         if (Files.isDirectory(path)) {
-            return intake.resolveAll(intake.readFolder(path));
+            try {
+                return intake.resolveAll(intake.readFolder(path));
+            } catch (CohortInputException e) {
+                throw e;
+            } catch (IOException e) {
+                throw new CohortInputException(path + ": cannot read the folder (" + reason(e) + ")");
+            }
         }
         if (!Files.isRegularFile(path)) {
             throw new CohortInputException(path + ": no such file or folder");
@@ -182,6 +188,14 @@ public final class Submissions {
                 student.refuse("cannot read " + relative(folder, file) + " (" + reason(e) + ")");
                 return FileVisitResult.CONTINUE;
             }
+
+            @Override
+            public FileVisitResult postVisitDirectory(Path directory, IOException e) {
+                if (e != null) {
+                    student.refuse("cannot read " + relative(folder, directory) + " (" + reason(e) + ")");
+                }
+                return FileVisitResult.CONTINUE;
+            }
         });
     }
 
@@ -190,11 +204,9 @@ public final class Submissions {
         return cap -> {
             try (SeekableByteChannel channel = Files.newByteChannel(file, StandardOpenOption.READ,
                     LinkOption.NOFOLLOW_LINKS)) {
-                ByteBuffer buffer = ByteBuffer.allocate((int) Math.min(cap + 1, Math.max(channel.size() + 1, 1)));
+                ByteBuffer buffer = ByteBuffer.allocate((int) Math.min(cap + 1, channel.size() + 1));
                 while (buffer.hasRemaining() && channel.read(buffer) >= 0) {
-                    if (buffer.position() > cap) {
-                        throw new ZipArchive.TooLarge(file.getFileName() + " is larger than " + IntakeLimits.size(cap));
-                    }
+                    continue;
                 }
                 if (buffer.position() > cap) {
                     throw new ZipArchive.TooLarge(file.getFileName() + " is larger than " + IntakeLimits.size(cap));
