@@ -56,7 +56,9 @@ public final class HeatMapLegend {
         fill(image, 0, height, width, HEIGHT, BACKGROUND);
 
         int barStart = MARGIN;
-        int barEnd = width - MARGIN - textWidth(UNIT) - MARGIN; // exclusive
+        String lastLabel = (1 << OCTAVES) + "+";
+        // Exclusive; room on the right for the last label's right half and the unit.
+        int barEnd = width - MARGIN - textWidth(UNIT) - MARGIN - textWidth(lastLabel) / 2;
         int last = barEnd - 1 - barStart;
         for (int x = barStart; x < barEnd; x++) {
             // The same log scale as the colours: position t stands for 64^t levels.
@@ -66,10 +68,10 @@ public final class HeatMapLegend {
         for (int k = 0; k <= OCTAVES; k++) {
             int x = barStart + (int) Math.round((double) k / OCTAVES * last);
             fill(image, x, height + BAR_TOP + BAR_HEIGHT, 1, 2, TEXT);
-            String label = k == OCTAVES ? (1 << k) + "+" : String.valueOf(1 << k);
+            String label = k == OCTAVES ? lastLabel : String.valueOf(1 << k);
             draw(image, label, x - textWidth(label) / 2, height + LABEL_TOP);
         }
-        draw(image, UNIT, barEnd + MARGIN, height + (HEIGHT - 5 * SCALE) / 2);
+        draw(image, UNIT, barEnd + textWidth(lastLabel) / 2 + MARGIN, height + (HEIGHT - 5 * SCALE) / 2);
         return image;
     }
 
