@@ -45,9 +45,11 @@ final class BenchReport {
 
     private String csv() {
         StringBuilder csv = new StringBuilder("variant,scene,width,height,samples,threads,median_ms,min_ms,max_ms,"
-                + "mrays_per_s,error_against,error_width,error_height,max_level_difference,differing_share,psnr_db,rms_levels\n");
+                + "mrays_per_s,error_against,error_width,error_height,max_level_difference,differing_share,psnr_db,"
+                + "rms_levels\n");
         for (Result r : results) {
-            csv.append(String.format(Locale.ROOT, "\"%s\",%s,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%s,%d,%d,%d,%.6f,%s,%.4f%n",
+            csv.append(String.format(Locale.ROOT,
+                    "\"%s\",%s,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%s,%d,%d,%d,%.6f,%s,%.4f%n",
                     r.variant(), r.scene(), r.width(), r.height(), r.samples(), r.threads(), r.timing().median(),
                     r.timing().min(), r.timing().max(), r.megaRaysPerSecond(), r.errorAgainst(), r.errorWidth(),
                     r.errorHeight(), r.error().maxDifference(), r.differingShare(), psnr(r), r.rmsError()));
@@ -69,15 +71,18 @@ final class BenchReport {
                 + "(median, and the fastest and slowest run as the spread). Error is measured on a smaller frame "
                 + "against `truth` (the double-double TruthRenderer), against `256 samples` for anti-aliased "
                 + "variants, or against `brute force` for the BVH. The fast renderer has two tracers with the same "
-                + "pixels: once a process is warm (after " + FastRenderer.VECTOR_AFTER_RAYS / 1_000_000 + " million rays) "
-                + "and for frames at least " + FastRenderer.VECTOR_MIN_WIDTH + " pixels wide it uses the vector tracer, "
+                + "pixels: once a process is warm (after " + FastRenderer.VECTOR_AFTER_RAYS / 1_000_000
+                + " million rays) and for frames at least " + FastRenderer.VECTOR_MIN_WIDTH
+                + " pixels wide it uses the vector tracer, "
                 + "which the JIT vectorises; a one-off render at the command line uses the scalar tracer, which is "
                 + "faster before the JIT has compiled it (see `FastRenderer`).\n\n");
         md.append("| variant | scene | frame | threads | median ms | spread ms | Mrays/s | error against | max levels "
                 + "| pixels differing | PSNR dB |\n|---|---|---|---:|---:|---:|---:|---|---:|---:|---:|\n");
         for (Result r : results) {
-            md.append(String.format(Locale.ROOT, "| %s | %s | %d x %d%s | %d | %.1f | %.1f - %.1f | %.1f | %s | %d | %.3f%% | %s |%n",
-                    r.variant(), r.scene(), r.width(), r.height(), r.samples() > 1 ? " x " + r.samples() : "", r.threads(),
+            md.append(String.format(Locale.ROOT,
+                    "| %s | %s | %d x %d%s | %d | %.1f | %.1f - %.1f | %.1f | %s | %d | %.3f%% | %s |%n",
+                    r.variant(), r.scene(), r.width(), r.height(), r.samples() > 1 ? " x " + r.samples() : "",
+                    r.threads(),
                     r.timing().median(), r.timing().min(), r.timing().max(), r.megaRaysPerSecond(), r.errorAgainst(),
                     r.error().maxDifference(), 100 * r.differingShare(), psnr(r)));
         }

@@ -49,7 +49,8 @@ class BenchChartTest {
     void eachFrameSizeHasAPanelOfItsOwn() {
         List<XYChart> panels = BenchChart.panels(fullRun(), false);
         assertThat(panels).extracting(XYChart::getTitle)
-                .containsExactly("tick1 bench: tick1.xml at 3840 x 2160", "tick1 bench: crowds of spheres at 640 x 480");
+                .containsExactly("tick1 bench: tick1.xml at 3840 x 2160",
+                        "tick1 bench: crowds of spheres at 640 x 480");
         assertThat(panels.get(0).getSeriesMap()).hasSize(11);
         assertThat(panels.get(1).getSeriesMap().keySet())
                 .allMatch(label -> label.endsWith("crowd-1000.xml") || label.endsWith("crowd-10000.xml"));
