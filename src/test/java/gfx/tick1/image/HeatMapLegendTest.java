@@ -8,18 +8,9 @@ import org.junit.jupiter.api.Test;
 /** The key below a heat map: it adds a strip and leaves the map's own pixels where they were. */
 class HeatMapLegendTest {
 
-    private static BufferedImage filled(int width, int height, int rgb) {
-        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
-        for (int y = 0; y < height; y++) {
-            for (int x = 0; x < width; x++) {
-                image.setRGB(x, y, rgb);
-            }
-        }
-        return image;
-    }
-
     private static ImageDifference oneLevelOffAt(int width, int height, int x, int y) {
-        BufferedImage expected = filled(width, height, 0x808080), actual = filled(width, height, 0x808080);
+        BufferedImage expected = ImageDifferenceTest.filled(width, height, 0x808080);
+        BufferedImage actual = ImageDifferenceTest.filled(width, height, 0x808080);
         actual.setRGB(x, y, 0x818080);
         return ImageDifference.between(expected, actual);
     }
