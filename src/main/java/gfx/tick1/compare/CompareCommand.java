@@ -72,7 +72,7 @@ public final class CompareCommand implements Callable<Integer> {
         print(difference, out);
         if (heatMapFile != null) {
             try {
-                PngOutput.write(difference.heatMap(), heatMapFile);
+                PngOutput.write(difference.heatMapWithLegend(), heatMapFile);
             } catch (IOException e) {
                 err.println("tick1 compare: " + heatMapFile + ": cannot write the heat map: " + e.getMessage());
                 return EXIT_CANNOT_WRITE;

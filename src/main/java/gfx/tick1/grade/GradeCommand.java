@@ -368,7 +368,7 @@ public final class GradeCommand implements Callable<Integer> {
         String stem = number + "-" + grading.name().replaceAll("[^A-Za-z0-9._-]", "_").replaceAll("\\.xml$", "");
         try {
             Files.createDirectories(reportFolder);
-            PngOutput.write(difference.heatMap(), reportFolder.resolve(stem + "-diff.png"));
+            PngOutput.write(difference.heatMapWithLegend(), reportFolder.resolve(stem + "-diff.png"));
             PngOutput.write(image, reportFolder.resolve(stem + "-yours.png"));
             PngOutput.write(expected, reportFolder.resolve(stem + "-expected.png"));
             out.println("  heat map: " + reportFolder.resolve(stem + "-diff.png") + " (beside it: " + stem

@@ -149,16 +149,33 @@ public final class ImageDifference {
                 int grey = (channel(a, 0) + channel(a, 1) + channel(a, 2)) / 12;
                 map[i] = grey << 16 | grey << 8 | grey;
             } else {
-                double t = Math.min(1, Math.log(d) / Math.log(64));
-                int red = (int) (128 + 127 * Math.min(1, 2 * t));
-                int green = (int) (255 * Math.max(0, 2 * t - 1));
-                int blue = (int) (160 * Math.max(0, 3 * t - 2));
-                map[i] = red << 16 | green << 8 | blue;
+                map[i] = heatColour(d);
             }
         }
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
         image.setRGB(0, 0, width, height, map, 0, width);
         return image;
+    }
+
+    /**
+     * The heat map as a file shows it: with {@link HeatMapLegend}'s key to its colours in a strip
+     * below the image when the image is wide enough to hold one. Pixel (x, y) of the image is still
+     * pixel (x, y) of the file.
+     */
+    public BufferedImage heatMapWithLegend() {
+        return HeatMapLegend.below(heatMap());
+    }
+
+    /**
+     * The heat map's colour for a pixel that differs by {@code levels} (1 to 255): on a log scale,
+     * dark red at 1, orange at 8, yellow-white from 64 on.
+     */
+    static int heatColour(int levels) {
+        double t = Math.min(1, Math.log(levels) / Math.log(64));
+        int red = (int) (128 + 127 * Math.min(1, 2 * t));
+        int green = (int) (255 * Math.max(0, 2 * t - 1));
+        int blue = (int) (160 * Math.max(0, 3 * t - 2));
+        return red << 16 | green << 8 | blue;
     }
 
     /** One line for a test failure or the command line. */

@@ -7,6 +7,7 @@
 // camera at the origin, and turns the tick's camera into exactly such a camera.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
 
 /** A point or direction of the scene file, in three.js's coordinates. */
 function toThree([x, y, z]) {
@@ -45,6 +46,11 @@ scene.add(content);
 const viewRenderer = makeRenderer({ antialias: true });
 viewRenderer.setClearColor(VIEW_BACKGROUND);
 document.getElementById('view').appendChild(viewRenderer.domElement);
+// The axes' names are HTML, laid over the 3D view (below the bar and the panels) at their arrows' tips.
+const labelRenderer = new CSS2DRenderer();
+labelRenderer.domElement.id = 'axis-labels';
+Object.assign(labelRenderer.domElement.style, { position: 'fixed', top: '0', left: '0', pointerEvents: 'none' });
+document.getElementById('view').after(labelRenderer.domElement);
 const orbitCamera = new THREE.PerspectiveCamera(50, 1, 0.01, 1e6);
 const controls = new OrbitControls(orbitCamera, viewRenderer.domElement);
 controls.addEventListener('change', draw);
@@ -56,25 +62,37 @@ insetRenderer.setSize(insetCanvas.width, insetCanvas.height, false);
 const tickCamera = new THREE.PerspectiveCamera(VERTICAL_FOV_DEGREES, ASPECT, 1e-3, 1e10);
 tickCamera.layers.set(CAMERA_LAYER);   // at the origin, looking along three's -z: the tick's +z
 
-// The panels cover the bottom of the view: the orbit camera's centre of projection is moved up
-// into the part left free, so that what it looks at is not hidden behind them.
+// The bar covers the top of the view, and the panels (with any warnings or error beside or above
+// them) its bottom: the orbit camera's centre of projection is moved into the band left free
+// between them, and a scene is framed to fit that band, so that neither hides a sphere or the light.
+const bar = document.getElementById('bar');
 const panels = document.getElementById('panels');
-let freeFraction = 1;   // the share of the view's height above the panels
+const message = document.getElementById('message');
+let freeFraction = 1;   // the share of the view's height between the bar and the panels
 
 function resize() {
   const width = window.innerWidth, height = window.innerHeight;
   viewRenderer.setSize(width, height);
-  const covered = Math.min(panels.offsetHeight + 12, height / 2);
-  freeFraction = (height - covered) / height;
+  labelRenderer.setSize(width, height);
+  const lowest = message.hidden ? panels : [panels, message].reduce((a, b) => (top(a) < top(b) ? a : b));
+  // Together they may take at most 60% of the height: a tiny window still shows the scene.
+  const scale = Math.min(1, 0.6 * height / (bar.offsetHeight + height - top(lowest) + 12));
+  const above = bar.offsetHeight * scale, below = (height - top(lowest) + 12) * scale;
+  freeFraction = (height - above - below) / height;
   orbitCamera.aspect = width / height;
-  orbitCamera.setViewOffset(width, height, 0, covered / 2, width, height);
+  orbitCamera.setViewOffset(width, height, 0, (below - above) / 2, width, height);
   orbitCamera.updateProjectionMatrix();
   draw();
+}
+
+function top(element) {
+  return element.getBoundingClientRect().top;
 }
 window.addEventListener('resize', resize);
 
 function draw() {
   viewRenderer.render(scene, orbitCamera);
+  labelRenderer.render(scene, orbitCamera);
   insetRenderer.render(scene, tickCamera);
 }
 
@@ -100,7 +118,6 @@ function build(description) {
     ...(light ? [Math.abs(light.position[0]), Math.abs(light.position[2])] : []));
 
   content.add(grid(groundY, reach));
-  content.add(axes());
   content.add(cameraPyramid());
   for (const sphere of spheres) {
     content.add(sphereMesh(sphere));
@@ -128,15 +145,30 @@ function grid(groundY, reach) {
   return helper;
 }
 
-/** Arrows along the tick's +x (red), +y (green) and +z (blue), from the origin. */
+/**
+ * Arrows along the tick's +x (red), +y (green) and +z (blue), from the origin, each named at its
+ * tip. They are the same for every scene, so they are made once, outside {@code content}.
+ */
 function axes() {
   const group = new THREE.Group();
-  const arrows = [[[1, 0, 0], 0xff2020], [[0, 1, 0], 0x20e020], [[0, 0, 1], 0x2040ff]];
-  for (const [direction, colour] of arrows) {
+  const arrows = [['x', 'right', [1, 0, 0], 0xff2020], ['y', 'up', [0, 1, 0], 0x20e020],
+    ['z', 'into the screen', [0, 0, 1], 0x2040ff]];
+  for (const [name, meaning, direction, colour] of arrows) {
     group.add(new THREE.ArrowHelper(toThree(direction), new THREE.Vector3(), 1.2, colour, 0.2, 0.08));
+    const element = document.createElement('div');
+    element.className = 'axis-label';
+    element.dataset.axis = name;
+    element.textContent = name;
+    element.title = `${name}: ${meaning}`;
+    // The arrow's colour, lightened to be read on the grey view.
+    element.style.color = '#' + new THREE.Color(colour).lerp(new THREE.Color(0xffffff), 0.4).getHexString();
+    const label = new CSS2DObject(element);
+    label.position.copy(toThree(direction).multiplyScalar(1.4));
+    group.add(label);
   }
   return group;
 }
+scene.add(axes());
 
 /** The camera: apex at the origin, base the image plane at z = 1 (45 degrees across, 4:3). */
 function cameraPyramid() {
@@ -221,7 +253,6 @@ function frame(spheres, light) {
 
 const body = document.body;
 const nameLine = document.getElementById('scene-name');
-const message = document.getElementById('message');
 const raytraced = document.getElementById('raytraced');
 const raytracedLink = document.getElementById('raytraced-link');
 const raytracedCaption = document.getElementById('raytraced-caption');
@@ -232,6 +263,7 @@ function showMessage(kind, lines) {
   message.hidden = lines.length === 0;
   message.className = kind;
   message.textContent = lines.join('\n');
+  resize();   // the box may reach above the panels, and then the band a scene is framed in is smaller
 }
 
 function showImage(blob, name) {
@@ -287,8 +319,8 @@ async function load(name, request) {
       return;
     }
     nameLine.textContent = description.name;
+    showMessage('warning', description.warnings);   // first: the scene is framed clear of the warnings
     build(description);
-    showMessage('warning', description.warnings);
     body.dataset.status = 'rendering';
     raytracedCaption.textContent = 'Ray tracing...';
     const render = await request('/api/render', controller.signal);

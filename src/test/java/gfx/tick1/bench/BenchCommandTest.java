@@ -9,6 +9,7 @@ import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -59,9 +60,18 @@ class BenchCommandTest {
     }
 
     @Test
-    void theReportStatesTheMachineTheTargetsAndThePlot() throws IOException {
+    void theReportStatesTheMachineWhatItMeasuredAndThePlot() throws IOException {
         String report = Files.readString(out.resolve("report.md"));
-        assertThat(report).contains("Machine: ", " cores", "## Targets", "start-up", "![speed against error]");
+        assertThat(report).contains("Machine: ", " cores", "## Whole runs in fresh processes", "10,000 spheres",
+                "![speed against error]");
+    }
+
+    @Test
+    void theReportAndWhatItPrintsSayWhatWasMeasuredWithoutTargets() throws IOException {
+        String report = Files.readString(out.resolve("report.md"));
+        for (String text : new String[] {report, printed}) {
+            assertThat(text.toLowerCase(Locale.ROOT)).doesNotContain("target", "goal", " met:");
+        }
     }
 
     @Test

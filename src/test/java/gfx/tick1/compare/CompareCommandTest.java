@@ -3,6 +3,7 @@ package gfx.tick1.compare;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.image.HeatMapLegend;
 import gfx.tick1.image.PngOutput;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -68,6 +69,18 @@ class CompareCommandTest {
         BufferedImage map = ImageIO.read(heat.toFile());
         assertThat(map.getWidth()).isEqualTo(8);
         assertThat(map.getHeight()).isEqualTo(6);
+    }
+
+    @Test
+    void aHeatMapWideEnoughForALegendHasItInAStripBelowTheComparedPixels() throws IOException {
+        Path a = png("a.png", 320, 200, 0x336699), b = png("b.png", 320, 200, 0x336699, 5, 7, 0x346699);
+        Path heat = dir.resolve("heat.png");
+        CliRun.of("compare", a.toString(), b.toString(), "--diff", heat.toString());
+        BufferedImage map = ImageIO.read(heat.toFile());
+        assertThat(map.getWidth()).isEqualTo(320);
+        assertThat(map.getHeight()).isEqualTo(200 + HeatMapLegend.HEIGHT);
+        int red = map.getRGB(5, 7) >> 16 & 0xFF, green = map.getRGB(5, 7) >> 8 & 0xFF;
+        assertThat(red).as("the differing pixel keeps its place above the legend").isGreaterThan(green);
     }
 
     @Test

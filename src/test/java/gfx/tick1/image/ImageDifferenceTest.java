@@ -8,7 +8,8 @@ import org.junit.jupiter.api.Test;
 
 class ImageDifferenceTest {
 
-    private static BufferedImage filled(int width, int height, int rgb) {
+    /** An image of one colour; the heat map's legend tests use it too. */
+    static BufferedImage filled(int width, int height, int rgb) {
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
         for (int y = 0; y < height; y++) {
             for (int x = 0; x < width; x++) {

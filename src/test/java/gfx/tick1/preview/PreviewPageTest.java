@@ -27,6 +27,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.io.TempDir;
 import org.openqa.selenium.By;
+import org.openqa.selenium.Rectangle;
 import org.openqa.selenium.WebElement;
 import org.openqa.selenium.support.ui.ExpectedConditions;
 import picocli.CommandLine;
@@ -205,5 +206,65 @@ class PreviewPageTest {
             assertThat(element("#scene-name").getText()).isEqualTo(TICK1_XML.toString());
             assertThat(browser.pixelsOf(element("#raytraced")).getWidth()).isEqualTo(PreviewServer.IMAGE_WIDTH);
         }
+    }
+
+    @Test
+    void withNoSceneBothPanelsSayHowToLoadOne() {
+        for (String panel : new String[] {"#camera-view-hint", "#raytraced-hint"}) {
+            assertThat(element(panel).isDisplayed()).as("%s on the empty page", panel).isTrue();
+            assertThat(element(panel).getText()).as(panel).contains("No scene loaded", "drop a scene file");
+        }
+        dropAndWaitForTheViews(TICK1_XML);
+        for (String panel : new String[] {"#camera-view-hint", "#raytraced-hint"}) {
+            assertThat(element(panel).isDisplayed()).as("%s once a scene is shown", panel).isFalse();
+        }
+    }
+
+    @Test
+    void theAxesAreLabelledAtTheirArrows() {
+        dropAndWaitForTheViews(TICK1_XML);
+        BufferedImage view = browser.pixelsOf(element("#view canvas"));
+        int[][] axes = {{'x', 0xFF2020}, {'y', 0x20E020}, {'z', 0x2040FF}};
+        for (int[] axis : axes) {
+            WebElement label = element(".axis-label[data-axis='" + (char) axis[0] + "']");
+            assertThat(label.isDisplayed()).as("label of the %s axis", (char) axis[0]).isTrue();
+            assertThat(label.getText()).startsWith(String.valueOf((char) axis[0]));
+            Rectangle at = label.getRect();
+            int near = countWithin(view, axis[1], at.x - 30, at.y - 30, at.x + at.width + 30, at.y + at.height + 30);
+            assertThat(near).as("pixels of the %s arrow's colour near its label at %s", (char) axis[0], at.getPoint())
+                    .isPositive();
+        }
+    }
+
+    @Test
+    void theWarningsLeaveTheLightInSight() throws IOException {
+        // Eight warnings (attributes the format does not know) under a light of a colour of its own.
+        StringBuilder xml = new StringBuilder("<scene>\n  <ambient-light colour=\"#333333\"/>\n"
+                + "  <point-light x=\"1\" y=\"3\" z=\"2\" colour=\"#00FFFF\" intensity=\"120\"/>\n");
+        for (int i = 0; i < 8; i++) {
+            xml.append("  <sphere x=\"").append(i - 4).append("\" y=\"0\" z=\"6\" radius=\"0.4\" "
+                    + "colour=\"#FF1D25\" raduis=\"1\"/>\n");
+        }
+        Path warned = Files.writeString(dir.resolve("warned.xml"), xml.append("</scene>\n").toString());
+        dropAndWaitForTheViews(warned);
+
+        WebElement message = element("#message");
+        assertThat(message.getText().lines()).as("the warnings shown").hasSize(8);
+        Rectangle box = message.getRect();
+        BufferedImage view = browser.pixelsOf(element("#view canvas"));
+        int light = count(view, 0x00FFFF);
+        assertThat(light).as("pixels of the light's sun in the 3D view").isGreaterThan(20);
+        assertThat(countWithin(view, 0x00FFFF, box.x, box.y, box.x + box.width, box.y + box.height))
+                .as("pixels of the light under the warnings box at %s", box).isZero();
+    }
+
+    private static int countWithin(BufferedImage image, int rgb, int x0, int y0, int x1, int y1) {
+        int count = 0;
+        for (int y = Math.max(0, y0); y < Math.min(image.getHeight(), y1); y++) {
+            for (int x = Math.max(0, x0); x < Math.min(image.getWidth(), x1); x++) {
+                count += (image.getRGB(x, y) & 0xFFFFFF) == rgb ? 1 : 0;
+            }
+        }
+        return count;
     }
 }

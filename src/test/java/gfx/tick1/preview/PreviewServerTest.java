@@ -127,8 +127,10 @@ class PreviewServerTest {
         // What a DNS-rebinding page sends: its own name, resolved to 127.0.0.1.
         assertThat(rawStatusLine("GET /api/scene HTTP/1.1\r\nHost: evil.example:" + port()
                 + "\r\nConnection: close\r\n\r\n")).isEqualTo("HTTP/1.1 403 Forbidden");
+        // HTTP/1.1 requires a Host: recent JDK 17 updates (17.0.21) refuse a request without one
+        // with 400 before it reaches the guard, older ones pass it on and the guard says 403.
         assertThat(rawStatusLine("GET / HTTP/1.1\r\nConnection: close\r\n\r\n"))
-                .as("no Host at all").isEqualTo("HTTP/1.1 403 Forbidden");
+                .as("no Host at all").isIn("HTTP/1.1 403 Forbidden", "HTTP/1.1 400 Bad Request");
     }
 
     @Test

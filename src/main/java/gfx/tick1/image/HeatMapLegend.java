@@ -1,0 +1,100 @@
+package gfx.tick1.image;
+
+import java.awt.image.BufferedImage;
+import java.util.Map;
+
+/**
+ * The key to a heat map's colours, drawn in a strip below the image: a bar running through the
+ * colours from 1 level to 64 levels or more, with ticks at 1, 2, 4 ... 64 and the word LEVELS.
+ *
+ * <p>The strip goes below, never over, the image, so a pixel's position in the file is its
+ * position in the images compared. The labels are drawn from a small pixel font of our own rather
+ * than with a system font: a heat map must not depend on which fonts a machine has installed (a
+ * server may have none), and the same difference always gives the same file.
+ */
+public final class HeatMapLegend {
+
+    /** Height of the strip in pixels. */
+    public static final int HEIGHT = 30;
+    /** The narrowest image that gets a legend: below that its labels would not fit beside one another. */
+    public static final int MIN_WIDTH = 240;
+
+    private static final int BACKGROUND = 0x181818;
+    private static final int TEXT = 0xD0D0D0;
+    private static final int MARGIN = 12;
+    private static final int BAR_TOP = 5;
+    private static final int BAR_HEIGHT = 8;
+    private static final int LABEL_TOP = 17;
+    /** Each glyph (only those the labels use) is 3 x 5 cells, each cell 2 x 2 pixels, with 2 pixels between glyphs. */
+    private static final int SCALE = 2;
+    private static final int ADVANCE = 4 * SCALE;
+    private static final String UNIT = "LEVELS";
+    private static final int OCTAVES = 6; // 64 = 2^6
+    private static final Map<Character, String> GLYPHS = Map.ofEntries(
+            Map.entry('1', "010110010010111"),
+            Map.entry('2', "111001111100111"), Map.entry('3', "111001111001111"),
+            Map.entry('4', "101101111001001"), Map.entry('6', "111100111101111"),
+            Map.entry('8', "111101111101111"), Map.entry('+', "000010111010000"),
+            Map.entry('L', "100100100100111"), Map.entry('E', "111100110100111"),
+            Map.entry('V', "101101101101010"), Map.entry('S', "011100010001110"));
+
+    private HeatMapLegend() {
+    }
+
+    /**
+     * The heat map with the legend strip below it, or the heat map itself when it is narrower
+     * than {@link #MIN_WIDTH}.
+     */
+    public static BufferedImage below(BufferedImage heatMap) {
+        int width = heatMap.getWidth(), height = heatMap.getHeight();
+        if (width < MIN_WIDTH) {
+            return heatMap;
+        }
+        BufferedImage image = new BufferedImage(width, height + HEIGHT, BufferedImage.TYPE_INT_RGB);
+        int[] pixels = heatMap.getRGB(0, 0, width, height, null, 0, width);
+        image.setRGB(0, 0, width, height, pixels, 0, width);
+        fill(image, 0, height, width, HEIGHT, BACKGROUND);
+
+        int barStart = MARGIN;
+        String lastLabel = (1 << OCTAVES) + "+";
+        // Exclusive; room on the right for the last label's right half and the unit.
+        int barEnd = width - MARGIN - textWidth(UNIT) - MARGIN - textWidth(lastLabel) / 2;
+        int last = barEnd - 1 - barStart;
+        for (int x = barStart; x < barEnd; x++) {
+            // The same log scale as the colours: position t stands for 64^t levels.
+            int levels = (int) Math.round(Math.pow(64, (double) (x - barStart) / last));
+            fill(image, x, height + BAR_TOP, 1, BAR_HEIGHT, ImageDifference.heatColour(Math.max(1, levels)));
+        }
+        for (int k = 0; k <= OCTAVES; k++) {
+            int x = barStart + (int) Math.round((double) k / OCTAVES * last);
+            fill(image, x, height + BAR_TOP + BAR_HEIGHT, 1, 2, TEXT);
+            String label = k == OCTAVES ? lastLabel : String.valueOf(1 << k);
+            draw(image, label, x - textWidth(label) / 2, height + LABEL_TOP);
+        }
+        draw(image, UNIT, barEnd + textWidth(lastLabel) / 2 + MARGIN, height + (HEIGHT - 5 * SCALE) / 2);
+        return image;
+    }
+
+    private static int textWidth(String text) {
+        return text.length() * ADVANCE - (ADVANCE - 3 * SCALE);
+    }
+
+    private static void draw(BufferedImage image, String text, int left, int top) {
+        for (int i = 0; i < text.length(); i++) {
+            String glyph = GLYPHS.get(text.charAt(i));
+            for (int cell = 0; cell < glyph.length(); cell++) {
+                if (glyph.charAt(cell) == '1') {
+                    fill(image, left + i * ADVANCE + cell % 3 * SCALE, top + cell / 3 * SCALE, SCALE, SCALE, TEXT);
+                }
+            }
+        }
+    }
+
+    private static void fill(BufferedImage image, int x, int y, int width, int height, int rgb) {
+        for (int j = y; j < y + height; j++) {
+            for (int i = x; i < x + width; i++) {
+                image.setRGB(i, j, rgb);
+            }
+        }
+    }
+}

@@ -1,0 +1,66 @@
+package gfx.tick1.image;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.awt.image.BufferedImage;
+import org.junit.jupiter.api.Test;
+
+/** The key below a heat map: it adds a strip and leaves the map's own pixels where they were. */
+class HeatMapLegendTest {
+
+    private static ImageDifference oneLevelOffAt(int width, int height, int x, int y) {
+        BufferedImage expected = ImageDifferenceTest.filled(width, height, 0x808080);
+        BufferedImage actual = ImageDifferenceTest.filled(width, height, 0x808080);
+        actual.setRGB(x, y, 0x818080);
+        return ImageDifference.between(expected, actual);
+    }
+
+    @Test
+    void theLegendGoesBelowTheMapWhoseEveryPixelStaysInPlace() {
+        ImageDifference difference = oneLevelOffAt(640, 480, 100, 200);
+        BufferedImage map = difference.heatMap(), withLegend = difference.heatMapWithLegend();
+        assertThat(withLegend.getWidth()).isEqualTo(640);
+        assertThat(withLegend.getHeight()).isEqualTo(480 + HeatMapLegend.HEIGHT);
+        assertThat(withLegend.getRGB(0, 0, 640, 480, null, 0, 640)).isEqualTo(map.getRGB(0, 0, 640, 480, null, 0, 640));
+    }
+
+    @Test
+    void theBarRunsFromTheColourOfOneLevelToTheColourOfSixtyFour() {
+        BufferedImage withLegend = oneLevelOffAt(640, 480, 0, 0).heatMapWithLegend();
+        int barRow = 480 + 8;
+        int[] row = withLegend.getRGB(0, barRow, 640, 1, null, 0, 640);
+        int first = -1, last = -1;
+        for (int x = 0; x < row.length; x++) {
+            if ((row[x] & 0xFFFFFF) == ImageDifference.heatColour(1) && first < 0) {
+                first = x;
+            }
+            if ((row[x] & 0xFFFFFF) == ImageDifference.heatColour(64)) {
+                last = x;
+            }
+        }
+        assertThat(first).as("the 1-level colour is on the bar").isNotNegative();
+        assertThat(last).as("the 64-level colour comes after it").isGreaterThan(first);
+        for (int levels : new int[] {2, 8, 32}) {
+            assertThat(row).as("the colour of %d levels is on the bar", levels)
+                    .contains(0xFF000000 | ImageDifference.heatColour(levels));
+        }
+    }
+
+    @Test
+    void aMapTooNarrowForTheLabelsIsLeftAsItIs() {
+        ImageDifference difference = oneLevelOffAt(HeatMapLegend.MIN_WIDTH - 1, 50, 3, 4);
+        BufferedImage withLegend = difference.heatMapWithLegend();
+        assertThat(withLegend.getHeight()).isEqualTo(50);
+        int w = withLegend.getWidth();
+        assertThat(withLegend.getRGB(0, 0, w, 50, null, 0, w))
+                .isEqualTo(difference.heatMap().getRGB(0, 0, w, 50, null, 0, w));
+    }
+
+    @Test
+    void theLegendIsTheSameForTheSameWidthWhateverTheMapShows() {
+        BufferedImage one = oneLevelOffAt(400, 30, 1, 1).heatMapWithLegend();
+        BufferedImage other = oneLevelOffAt(400, 300, 200, 200).heatMapWithLegend();
+        assertThat(one.getRGB(0, 30, 400, HeatMapLegend.HEIGHT, null, 0, 400))
+                .isEqualTo(other.getRGB(0, 300, 400, HeatMapLegend.HEIGHT, null, 0, 400));
+    }
+}
