@@ -149,16 +149,28 @@ public final class ImageDifference {
                 int grey = (channel(a, 0) + channel(a, 1) + channel(a, 2)) / 12;
                 map[i] = grey << 16 | grey << 8 | grey;
             } else {
-                double t = Math.min(1, Math.log(d) / Math.log(64));
-                int red = (int) (128 + 127 * Math.min(1, 2 * t));
-                int green = (int) (255 * Math.max(0, 2 * t - 1));
-                int blue = (int) (160 * Math.max(0, 3 * t - 2));
-                map[i] = red << 16 | green << 8 | blue;
+                map[i] = heatColour(d);
             }
         }
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
         image.setRGB(0, 0, width, height, map, 0, width);
         return image;
+    }
+
+    /**
+     * The heat map's colour (0xRRGGBB) for a pixel that differs by {@code levels} (1 to 255) in its
+     * worst channel: on a logarithmic scale, so that 1, 2, 4, ... 64 levels are evenly spaced, dark
+     * red through red and orange to yellow-white. Legends of the heat map use it too.
+     */
+    public static int heatColour(int levels) {
+        if (levels < 1 || levels > 255) {
+            throw new IllegalArgumentException("a difference of " + levels + " levels: must be from 1 to 255");
+        }
+        double t = Math.min(1, Math.log(levels) / Math.log(64));
+        int red = (int) (128 + 127 * Math.min(1, 2 * t));
+        int green = (int) (255 * Math.max(0, 2 * t - 1));
+        int blue = (int) (160 * Math.max(0, 3 * t - 2));
+        return red << 16 | green << 8 | blue;
     }
 
     /** One line for a test failure or the command line. */

@@ -1,0 +1,76 @@
+package gfx.tick1.grade.cohort;
+
+import gfx.tick1.grade.cohort.StudentResult.SceneResult;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.Function;
+
+/**
+ * The pages a cohort's grading leaves in its report folder:
+ * <ul>
+ * <li>{@code feedback/<folder>/feedback.html} and {@code feedback.txt} for each student, beside the
+ *     images the grader wrote there (named in each {@link SceneResult});
+ * <li>{@code feedback.zip}, those folders as Moodle takes feedback files back;
+ * <li>{@code index.html}, the cohort at a glance.
+ * </ul>
+ * Every file is written whole and then renamed into place, the index last, so a run stopped part
+ * way leaves each page as it was or complete, and the index never links to a page not yet written.
+ */
+public final class CohortReport {
+
+    /** The report folder's page of the whole cohort. */
+    public static final String INDEX = "index.html";
+
+    private CohortReport() {
+    }
+
+    /**
+     * Writes (or rewrites) the feedback files, the zip and the index for {@code results}, in the
+     * order given (the index's table starts in that order).
+     *
+     * @param reportFolder the report folder; it and the feedback folders are made when missing
+     * @param results      every student's result; each submission's {@code folder} must be one plain
+     *                     folder name, different from every other, as must each image's file name
+     * @param grade        the mark to show for a result, as the gradebook has it (for example "1.00")
+     * @throws IllegalArgumentException when a folder or file name is not a plain name, or two
+     *                     results share a folder; nothing is written then
+     * @throws IOException when a file cannot be written; the files written before it stay
+     */
+    public static void write(Path reportFolder, List<StudentResult> results, Function<StudentResult, String> grade)
+            throws IOException {
+        checkNames(results);
+        for (StudentResult result : results) {
+            Path folder = ReportFiles.feedbackFolder(reportFolder, result.submission().folder());
+            ReportFiles.write(folder.resolve(FeedbackPage.HTML), FeedbackPage.html(result));
+            ReportFiles.write(folder.resolve(FeedbackPage.TEXT), FeedbackPage.text(result));
+        }
+        ReportFiles.write(reportFolder.resolve(FeedbackZip.NAME), out -> FeedbackZip.write(reportFolder, results, out));
+        ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grade));
+    }
+
+    private static void checkNames(List<StudentResult> results) {
+        Set<String> folders = new HashSet<>();
+        for (StudentResult result : results) {
+            String folder = result.submission().folder();
+            if (!ReportFiles.isPlainName(folder) || !folders.add(folder)) {
+                throw new IllegalArgumentException("submission folder \"" + folder + "\": "
+                        + (ReportFiles.isPlainName(folder) ? "two results share it" : "not one plain folder name"));
+            }
+            for (SceneResult scene : result.scenes()) {
+                for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
+                    if (image != null && (!ReportFiles.isPlainName(image) || isFeedbackFile(image))) {
+                        throw new IllegalArgumentException("image \"" + image + "\" of " + folder
+                                + ": not a plain file name of its own");
+                    }
+                }
+            }
+        }
+    }
+
+    private static boolean isFeedbackFile(String name) {
+        return name.equals(FeedbackPage.HTML) || name.equals(FeedbackPage.TEXT);
+    }
+}
