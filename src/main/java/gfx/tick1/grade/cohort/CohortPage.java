@@ -59,13 +59,13 @@ final class CohortPage {
                 .append("</bdi></a></td>")
                 .append("<td><bdi>").append(Html.escape(student.id())).append("</bdi></td>")
                 .append("<td class=\"result\">").append(result.passed() ? "pass" : "fail").append("</td>")
-                .append("<td data-sort=\"").append(share(result)).append("\">").append(result.scenesPassed())
-                .append(" of ").append(result.scenesTotal()).append("</td>")
+                .append("<td data-sort=\"").append(share(result)).append("\">").append(result.scenesTotal() == 0
+                        ? "none run" : result.scenesPassed() + " of " + result.scenesTotal()).append("</td>")
                 .append("<td data-sort=\"").append(Html.escape(grade)).append("\">").append(Html.escape(grade))
                 .append("</td>")
                 .append("<td>").append(Html.escape(result.diagnosis())).append("</td>")
                 .append("<td class=\"reason\">").append(Html.escape(result.reason())).append("</td>")
-                .append("<td data-sort=\"").append(result.time().toMillis()).append("\">")
+                .append("<td class=\"time\" data-sort=\"").append(result.time().toMillis()).append("\">")
                 .append(duration(result.time())).append("</td>");
         List<String> titles = FeedbackPage.sceneTitles(result.scenes());
         StringBuilder thumbnails = new StringBuilder();

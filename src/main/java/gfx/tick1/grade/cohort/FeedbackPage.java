@@ -22,6 +22,9 @@ final class FeedbackPage {
     static final String HTML = "feedback.html";
     static final String TEXT = "feedback.txt";
 
+    /** How an explanation line that names what to reread begins (gfx.tick1.diagnose's report). */
+    private static final String REREAD = "reread:";
+
     private FeedbackPage() {
     }
 
@@ -57,13 +60,20 @@ final class FeedbackPage {
                 : "not passed: " + result.scenesPassed() + " of " + result.scenesTotal() + " scenes matched";
     }
 
-    /** The explanation lines that say what to reread, each once, in the order they come. */
+    /**
+     * What the explanation lines say to reread, each once, in the order they come: a line "reread:
+     * handout 3.2." as "Handout 3.2.", one that gives a condition ("if it is ...: reread handout
+     * 3.2.") as it stands.
+     */
     static List<String> rereading(StudentResult result) {
         Set<String> lines = new LinkedHashSet<>();
         for (SceneResult scene : result.scenes()) {
             for (String line : scene.explanation()) {
-                if (line.toLowerCase(Locale.ROOT).contains("reread")) {
-                    lines.add(line.strip());
+                String item = line.strip();
+                if (item.startsWith(REREAD)) {
+                    lines.add(capitalised(item.substring(REREAD.length()).strip()));
+                } else if (item.toLowerCase(Locale.ROOT).contains("reread")) {
+                    lines.add(capitalised(item));
                 }
             }
         }
@@ -93,7 +103,7 @@ final class FeedbackPage {
             out.append("<h2>Scenes</h2>\n");
         }
         List<String> titles = sceneTitles(result.scenes());
-        boolean anyImages = false;
+        boolean legendShown = false;
         for (int i = 0; i < result.scenes().size(); i++) {
             SceneResult scene = result.scenes().get(i);
             out.append("<section class=\"scene ").append(scene.passed() ? "pass" : "fail").append("\">\n<h3>")
@@ -106,17 +116,17 @@ final class FeedbackPage {
             }
             List<String> images = images(scene);
             if (!images.isEmpty()) {
-                anyImages = true;
                 out.append("<div class=\"images\">\n");
                 figure(out, scene.heatMap(), "Heat map of the differences");
                 figure(out, scene.yours(), "Your image");
                 figure(out, scene.expected(), "Expected image");
                 out.append("</div>\n");
+                if (!legendShown && scene.heatMap() != null) {
+                    out.append(HeatMapLegend.html());
+                    legendShown = true;
+                }
             }
             out.append("</section>\n");
-        }
-        if (anyImages) {
-            out.append(HeatMapLegend.html());
         }
         return out.append("</body>\n</html>\n").toString();
     }

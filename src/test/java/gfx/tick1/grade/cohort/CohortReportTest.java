@@ -80,7 +80,7 @@ class CohortReportTest {
         String index = index();
         assertThat(index.split("<tr class=\"(?:pass|fail)\">", -1)).hasSize(results.size() + 1);
         for (StudentResult result : results) {
-            assertThat(index).contains("<td data-sort=\"" + result.time().toMillis() + "\">"
+            assertThat(index).contains("<td class=\"time\" data-sort=\"" + result.time().toMillis() + "\">"
                     + CohortPage.duration(result.time()) + "</td>");
         }
         assertThat(index).contains("<td data-sort=\"1.00\">1.00</td>", "<td data-sort=\"0.00\">0.00</td>");
@@ -196,7 +196,7 @@ class CohortReportTest {
     @Test
     void whatToRereadIsGatheredOnceAtTheTopOfTheFeedback() throws IOException {
         String page = read(feedbackFolder(results.get(3)).resolve("feedback.html"));
-        String reread = "reread: handout section 3.2, &quot;Diffuse reflection&quot;.";
+        String reread = "Handout section 3.2, &quot;Diffuse reflection&quot;.";
         assertThat(page).contains("<h2>What to reread</h2>\n<ul class=\"reread\">\n<li>" + reread + "</li>\n</ul>");
         assertThat(page.indexOf("What to reread")).isLessThan(page.indexOf("<h2>Scenes</h2>"));
         assertThat(read(feedbackFolder(results.get(2)).resolve("feedback.html"))).doesNotContain("What to reread");
@@ -205,7 +205,7 @@ class CohortReportTest {
     @Test
     void feedbackTellsWhatPassedAndWhatFailed() throws IOException {
         String text = read(feedbackFolder(results.get(1)).resolve("feedback.txt"));
-        assertThat(text).contains("Result: not passed: 1 of 2 scenes matched", "tick1.xml: failed",
+        assertThat(text).contains("Result: not passed: 1 of 2 scenes matched", "What to reread\n  - Handout section 3.2", "tick1.xml: failed",
                 "hidden scene 1: passed", "images beside this file: 1-tick1-diff.png, 1-tick1-yours.png");
         assertThat(read(feedbackFolder(results.get(0)).resolve("feedback.txt"))).contains("Result: passed");
     }
