@@ -4,6 +4,7 @@ import gfx.tick1.grade.cohort.StudentResult.SceneResult;
 import java.time.Duration;
 import java.util.List;
 import java.util.Locale;
+import java.util.Objects;
 import java.util.function.Function;
 
 /**
@@ -26,17 +27,33 @@ final class CohortPage {
     private CohortPage() {
     }
 
-    static String html(List<StudentResult> results, Function<StudentResult, String> grade) {
+    /** The page's style sheet and script, written into it. */
+    private static final String STYLE = Html.resource("report.css");
+    private static final String SCRIPT = Html.resource("cohort.js");
+
+    /**
+     * The page for {@code results}; {@code grade} gives each one's mark as the gradebook has it.
+     * {@code beside} are files of the report folder to link to under the summary (the feedback zip,
+     * the gradebook), by their names.
+     */
+    static String html(List<StudentResult> results, Function<StudentResult, String> grade, List<String> beside) {
         long passed = results.stream().filter(StudentResult::passed).count();
         StringBuilder out = new StringBuilder(4096 + 1024 * results.size());
         out.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
                 .append("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n")
-                .append("<title>Tick 1: the cohort at a glance</title>\n<style>\n").append(Html.resource("report.css"))
+                .append("<title>Tick 1: the cohort at a glance</title>\n<style>\n").append(STYLE)
                 .append("</style>\n</head>\n<body data-status=\"loading\">\n<h1>Tick 1: the cohort at a glance</h1>\n")
                 .append("<p class=\"summary\"><strong id=\"passed-count\">").append(passed)
                 .append("</strong> of <strong id=\"total-count\">").append(results.size())
                 .append("</strong> passed; <strong id=\"failed-count\">").append(results.size() - passed)
-                .append("</strong> did not.</p>\n<h2>Failures by diagnosis</h2>\n")
+                .append("</strong> did not.</p>\n");
+        if (!beside.isEmpty()) {
+            out.append("<p class=\"files\">Files:");
+            beside.forEach(file -> out.append(" <a href=\"").append(Html.relativeUrl(file)).append("\">")
+                    .append(Html.escape(file)).append("</a>"));
+            out.append("</p>\n");
+        }
+        out.append("<h2>Failures by diagnosis</h2>\n")
                 .append(DiagnosisChart.svg(results))
                 .append("<h2>Students</h2>\n<p class=\"hint\">Click a column's heading to sort by it; click again "
                         + "to reverse. A name opens the student's feedback.</p>\n")
@@ -46,8 +63,8 @@ final class CohortPage {
                     .append("<button type=\"button\">").append(column.heading()).append("</button></th>");
         }
         out.append("</tr></thead>\n<tbody>\n");
-        results.forEach(result -> row(out, result, grade.apply(result)));
-        return out.append("</tbody>\n</table>\n<script>\n").append(Html.resource("cohort.js"))
+        results.forEach(result -> row(out, result, Objects.requireNonNullElse(grade.apply(result), "")));
+        return out.append("</tbody>\n</table>\n<script>\n").append(SCRIPT)
                 .append("</script>\n</body>\n</html>\n").toString();
     }
 
@@ -63,7 +80,7 @@ final class CohortPage {
                         ? "none run" : result.scenesPassed() + " of " + result.scenesTotal()).append("</td>")
                 .append("<td data-sort=\"").append(Html.escape(grade)).append("\">").append(Html.escape(grade))
                 .append("</td>")
-                .append("<td>").append(Html.escape(result.diagnosis())).append("</td>")
+                .append("<td>").append(Html.escape(DiagnosisChart.label(result))).append("</td>")
                 .append("<td class=\"reason\">").append(Html.escape(result.reason())).append("</td>")
                 .append("<td class=\"time\" data-sort=\"").append(result.time().toMillis()).append("\">")
                 .append(duration(result.time())).append("</td>");

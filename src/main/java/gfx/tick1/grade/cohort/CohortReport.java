@@ -2,7 +2,9 @@ package gfx.tick1.grade.cohort;
 
 import gfx.tick1.grade.cohort.StudentResult.SceneResult;
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
@@ -24,6 +26,9 @@ public final class CohortReport {
     /** The report folder's page of the whole cohort. */
     public static final String INDEX = "index.html";
 
+    /** The gradebook the grader writes beside the index; the index links to it when it is there. */
+    static final String GRADES = "grades.csv";
+
     private CohortReport() {
     }
 
@@ -34,7 +39,8 @@ public final class CohortReport {
      * @param reportFolder the report folder; it and the feedback folders are made when missing
      * @param results      every student's result; each submission's {@code folder} must be one plain
      *                     folder name, different from every other, as must each image's file name
-     * @param grade        the mark to show for a result, as the gradebook has it (for example "1.00")
+     * @param grade        the mark to show for a result, as the gradebook has it (for example "1.00");
+     *                     the index links to {@code grades.csv} when it is already in the folder
      * @throws IllegalArgumentException when a folder or file name is not a plain name, or two
      *                     results share a folder; nothing is written then
      * @throws IOException when a file cannot be written; the files written before it stay
@@ -48,7 +54,11 @@ public final class CohortReport {
             ReportFiles.write(folder.resolve(FeedbackPage.TEXT), FeedbackPage.text(result));
         }
         ReportFiles.write(reportFolder.resolve(FeedbackZip.NAME), out -> FeedbackZip.write(reportFolder, results, out));
-        ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grade));
+        List<String> beside = new ArrayList<>(List.of(FeedbackZip.NAME));
+        if (Files.isRegularFile(reportFolder.resolve(GRADES))) {
+            beside.add(GRADES);
+        }
+        ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grade, beside));
     }
 
     private static void checkNames(List<StudentResult> results) {

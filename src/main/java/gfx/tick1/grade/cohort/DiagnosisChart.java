@@ -4,6 +4,7 @@ import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.TreeMap;
 
 /**
@@ -22,11 +23,16 @@ final class DiagnosisChart {
     private DiagnosisChart() {
     }
 
+    /** A result's diagnosis, or words saying it has none. */
+    static String label(StudentResult result) {
+        return Objects.requireNonNullElse(result.diagnosis(), "no diagnosis");
+    }
+
     /** How many failed submissions carry each diagnosis, most common first. */
     static Map<String, Integer> failuresByDiagnosis(List<StudentResult> results) {
         Map<String, Integer> counts = new TreeMap<>();
         results.stream().filter(result -> !result.passed())
-                .forEach(result -> counts.merge(result.diagnosis(), 1, Integer::sum));
+                .forEach(result -> counts.merge(label(result), 1, Integer::sum));
         Map<String, Integer> ordered = new LinkedHashMap<>();
         counts.entrySet().stream()
                 .sorted(Map.Entry.<String, Integer>comparingByValue(Comparator.reverseOrder()))

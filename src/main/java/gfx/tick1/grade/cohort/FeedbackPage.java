@@ -25,6 +25,8 @@ final class FeedbackPage {
     /** How an explanation line that names what to reread begins (gfx.tick1.diagnose's report). */
     private static final String REREAD = "reread:";
 
+    private static final String STYLE = Html.resource("report.css");
+
     private FeedbackPage() {
     }
 
@@ -87,7 +89,7 @@ final class FeedbackPage {
         out.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
                 .append("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n")
                 .append("<title>Tick 1 feedback: ").append(who).append("</title>\n<style>\n")
-                .append(Html.resource("report.css")).append("</style>\n</head>\n<body>\n")
+                .append(STYLE).append("</style>\n</head>\n<body>\n")
                 .append("<h1>Tick 1 feedback for <bdi>").append(who).append("</bdi></h1>\n")
                 .append("<p class=\"id\">Participant <bdi>").append(Html.escape(student.id())).append("</bdi></p>\n")
                 .append("<p class=\"verdict ").append(result.passed() ? "pass" : "fail").append("\">")

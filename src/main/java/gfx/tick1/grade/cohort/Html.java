@@ -35,12 +35,17 @@ final class Html {
         return out.toString();
     }
 
-    /** {@code text} for a plain-text file: control characters, which a terminal would obey, as U+FFFD. */
+    /**
+     * {@code text} for a plain-text file: control characters, which a terminal would obey, and the
+     * bidirectional formatting characters, which can make a line read as another, as U+FFFD. (A
+     * page isolates a name's direction with {@code <bdi>} instead.)
+     */
     static String plain(String text) {
         StringBuilder out = new StringBuilder(text.length());
         for (int i = 0; i < text.length(); i++) {
             char c = text.charAt(i);
-            out.append(isControl(c) ? '\uFFFD' : c);
+            boolean bidi = c >= '\u202A' && c <= '\u202E' || c >= '\u2066' && c <= '\u2069';
+            out.append(isControl(c) || bidi ? '\uFFFD' : c);
         }
         return out.toString();
     }

@@ -7,6 +7,7 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.PosixFilePermissions;
 
 /**
  * Where the report's files go, and how they are written: each file is written whole to a hidden
@@ -36,7 +37,7 @@ final class ReportFiles {
     static void write(Path target, Content content) throws IOException {
         Path folder = target.toAbsolutePath().getParent();
         Files.createDirectories(folder);
-        Path temporary = Files.createTempFile(folder, "." + target.getFileName() + ".", ".tmp");
+        Path temporary = temporaryBeside(folder, target.getFileName().toString());
         try {
             try (OutputStream out = Files.newOutputStream(temporary)) {
                 content.writeTo(out);
@@ -48,6 +49,21 @@ final class ReportFiles {
             }
         } finally {
             Files.deleteIfExists(temporary);
+        }
+    }
+
+    /**
+     * A new hidden file in {@code folder}. Asked for as rw-rw-rw-, which the umask trims as it does
+     * for any new file (usually to rw-r--r--): Files.createTempFile alone would make it, and so the
+     * finished page, readable by its owner only.
+     */
+    private static Path temporaryBeside(Path folder, String name) throws IOException {
+        String prefix = "." + name + ".";
+        try {
+            return Files.createTempFile(folder, prefix, ".tmp",
+                    PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-rw-rw-")));
+        } catch (UnsupportedOperationException e) {
+            return Files.createTempFile(folder, prefix, ".tmp"); // not a POSIX file system
         }
     }
 

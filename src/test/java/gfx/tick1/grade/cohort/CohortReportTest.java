@@ -11,10 +11,12 @@ import java.net.URLDecoder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermission;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -63,16 +65,17 @@ class CohortReportTest {
     @Test
     void everyStudentGetsAFeedbackPageAndAPlainTextCopyInTheirFolder() {
         for (StudentResult result : results) {
-            assertThat(feedbackFolder(result).resolve("feedback.html")).as(result.submission().folder()).isRegularFile();
-            assertThat(feedbackFolder(result).resolve("feedback.txt")).as(result.submission().folder()).isRegularFile();
+            String folder = result.submission().folder();
+            assertThat(feedbackFolder(result).resolve("feedback.html")).as(folder).isRegularFile();
+            assertThat(feedbackFolder(result).resolve("feedback.txt")).as(folder).isRegularFile();
         }
     }
 
     @Test
     void theIndexCountsThePassesOfTheWholeCohort() throws IOException {
         long passed = results.stream().filter(StudentResult::passed).count();
-        assertThat(index()).contains("<strong id=\"passed-count\">" + passed + "</strong> of <strong id=\"total-count\">"
-                + results.size() + "</strong> passed");
+        assertThat(index()).contains("<strong id=\"passed-count\">" + passed + "</strong> of "
+                + "<strong id=\"total-count\">" + results.size() + "</strong> passed");
     }
 
     @Test
@@ -90,7 +93,8 @@ class CohortReportTest {
     void theChartHasOneBarPerDiagnosisOfAFailureWithItsCountMostCommonFirst() throws IOException {
         Map<String, Long> expected = results.stream().filter(result -> !result.passed())
                 .collect(Collectors.groupingBy(StudentResult::diagnosis, TreeMap::new, Collectors.counting()));
-        Matcher bar = Pattern.compile("<g class=\"bar\" data-label=\"([^\"]*)\" data-count=\"(\\d+)\">").matcher(index());
+        Matcher bar = Pattern.compile("<g class=\"bar\" data-label=\"([^\"]*)\" data-count=\"(\\d+)\">")
+                .matcher(index());
         Map<String, Long> drawn = new TreeMap<>();
         List<Long> order = new ArrayList<>();
         while (bar.find()) {
@@ -120,13 +124,32 @@ class CohortReportTest {
 
     @Test
     void controlCharactersInANameNeverReachAPageOrTheTextFile() throws IOException {
-        Submission bell = new Submission("Eve_1005_assignsubmission_file_", "1005", "Eve\u001b[2J\u0007", null, null,
-                null);
+        Submission bell = new Submission("Eve_1005_assignsubmission_file_", "1005", "Eve\u001b[2J\u0007\u202Eevil",
+                null, null, null);
         StudentResult result = new StudentResult(bell, false, 0, 0, "missing file", "No Sphere.java.", List.of(),
                 Duration.ofMillis(10));
         CohortReport.write(report, List.of(result), SmallCohort::grade);
         assertThat(index() + read(feedbackFolder(result).resolve("feedback.html"))
                 + read(feedbackFolder(result).resolve("feedback.txt"))).doesNotContain("\u001b", "\u0007");
+        assertThat(read(feedbackFolder(result).resolve("feedback.txt"))).doesNotContain("\u202E");
+        assertThat(index()).contains("<bdi>Eve\uFFFD[2J\uFFFD\u202Eevil</bdi>");
+    }
+
+    @Test
+    void theIndexLinksTheFeedbackZipAndTheGradebookWhenItIsThere() throws IOException {
+        assertThat(index()).contains("<a href=\"feedback.zip\">").doesNotContain("grades.csv");
+        Files.writeString(report.resolve("grades.csv"), "Identifier,Full name\n");
+        CohortReport.write(report, results, SmallCohort::grade);
+        assertThat(index()).contains("<a href=\"feedback.zip\">", "<a href=\"grades.csv\">");
+    }
+
+    @Test
+    void thePagesMayBeReadByWhoeverMayReadAnyNewFileOfTheFolder() throws IOException {
+        Path ordinary = Files.writeString(report.resolve("ordinary.txt"), "made as any file is");
+        Set<PosixFilePermission> expected = Files.getPosixFilePermissions(ordinary);
+        for (Path page : pages()) {
+            assertThat(Files.getPosixFilePermissions(page)).as(page.toString()).isEqualTo(expected);
+        }
     }
 
     @Test
@@ -205,7 +228,8 @@ class CohortReportTest {
     @Test
     void feedbackTellsWhatPassedAndWhatFailed() throws IOException {
         String text = read(feedbackFolder(results.get(1)).resolve("feedback.txt"));
-        assertThat(text).contains("Result: not passed: 1 of 2 scenes matched", "What to reread\n  - Handout section 3.2", "tick1.xml: failed",
+        assertThat(text).contains("Result: not passed: 1 of 2 scenes matched",
+                "What to reread\n  - Handout section 3.2", "tick1.xml: failed",
                 "hidden scene 1: passed", "images beside this file: 1-tick1-diff.png, 1-tick1-yours.png");
         assertThat(read(feedbackFolder(results.get(0)).resolve("feedback.txt"))).contains("Result: passed");
     }

@@ -39,8 +39,8 @@ final class SmallCohort {
         results.add(new StudentResult(new Submission("Bob Jones_1003_assignsubmission_file_", "1003", "Bob Jones",
                 null, null, null), false, 0, 0, "does not compile", "The code does not compile: "
                 + "Sphere.java:12:5: error: ';' expected", List.of(), Duration.ofMillis(2500)));
-        results.add(failedOnTick1(report, "José Ñúñez 陈伟_1004_assignsubmission_file_", "1004", "José Ñúñez 陈伟",
-                NOT_CLAMPED, 61_000, "2 of 2 scenes wrong.", true));
+        results.add(failedOnTick1(report, "José Ñúñez 陈伟_1004_assignsubmission_file_", "1004",
+                "José Ñúñez 陈伟", NOT_CLAMPED, 61_000, "2 of 2 scenes wrong.", true));
         results.add(new StudentResult(new Submission("crsid42", "crsid42", "crsid42", null, null, null), false, 0,
                 2, "time limit", "The code ran out of time (60 s) before it finished tick1.xml.",
                 List.of(scene("tick1.xml", false, false, List.of("not rendered: the time limit"), null, null, null),
