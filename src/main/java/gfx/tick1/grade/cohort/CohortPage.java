@@ -5,7 +5,6 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
-import java.util.function.Function;
 
 /**
  * {@code index.html}, the cohort at a glance: how many passed, the chart of failures by diagnosis,
@@ -32,11 +31,11 @@ final class CohortPage {
     private static final String SCRIPT = Html.resource("cohort.js");
 
     /**
-     * The page for {@code results}; {@code grade} gives each one's mark as the gradebook has it.
+     * The page for {@code results}; {@code grades} holds each one's mark as the gradebook has it.
      * {@code beside} are files of the report folder to link to under the summary (the feedback zip,
      * the gradebook), by their names.
      */
-    static String html(List<StudentResult> results, Function<StudentResult, String> grade, List<String> beside) {
+    static String html(List<StudentResult> results, List<String> grades, List<String> beside) {
         long passed = results.stream().filter(StudentResult::passed).count();
         StringBuilder out = new StringBuilder(4096 + 1024 * results.size());
         out.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
@@ -63,7 +62,9 @@ final class CohortPage {
                     .append("<button type=\"button\">").append(column.heading()).append("</button></th>");
         }
         out.append("</tr></thead>\n<tbody>\n");
-        results.forEach(result -> row(out, result, Objects.requireNonNullElse(grade.apply(result), "")));
+        for (int i = 0; i < results.size(); i++) {
+            row(out, results.get(i), Objects.requireNonNullElse(grades.get(i), ""));
+        }
         return out.append("</tbody>\n</table>\n<script>\n").append(SCRIPT)
                 .append("</script>\n</body>\n</html>\n").toString();
     }

@@ -3,6 +3,7 @@ package gfx.tick1.grade.cohort;
 import gfx.tick1.grade.cohort.StudentResult.SceneResult;
 import java.io.IOException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -37,7 +38,7 @@ public final class CohortReport {
      * order given (the index's table starts in that order).
      *
      * @param reportFolder the report folder; it and the feedback folders are made when missing
-     * @param results      every student's result; each submission's {@code folder} must be one plain
+     * @param given        every student's result; each submission's {@code folder} must be one plain
      *                     folder name, different from every other, as must each image's file name
      * @param grade        the mark to show for a result, as the gradebook has it (for example "1.00");
      *                     the index links to {@code grades.csv} when it is already in the folder
@@ -45,9 +46,11 @@ public final class CohortReport {
      *                     results share a folder; nothing is written then
      * @throws IOException when a file cannot be written; the files written before it stay
      */
-    public static void write(Path reportFolder, List<StudentResult> results, Function<StudentResult, String> grade)
+    public static void write(Path reportFolder, List<StudentResult> given, Function<StudentResult, String> grade)
             throws IOException {
-        checkNames(results);
+        checkNames(given);
+        List<String> grades = given.stream().map(grade).toList();
+        List<StudentResult> results = given.stream().map(result -> withImagesOnDisk(reportFolder, result)).toList();
         for (StudentResult result : results) {
             Path folder = ReportFiles.feedbackFolder(reportFolder, result.submission().folder());
             ReportFiles.write(folder.resolve(FeedbackPage.HTML), FeedbackPage.html(result));
@@ -58,7 +61,7 @@ public final class CohortReport {
         if (Files.isRegularFile(reportFolder.resolve(GRADES))) {
             beside.add(GRADES);
         }
-        ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grade, beside));
+        ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grades, beside));
     }
 
     private static void checkNames(List<StudentResult> results) {
@@ -78,6 +81,23 @@ public final class CohortReport {
                 }
             }
         }
+    }
+
+    /**
+     * The result with each image that is not a file in the student's feedback folder left out
+     * (the grader could not write it), so that no page shows a broken image or link to it.
+     */
+    private static StudentResult withImagesOnDisk(Path reportFolder, StudentResult result) {
+        Path folder = ReportFiles.feedbackFolder(reportFolder, result.submission().folder());
+        List<SceneResult> scenes = result.scenes().stream().map(scene -> new SceneResult(scene.name(),
+                scene.hidden(), scene.passed(), scene.explanation(), onDisk(folder, scene.heatMap()),
+                onDisk(folder, scene.yours()), onDisk(folder, scene.expected()))).toList();
+        return new StudentResult(result.submission(), result.passed(), result.scenesPassed(), result.scenesTotal(),
+                result.diagnosis(), result.reason(), scenes, result.time());
+    }
+
+    private static String onDisk(Path folder, String image) {
+        return image != null && Files.isRegularFile(folder.resolve(image), LinkOption.NOFOLLOW_LINKS) ? image : null;
     }
 
     private static boolean isFeedbackFile(String name) {

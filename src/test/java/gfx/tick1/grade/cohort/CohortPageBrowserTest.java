@@ -140,6 +140,29 @@ class CohortPageBrowserTest {
     }
 
     @Test
+    void aCohortOfThreeHundredLoadsOnlyTheThumbnailsNearTheViewAndSortsWhole(@TempDir Path folder)
+            throws IOException {
+        List<StudentResult> cohort = SmallCohort.large(folder, 300);
+        CohortReport.write(folder, cohort, SmallCohort::grade);
+        browser.driver.get(folder.resolve(CohortReport.INDEX).toUri().toString());
+        browser.waitUpTo(PATIENCE).until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-status", "ready"));
+        // The load event waits for every image that is not lazy; lazy ones below the fold wait for a scroll.
+        browser.waitUpTo(PATIENCE).until(driver -> "complete".equals(script("return document.readyState;")));
+        String loaded = "return Array.from(document.querySelectorAll('img.thumbnail'))"
+                + ".filter(image => image.complete && image.naturalWidth > 0).length;";
+        assertThat(((Number) script(loaded)).intValue()).as("thumbnails loaded before any scroll")
+                .isPositive().isLessThan(cohort.size());
+        WebElement last = browser.driver.findElement(By.cssSelector("#students tbody tr:last-child img.thumbnail"));
+        script("arguments[0].scrollIntoView();", last);
+        browser.waitUpTo(PATIENCE).until(driver -> (Boolean) script(
+                "return arguments[0].complete && arguments[0].naturalWidth > 0;", last));
+
+        clickHeading("Time");
+        assertThat(column(7)).isEqualTo(cohort.stream().sorted(Comparator.comparing(StudentResult::time))
+                .map(result -> CohortPage.duration(result.time())).toList());
+    }
+
+    @Test
     void markupInANameIsShownAsTextAndRunsNothing() {
         assertThat(column(0)).contains(SmallCohort.HOSTILE_NAME);
         assertThat(script("return window.xssRan === undefined;")).isEqualTo(true);

@@ -217,6 +217,16 @@ class CohortReportTest {
     }
 
     @Test
+    void anImageTheGraderCouldNotWriteIsLeftOutOfThePagesAndTheZip() throws IOException {
+        Files.delete(feedbackFolder(results.get(1)).resolve("1-tick1-expected.png"));
+        CohortReport.write(report, results, SmallCohort::grade);
+        String page = read(feedbackFolder(results.get(1)).resolve("feedback.html"));
+        assertThat(page).contains("src=\"1-tick1-diff.png\"").doesNotContain("1-tick1-expected.png");
+        assertThat(zipEntries()).noneMatch(entry -> entry.endsWith("/1-tick1-expected.png")
+                && entry.startsWith(results.get(1).submission().folder()));
+    }
+
+    @Test
     void whatToRereadIsGatheredOnceAtTheTopOfTheFeedback() throws IOException {
         String page = read(feedbackFolder(results.get(3)).resolve("feedback.html"));
         String reread = "Handout section 3.2, &quot;Diffuse reflection&quot;.";

@@ -50,6 +50,27 @@ final class SmallCohort {
         return results;
     }
 
+    /**
+     * A cohort of {@code size} failing students, each with the three images of a failing tick1.xml,
+     * their times spread over a minute: the size of a year's class, to see the index stay usable.
+     */
+    static List<StudentResult> large(Path report, int size) throws IOException {
+        List<StudentResult> results = new ArrayList<>();
+        StudentResult model = failedOnTick1(report, "model", "0", "Model", NOT_CLAMPED, 0, "wrong", false);
+        Path modelFolder = report.resolve("feedback").resolve("model");
+        for (int i = 1; i <= size; i++) {
+            String folder = "Student " + i + "_" + (5000 + i) + "_assignsubmission_file_";
+            Path feedback = Files.createDirectories(report.resolve("feedback").resolve(folder));
+            for (String image : new String[] {"1-tick1-diff.png", "1-tick1-yours.png", "1-tick1-expected.png"}) {
+                Files.copy(modelFolder.resolve(image), feedback.resolve(image));
+            }
+            results.add(new StudentResult(new Submission(folder, String.valueOf(5000 + i), "Student " + i, null, null,
+                    null), false, 1, 2, i % 3 == 0 ? "time limit" : NOT_CLAMPED, "1 of 2 scenes wrong.",
+                    model.scenes(), Duration.ofMillis(i * 7919L % 60_000)));
+        }
+        return results;
+    }
+
     private static StudentResult passed(String folder, String id, String name, long millis) {
         return new StudentResult(new Submission(folder, id, name, null, null, null), true, 2, 2, "passed",
                 "Congratulations! Your code passed the tester.",
