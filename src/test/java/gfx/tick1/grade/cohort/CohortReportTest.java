@@ -106,6 +106,14 @@ class CohortReportTest {
     }
 
     @Test
+    void anEmptyCohortStillGetsAnIndexAndAnEmptyZip() throws IOException {
+        CohortReport.write(report, List.of(), SmallCohort::grade);
+        assertThat(index()).contains("<strong id=\"passed-count\">0</strong> of <strong id=\"total-count\">0</strong>",
+                "No submission failed.");
+        assertThat(zipEntries()).isEmpty();
+    }
+
+    @Test
     void aCohortWithNoFailureSaysSoInsteadOfAnEmptyChart() throws IOException {
         CohortReport.write(report, List.of(results.get(0)), SmallCohort::grade);
         assertThat(index()).contains("No submission failed.").doesNotContain("class=\"bar\"");
