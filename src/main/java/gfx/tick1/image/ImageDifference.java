@@ -167,10 +167,14 @@ public final class ImageDifference {
     }
 
     /**
-     * The heat map's colour for a pixel that differs by {@code levels} (1 to 255): on a log scale,
-     * dark red at 1, orange at 8, yellow-white from 64 on.
+     * The heat map's colour (0xRRGGBB) for a pixel that differs by {@code levels} (1 to 255) in its
+     * worst channel: on a logarithmic scale, so that 1, 2, 4, ... 64 levels are evenly spaced, dark
+     * red through red and orange to yellow-white. Legends of the heat map use it too.
      */
-    static int heatColour(int levels) {
+    public static int heatColour(int levels) {
+        if (levels < 1 || levels > 255) {
+            throw new IllegalArgumentException("a difference of " + levels + " levels: must be from 1 to 255");
+        }
         double t = Math.min(1, Math.log(levels) / Math.log(64));
         int red = (int) (128 + 127 * Math.min(1, 2 * t));
         int green = (int) (255 * Math.max(0, 2 * t - 1));

@@ -74,4 +74,28 @@ class ImageDifferenceTest {
             }
         }
     }
+
+    @Test
+    void heatColoursRunFromDarkRedAtOneLevelToYellowWhiteFromSixtyFourLevels() {
+        assertThat(ImageDifference.heatColour(1)).isEqualTo(0x800000);
+        assertThat(ImageDifference.heatColour(64)).isEqualTo(0xFFFFA0);
+        assertThat(ImageDifference.heatColour(255)).isEqualTo(0xFFFFA0);
+        for (int levels = 2; levels <= 64; levels++) {
+            int brighter = ImageDifference.heatColour(levels), dimmer = ImageDifference.heatColour(levels - 1);
+            int sum = (brighter >> 16) + (brighter >> 8 & 0xFF) + (brighter & 0xFF);
+            int sumBefore = (dimmer >> 16) + (dimmer >> 8 & 0xFF) + (dimmer & 0xFF);
+            assertThat(sum).as("%d levels against %d", levels, levels - 1).isGreaterThan(sumBefore);
+        }
+        assertThatThrownBy(() -> ImageDifference.heatColour(0)).isInstanceOf(IllegalArgumentException.class);
+    }
+
+    @Test
+    void theHeatMapPaintsADifferingPixelInItsHeatColour() {
+        BufferedImage expected = filled(1, 1, 0x808080);
+        for (int levels : new int[] {1, 5, 64, 127}) {
+            BufferedImage map = ImageDifference.between(expected, filled(1, 1, 0x808080 + levels)).heatMap();
+            assertThat(map.getRGB(0, 0) & 0xFFFFFF).as("%d levels", levels)
+                    .isEqualTo(ImageDifference.heatColour(levels));
+        }
+    }
 }

@@ -22,14 +22,15 @@ import org.openqa.selenium.support.ui.WebDriverWait;
 
 /**
  * Debian's headless Chromium, driven through its own chromedriver. Both paths are given
- * explicitly, so Selenium Manager never looks for, or downloads, a browser or a driver.
+ * explicitly, so Selenium Manager never looks for, or downloads, a browser or a driver. Other
+ * packages' page tests (the cohort report's) use it too.
  */
-final class HeadlessChromium implements AutoCloseable {
+public final class HeadlessChromium implements AutoCloseable {
 
     static final Path CHROMIUM = Path.of("/usr/bin/chromium");
     static final Path CHROMEDRIVER = Path.of("/usr/bin/chromedriver");
 
-    final ChromeDriver driver;
+    public final ChromeDriver driver;
     private final Path profile;
 
     private HeadlessChromium(ChromeDriver driver, Path profile) {
@@ -37,18 +38,18 @@ final class HeadlessChromium implements AutoCloseable {
         this.profile = profile;
     }
 
-    static boolean isInstalled() {
+    public static boolean isInstalled() {
         return Files.isExecutable(CHROMIUM) && Files.isExecutable(CHROMEDRIVER);
     }
 
     /** Skips the calling test (a JUnit assumption, so it is reported as skipped) when there is no browser. */
-    static void assumeInstalled() {
+    public static void assumeInstalled() {
         assumeTrue(isInstalled(), "browser test skipped: no " + CHROMIUM + " or " + CHROMEDRIVER
                 + "; enable the browser tests with: apt-get install chromium chromium-driver");
     }
 
     /** Starts the browser; see {@link #isInstalled()}. */
-    static HeadlessChromium start() throws IOException {
+    public static HeadlessChromium start() throws IOException {
         System.setProperty(ChromeDriverService.CHROME_DRIVER_EXE_PROPERTY, CHROMEDRIVER.toString());
         ChromeDriverService service = new ChromeDriverService.Builder()
                 .usingDriverExecutable(CHROMEDRIVER.toFile())
@@ -65,7 +66,7 @@ final class HeadlessChromium implements AutoCloseable {
         return new HeadlessChromium(driver, profile);
     }
 
-    WebDriverWait waitUpTo(Duration timeout) {
+    public WebDriverWait waitUpTo(Duration timeout) {
         return new WebDriverWait(driver, timeout);
     }
 
@@ -73,7 +74,7 @@ final class HeadlessChromium implements AutoCloseable {
      * The pixels of an {@code <img>} (at its natural size) or a {@code <canvas>} (its drawing
      * buffer) as the page itself reads them: drawn onto a 2D canvas and exported losslessly.
      */
-    BufferedImage pixelsOf(WebElement element) {
+    public BufferedImage pixelsOf(WebElement element) {
         String dataUrl = (String) driver.executeScript(
                 "const source = arguments[0];"
                         + "const canvas = document.createElement('canvas');"
