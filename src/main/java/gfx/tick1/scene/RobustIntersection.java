@@ -378,7 +378,8 @@ public final class RobustIntersection {
 
     /** x1 y1 + x2 y2 + x3 y3 with every product split exactly by fma and summed in double-double. */
     static DoubleDouble exactDot(double x1, double x2, double x3, double y1, double y2, double y3) {
-        return DoubleDouble.twoProduct(x1, y1).add(DoubleDouble.twoProduct(x2, y2)).add(DoubleDouble.twoProduct(x3, y3));
+        return DoubleDouble.twoProduct(x1, y1).add(DoubleDouble.twoProduct(x2, y2))
+                .add(DoubleDouble.twoProduct(x3, y3));
     }
 
     /** The two roots of a s^2 + 2 beta s + c = 0, near &lt;= far, from the stable q form. */

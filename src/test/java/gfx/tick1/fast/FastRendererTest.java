@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gfx.tick1.fast.FastRenderer.SphereSearch;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.math.Vector3;
+import gfx.tick1.render.GoldenImages;
 import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Intersection;
@@ -12,7 +13,6 @@ import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
 import gfx.tick1.scene.Sphere;
-import gfx.tick1.tools.UpdateReferenceImages;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -27,7 +27,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 class FastRendererTest {
 
     static List<Path> scenes() throws IOException {
-        return UpdateReferenceImages.scenesUnder(Path.of("scenes"));
+        return GoldenImages.scenesUnder(Path.of("scenes"));
     }
 
     private static Scene load(Path scene) {
@@ -49,7 +49,7 @@ class FastRendererTest {
     }
 
     static List<Path> hardScenes() throws IOException {
-        return UpdateReferenceImages.scenesUnder(Path.of("scenes/hard"));
+        return GoldenImages.scenesUnder(Path.of("scenes/hard"));
     }
 
     @ParameterizedTest(name = "{0}")
@@ -150,7 +150,8 @@ class FastRendererTest {
         scene.setAmbientLight(new Vector3(0.2));
         scene.setPointLight(new PointLight(new Vector3(-2, 5, 0), new Vector3(1), 300));
         for (int i = 0; i < count; i++) {
-            Vector3 centre = new Vector3(random.nextGaussian() * 3, random.nextGaussian() * 2, 4 + random.nextDouble() * 30);
+            Vector3 centre = new Vector3(random.nextGaussian() * 3, random.nextGaussian() * 2,
+                    4 + random.nextDouble() * 30);
             Vector3 colour = new Vector3(random.nextDouble(), random.nextDouble(), random.nextDouble());
             double radius = 0.05 + random.nextDouble() * 0.4;
             scene.addObject(new Sphere(centre, radius, colour));
