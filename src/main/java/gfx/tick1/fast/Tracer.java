@@ -16,6 +16,13 @@ import gfx.tick1.render.SamplePattern;
  * them into vector instructions: the camera's ({@link Frame#rayDirections}) and the conversion
  * to bytes ({@link #packRow}); with them a compiled 4K frame on two cores went from 137 to
  * 116 ms, and a single 4K render with 4 samples in a fresh JVM from 811 to 668 ms.
+ *
+ * <p>Why not more passes. Split into about thirty one-line passes, every one of which C2 turns
+ * into vector instructions, a row is about 1.4 times faster once the JIT has compiled it (3840 x
+ * 2160 on two cores, warm: 540 against 785 ms). But compiling those loops costs more than they
+ * save in one run of tick1, which is how it renders: a fresh JVM rendering 3840 x 2160 takes 5.9
+ * against 4.6 CPU seconds with 16 samples, 3.3 against 1.7 with 4 and 2.0 against 1.0 with one
+ * (medians of interleaved runs).
  */
 final class Tracer {
 
