@@ -263,7 +263,7 @@ public final class Tick1 implements Callable<Integer> {
     }
 
     private BufferedImage render(Scene scene, PrintWriter err) {
-        FastRenderer renderer = new FastRenderer(width, height, new SamplePattern(samples), null, intersection);
+        FastRenderer renderer = new FastRenderer(width, height, new SamplePattern(samples), intersection);
         Progress progress = new Progress(err, height, !quiet && System.console() != null);
         ForkJoinPool pool = new ForkJoinPool(threads);
         try {

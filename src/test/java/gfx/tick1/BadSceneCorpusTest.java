@@ -2,7 +2,7 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.CliRun;
+import gfx.tick1.image.EarlierImage;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -29,7 +29,6 @@ class BadSceneCorpusTest {
 
     static final Path CORPUS = Path.of("src/test/resources/bad-scenes");
     private static final Path EXPECTED = CORPUS.resolve("EXPECTED.txt");
-    private static final byte[] EARLIER_IMAGE = "an earlier image\n\u0000\u00ff".getBytes(StandardCharsets.ISO_8859_1);
 
     /** One line of EXPECTED.txt: a file, the options to run it with, and the error it must give. */
     record Case(String file, List<String> options, String error) {
@@ -59,8 +58,7 @@ class BadSceneCorpusTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("cases")
     void eachBadFileGivesItsOneLineErrorAndLeavesTheOldImage(Case c) throws IOException {
-        Path output = dir.resolve("out.png");
-        Files.write(output, EARLIER_IMAGE);
+        Path output = EarlierImage.writeTo(dir.resolve("out.png"));
         String input = CORPUS.resolve(c.file()).toString();
         List<String> args = new ArrayList<>(c.options());
         args.addAll(List.of("-i", input, "-o", output.toString(), "--width", "16", "--height", "12"));
@@ -71,7 +69,7 @@ class BadSceneCorpusTest {
         assertThat(run.err()).as("standard error").isEqualTo(CORPUS + "/" + c.error() + System.lineSeparator());
         assertThat(run.err()).as("no stack trace").doesNotContain("\tat ", "Exception");
         assertThat(run.out()).as("standard output").isEmpty();
-        assertThat(Files.readAllBytes(output)).as("the earlier image").isEqualTo(EARLIER_IMAGE);
+        assertThat(Files.readAllBytes(output)).as("the earlier image").isEqualTo(EarlierImage.bytes());
         try (Stream<Path> files = Files.list(dir)) {
             assertThat(files).as("files beside the output").containsExactly(output);
         }
@@ -79,7 +77,8 @@ class BadSceneCorpusTest {
 
     @Test
     void theParsersMessagesAreTheSameWhateverTheMachinesLanguage() throws IOException {
-        Case unquoted = cases().stream().filter(c -> c.file().equals("unquoted-attribute.xml")).findFirst().orElseThrow();
+        Case unquoted = cases().stream().filter(c -> c.file().equals("unquoted-attribute.xml"))
+                .findFirst().orElseThrow();
         Locale before = Locale.getDefault();
         Locale.setDefault(Locale.GERMANY); // the JDK's parser has German messages
         try {

@@ -3,7 +3,6 @@ package gfx.tick1;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import gfx.tick1.CliRun;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.io.PrintStream;

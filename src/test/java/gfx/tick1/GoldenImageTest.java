@@ -4,9 +4,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
+import gfx.tick1.render.GoldenImages;
 import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.SceneLoader;
-import gfx.tick1.tools.UpdateReferenceImages;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -30,17 +30,17 @@ class GoldenImageTest {
     private static final Path FAILURES = Path.of("build", "golden");
 
     static List<Path> scenes() throws IOException {
-        return UpdateReferenceImages.scenesUnder(SCENES);
+        return GoldenImages.scenesUnder(SCENES);
     }
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void rendersExactlyAsItsReferenceImage(Path scene) throws IOException {
-        Path reference = UpdateReferenceImages.referenceFor(SCENES, REFERENCES, scene);
+        Path reference = GoldenImages.referenceFor(SCENES, REFERENCES, scene);
         assertThat(reference).as("reference image for %s (make it with: gradle updateReferenceImages)", scene)
                 .exists();
         BufferedImage expected = ImageIO.read(reference.toFile());
-        BufferedImage actual = new ReferenceRenderer(UpdateReferenceImages.WIDTH, UpdateReferenceImages.HEIGHT)
+        BufferedImage actual = new ReferenceRenderer(GoldenImages.WIDTH, GoldenImages.HEIGHT)
                 .render(new SceneLoader(scene, false).getScene());
 
         ImageDifference difference = ImageDifference.between(expected, actual);
@@ -58,7 +58,7 @@ class GoldenImageTest {
     @Test
     void everyReferenceImageBelongsToAScene() throws IOException {
         List<Path> expected = scenes().stream()
-                .map(s -> UpdateReferenceImages.referenceFor(SCENES, REFERENCES, s)).collect(Collectors.toList());
+                .map(s -> GoldenImages.referenceFor(SCENES, REFERENCES, s)).collect(Collectors.toList());
         try (Stream<Path> files = Files.walk(REFERENCES)) {
             assertThat(files.filter(p -> p.toString().endsWith(".png")))
                     .as("reference images without a scene (stale goldens)").allMatch(expected::contains);

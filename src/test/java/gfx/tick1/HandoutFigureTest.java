@@ -28,7 +28,8 @@ class HandoutFigureTest {
         assumeTrue(Files.exists(figure), "skipped: " + figure.toAbsolutePath()
                 + " is not here; check out the shared folder beside the project to run it");
         BufferedImage expected = ImageIO.read(figure.toFile());
-        BufferedImage actual = new ReferenceRenderer(640, 480).render(new SceneLoader(Path.of("scenes/tick1.xml"), false).getScene());
+        BufferedImage actual = new ReferenceRenderer(640, 480)
+                .render(new SceneLoader(Path.of("scenes/tick1.xml"), false).getScene());
 
         ImageDifference difference = ImageDifference.between(expected, actual);
         assertThat(difference.maxDifference()).as(difference.summary()).isLessThanOrEqualTo(3);

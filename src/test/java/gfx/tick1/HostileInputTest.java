@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.sun.net.httpserver.HttpServer;
-import gfx.tick1.CliRun;
+import gfx.tick1.image.EarlierImage;
 import gfx.tick1.scene.SceneLoader;
 import java.io.IOException;
 import java.io.RandomAccessFile;
@@ -35,12 +35,10 @@ class HostileInputTest {
     Path dir;
 
     private Path output;
-    private final byte[] earlierImage = "an earlier image".getBytes(StandardCharsets.UTF_8);
 
     @BeforeEach
     void writeAnEarlierImage() throws IOException {
-        output = dir.resolve("out.png");
-        Files.write(output, earlierImage);
+        output = EarlierImage.writeTo(dir.resolve("out.png"));
     }
 
     private Path scene(String xml) throws IOException {
@@ -57,7 +55,7 @@ class HostileInputTest {
     private void assertRefused(CliRun run, String line) throws IOException {
         assertThat(run.status()).as(run.err()).isEqualTo(Tick1.EXIT_BAD_SCENE);
         assertThat(run.err()).isEqualTo(line + System.lineSeparator());
-        assertThat(Files.readAllBytes(output)).isEqualTo(earlierImage);
+        assertThat(Files.readAllBytes(output)).isEqualTo(EarlierImage.bytes());
     }
 
     /** Each template declares, in its own way, something that would pull SECRET into the scene. */

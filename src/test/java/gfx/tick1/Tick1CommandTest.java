@@ -2,6 +2,7 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.image.EarlierImage;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
@@ -19,9 +20,7 @@ class Tick1CommandTest {
     Path dir;
 
     private Path existingOutput() throws IOException {
-        Path output = dir.resolve("out.png");
-        Files.writeString(output, "an earlier image");
-        return output;
+        return EarlierImage.writeTo(dir.resolve("out.png"));
     }
 
     private Path scene(String xml) throws IOException {
@@ -83,23 +82,12 @@ class Tick1CommandTest {
     }
 
     @Test
-    void anInvalidSceneGivesOneLineAndStatusOneAndKeepsTheOldImage() throws IOException {
-        Path output = existingOutput();
-        Path scene = scene("<scene>\n  <sphere radius=\"-1\" colour=\"#FF0000\"/>\n</scene>\n");
-        CliRun run = CliRun.of("-i", scene.toString(), "-o", output.toString());
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
-        assertThat(run.err()).isEqualTo(scene + ":2:11: sphere radius \"-1\": must be a number greater than 0"
-                + System.lineSeparator());
-        assertThat(Files.readString(output)).isEqualTo("an earlier image");
-    }
-
-    @Test
     void aMissingInputIsNamed() throws IOException {
         Path output = existingOutput();
         CliRun run = CliRun.of("-i", dir.resolve("missing.xml").toString(), "-o", output.toString());
         assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
         assertThat(run.err().strip()).isEqualTo(dir.resolve("missing.xml") + ": no such file");
-        assertThat(Files.readString(output)).isEqualTo("an earlier image");
+        assertThat(output).hasBinaryContent(EarlierImage.bytes());
     }
 
     @Test
@@ -126,17 +114,6 @@ class Tick1CommandTest {
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.toString(), "--width", "8", "--height", "8");
         assertThat(run.status()).isEqualTo(Tick1.EXIT_CANNOT_WRITE);
         assertThat(run.err().strip()).isEqualTo(dir + ": cannot write the image: is a directory, expected a file name for the PNG");
-    }
-
-    @Test
-    void badOptionsGiveOneLineAndStatusTwo() {
-        for (String[] args : new String[][] {{"--width", "0"}, {"--height", "100000"}, {"--width", "abc"},
-                {"--no-such-option"}, {"--threads", "0"}}) {
-            CliRun run = CliRun.of(args);
-            assertThat(run.status()).as(String.join(" ", args)).isEqualTo(Tick1.EXIT_USAGE);
-            assertThat(run.err().lines()).as(run.err()).hasSize(1);
-            assertThat(run.err()).startsWith("tick1: ").contains("(see tick1 --help)");
-        }
     }
 
     @Test

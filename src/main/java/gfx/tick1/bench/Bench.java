@@ -93,10 +93,12 @@ public final class Bench implements Callable<Integer> {
             Files.writeString(file, CrowdScene.xml(count));
             Scene crowd = load(file);
             BufferedImage bruteForce = new FastRenderer(settings.errorWidth, settings.errorHeight, new SamplePattern(1),
-                    false, Intersection.DEFAULT).render(crowd);
-            for (boolean bvh : new boolean[] {false, true}) {
-                Variant variant = new Variant(bvh ? "BVH" : "brute force", 1, cores,
-                        (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), bvh, Intersection.DEFAULT).render(s));
+                    FastRenderer.SphereSearch.BRUTE_FORCE, Intersection.DEFAULT).render(crowd);
+            for (FastRenderer.SphereSearch search : new FastRenderer.SphereSearch[] {
+                FastRenderer.SphereSearch.BRUTE_FORCE, FastRenderer.SphereSearch.BVH}) {
+                Variant variant = new Variant(search == FastRenderer.SphereSearch.BVH ? "BVH" : "brute force", 1, cores,
+                        (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), search, Intersection.DEFAULT)
+                                .render(s));
                 // Brute force over 10,000 spheres takes seconds a frame: fewer runs for the crowds.
                 results.add(measure(variant, file.getFileName().toString(), crowd, 640, 480,
                         settings.withRuns(1, Math.min(settings.runs, 3)), "brute force", bruteForce));
@@ -135,11 +137,9 @@ public final class Bench implements Callable<Integer> {
         for (Intersection intersection : new Intersection[] {Intersection.ROBUST, Intersection.HANDOUT}) {
             for (int threads : new int[] {cores, 1}) {
                 variants.add(new Variant("fast double, " + name(intersection), 1, threads,
-                        (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), null, intersection).render(s)));
+                        (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), intersection).render(s)));
             }
         }
-        variants.add(new Variant("fast double, robust, scalar tracer", 1, cores,
-                (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), null, Intersection.DEFAULT, false).render(s)));
         for (int samples : new int[] {4, 16}) {
             variants.add(new Variant("fast double, robust, " + samples + " samples", samples, cores,
                     (s, w, h) -> new FastRenderer(w, h, new SamplePattern(samples)).render(s)));

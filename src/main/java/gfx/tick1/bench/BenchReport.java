@@ -1,6 +1,5 @@
 package gfx.tick1.bench;
 
-import gfx.tick1.fast.FastRenderer;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -70,12 +69,7 @@ final class BenchReport {
                 + "before the JIT has seen the others); times are wall-clock per frame after warm-up "
                 + "(median, and the fastest and slowest run as the spread). Error is measured on a smaller frame "
                 + "against `truth` (the double-double TruthRenderer), against `256 samples` for anti-aliased "
-                + "variants, or against `brute force` for the BVH. The fast renderer has two tracers with the same "
-                + "pixels: once a process is warm (after " + FastRenderer.VECTOR_AFTER_RAYS / 1_000_000
-                + " million rays) and for frames at least " + FastRenderer.VECTOR_MIN_WIDTH
-                + " pixels wide it uses the vector tracer, "
-                + "which the JIT vectorises; a one-off render at the command line uses the scalar tracer, which is "
-                + "faster before the JIT has compiled it (see `FastRenderer`).\n\n");
+                + "variants, or against `brute force` for the BVH.\n\n");
         md.append("| variant | scene | frame | threads | median ms | spread ms | Mrays/s | error against | max levels "
                 + "| pixels differing | PSNR dB |\n|---|---|---|---:|---:|---:|---:|---|---:|---:|---:|\n");
         for (Result r : results) {

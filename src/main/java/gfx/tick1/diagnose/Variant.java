@@ -67,7 +67,8 @@ public enum Variant {
     FALL_OFF_WITHOUT_4PI("fall-off without 4 pi", "",
             "the light falls off as intensity / d^2 without the 4 pi, so it is about 12.6 times too bright; "
                     + "light.getIlluminationAt(distanceToLight) has the right formula",
-            "section 5, \"Phong illumination code\": the given line Vector3 I = light.getIlluminationAt(distanceToLight)"),
+            "section 5, \"Phong illumination code\": the given line "
+                    + "Vector3 I = light.getIlluminationAt(distanceToLight)"),
     V_AWAY_FROM_CAMERA("V pointing away from the camera", "",
             "V points from the camera to the surface (P) instead of back to the camera (-P), so highlights land "
                     + "where the light is mirrored away from you; negating R (reflecting -L, a bounce) gives the same "

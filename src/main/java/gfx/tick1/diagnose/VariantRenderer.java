@@ -1,6 +1,23 @@
 package gfx.tick1.diagnose;
 
-import static gfx.tick1.diagnose.Variant.*;
+import static gfx.tick1.diagnose.Variant.AMBIENT_DIFFUSE;
+import static gfx.tick1.diagnose.Variant.AMBIENT_ONLY;
+import static gfx.tick1.diagnose.Variant.AMBIENT_WITHOUT_C_DIFF;
+import static gfx.tick1.diagnose.Variant.BACKGROUND_ONLY;
+import static gfx.tick1.diagnose.Variant.FALL_OFF_WITHOUT_4PI;
+import static gfx.tick1.diagnose.Variant.FAR_ROOT;
+import static gfx.tick1.diagnose.Variant.FLAT_COLOUR;
+import static gfx.tick1.diagnose.Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT;
+import static gfx.tick1.diagnose.Variant.NO_FALL_OFF;
+import static gfx.tick1.diagnose.Variant.RED_BLUE_SWAPPED;
+import static gfx.tick1.diagnose.Variant.ROUNDED_BYTES;
+import static gfx.tick1.diagnose.Variant.R_WRONG_WAY;
+import static gfx.tick1.diagnose.Variant.SPECULAR_WITHOUT_I;
+import static gfx.tick1.diagnose.Variant.UNCLAMPED_N_DOT_L;
+import static gfx.tick1.diagnose.Variant.UNCLAMPED_R_DOT_V;
+import static gfx.tick1.diagnose.Variant.UNNORMALISED_L_V;
+import static gfx.tick1.diagnose.Variant.UPSIDE_DOWN;
+import static gfx.tick1.diagnose.Variant.V_AWAY_FROM_CAMERA;
 
 import gfx.tick1.math.Ray;
 import gfx.tick1.math.Vector3;

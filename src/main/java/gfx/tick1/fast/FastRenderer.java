@@ -9,7 +9,6 @@ import java.awt.image.DirectColorModel;
 import java.awt.image.Raster;
 import java.awt.image.WritableRaster;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.IntConsumer;
 import java.util.stream.IntStream;
 
@@ -35,55 +34,37 @@ public final class FastRenderer {
      */
     public static final int BVH_THRESHOLD = 256;
 
-    /**
-     * The {@link VectorTracer} is used for frames at least this wide, once this process has
-     * traced {@link #VECTOR_AFTER_RAYS} rays; otherwise the {@link ScalarTracer}. Both give the
-     * same pixels; they differ in when they are fast. Measured on tick1.xml, two threads, after
-     * 30 renders (median of the last 10), scalar against vector: 6 against 10.5 ms at 640 x 480,
-     * 15 against 12.5 at 1280 x 720, 30 against 17 at 1920 x 1080, 83 against 49 at 2560 x 1440,
-     * 116 against 76 at 3840 x 2160. The vector tracer's passes cost a little per row, which
-     * narrow rows do not repay.
-     */
-    public static final int VECTOR_MIN_WIDTH = 1280;
-
-    /**
-     * The vector tracer is many short loops that C2 unrolls and vectorises, which costs the
-     * compiler about half a second of a core, and until then it runs slower than the scalar
-     * tracer: a single render in a fresh JVM took, median of 5, 627 against 386 ms at 3840 x
-     * 2160, and 872 against 668 ms with 4 samples. A one-off render (the command line) never
-     * earns that back; a process that renders again and again (the benchmark, the preview,
-     * grading) does. So the first renders of a process use the scalar tracer.
-     */
-    public static final long VECTOR_AFTER_RAYS = 5_000_000;
-
-    /** Rays traced by fast renderers in this process so far: how warm the JIT is. */
-    private static final AtomicLong RAYS_TRACED = new AtomicLong();
+    /** How the renderer finds the spheres a ray may meet. */
+    public enum SphereSearch {
+        /** The BVH from {@link #BVH_THRESHOLD} spheres on, brute force below. */
+        BY_SCENE_SIZE,
+        /** Every sphere whose screen rectangle holds the pixel. */
+        BRUTE_FORCE,
+        /** The spheres the {@link SphereBvh} chooses. */
+        BVH
+    }
 
     private final Frame frame;
-    private final Boolean forceBvh, forceVector;
+    private final SphereSearch search;
     private final Intersection intersection;
 
     public FastRenderer(int width, int height, SamplePattern samples) {
-        this(width, height, samples, null, Intersection.DEFAULT);
+        this(width, height, samples, Intersection.DEFAULT);
+    }
+
+    /** @param intersection how rays meet spheres, as in {@code Renderer(width, height, intersection)} */
+    public FastRenderer(int width, int height, SamplePattern samples, Intersection intersection) {
+        this(width, height, samples, SphereSearch.BY_SCENE_SIZE, intersection);
     }
 
     /**
-     * @param bvh force the BVH on (true) or off (false), or null to choose by scene size
+     * @param search how to find the spheres a ray may meet
      * @param intersection how rays meet spheres, as in {@code Renderer(width, height, intersection)}
      */
-    public FastRenderer(int width, int height, SamplePattern samples, Boolean bvh, Intersection intersection) {
-        this(width, height, samples, bvh, intersection, null);
-    }
-
-    /**
-     * @param vector force the {@link VectorTracer} (true) or the {@link ScalarTracer} (false), or
-     *     null to choose by {@link #VECTOR_MIN_WIDTH} and {@link #VECTOR_AFTER_RAYS}
-     */
-    public FastRenderer(int width, int height, SamplePattern samples, Boolean bvh, Intersection intersection,
-            Boolean vector) {
+    public FastRenderer(int width, int height, SamplePattern samples, SphereSearch search,
+            Intersection intersection) {
         this.frame = Frame.of(width, height, samples);
-        this.forceBvh = bvh;
-        this.forceVector = vector;
+        this.search = search;
         this.intersection = intersection;
     }
 
@@ -94,18 +75,15 @@ public final class FastRenderer {
     /** Renders on the current pool's threads; {@code rowsDone} hears each finished row's count. */
     public BufferedImage render(Scene scene, IntConsumer rowsDone) {
         FlatScene flat = new FlatScene(scene, intersection);
-        boolean bvh = forceBvh != null ? forceBvh : flat.size >= BVH_THRESHOLD;
+        boolean bvh = search == SphereSearch.BVH
+                || search == SphereSearch.BY_SCENE_SIZE && flat.size >= BVH_THRESHOLD;
         SphereBvh tree = bvh && flat.size > 0 ? new SphereBvh(flat) : null;
         ScreenBounds bounds = new ScreenBounds(flat, frame);
         int width = frame.width(), height = frame.height();
         int[] pixels = new int[width * height];
         AtomicInteger finished = new AtomicInteger();
-        boolean warm = RAYS_TRACED.getAndAdd(frame.rays()) >= VECTOR_AFTER_RAYS;
-        boolean vector = forceVector != null ? forceVector : warm && width >= VECTOR_MIN_WIDTH;
         // One tracer (and its row buffers) a thread, not a row.
-        ThreadLocal<Tracer> tracers = ThreadLocal.withInitial(() -> vector
-                ? new VectorTracer(flat, tree, bounds, frame)
-                : new ScalarTracer(flat, tree, bounds, frame));
+        ThreadLocal<Tracer> tracers = ThreadLocal.withInitial(() -> new Tracer(flat, tree, bounds, frame));
         IntStream.range(0, height).parallel().forEach(y -> {
             tracers.get().row(y, pixels, y * width);
             rowsDone.accept(finished.incrementAndGet());

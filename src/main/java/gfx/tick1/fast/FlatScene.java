@@ -27,6 +27,11 @@ final class FlatScene {
     final double[] cx, cy, cz, radius;
     /** C_diff. */
     final double[] red, green, blue;
+    /**
+     * The Phong coefficients k_d, k_s and n, read from each {@link Sphere} as the readable
+     * Renderer reads them, so that the two cannot differ.
+     */
+    final double[] kD, kS, n;
     final double ambientRed, ambientGreen, ambientBlue;
     final boolean lit;
     final double lightX, lightY, lightZ, lightRed, lightGreen, lightBlue, intensity;
@@ -44,6 +49,9 @@ final class FlatScene {
         red = new double[size];
         green = new double[size];
         blue = new double[size];
+        kD = new double[size];
+        kS = new double[size];
+        n = new double[size];
         for (int i = 0; i < size; i++) {
             Sphere sphere = spheres.get(i);
             Vector3 centre = SphereGeometry.centre(sphere);
@@ -58,6 +66,9 @@ final class FlatScene {
             red[i] = sphere.getColour().x;
             green[i] = sphere.getColour().y;
             blue[i] = sphere.getColour().z;
+            kD[i] = sphere.getPhong_kD();
+            kS[i] = sphere.getPhong_kS();
+            n[i] = sphere.getPhong_n();
         }
         Vector3 ambient = scene.getAmbientLighting();
         ambientRed = ambient.x;

@@ -51,8 +51,4 @@ record Frame(int width, int height, SamplePattern samples, double widthM, double
         }
         return column;
     }
-
-    long rays() {
-        return (long) width * height * samples.size();
-    }
 }

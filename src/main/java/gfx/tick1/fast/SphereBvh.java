@@ -56,7 +56,8 @@ final class SphereBvh {
         for (int k = from; k < to; k++) {
             int i = spheres[k];
             double r = scene.radius[i];
-            double pad = 1e-9 * (Math.abs(scene.cx[i]) + Math.abs(scene.cy[i]) + Math.abs(scene.cz[i]) + r) + Double.MIN_NORMAL;
+            double pad = 1e-9 * (Math.abs(scene.cx[i]) + Math.abs(scene.cy[i]) + Math.abs(scene.cz[i]) + r)
+                    + Double.MIN_NORMAL;
             double[] centre = {scene.cx[i], scene.cy[i], scene.cz[i]};
             for (int axis = 0; axis < 3; axis++) {
                 bounds[box + axis] = Math.min(bounds[box + axis], centre[axis] - r - pad);

@@ -104,7 +104,8 @@ public final class PngOutput {
     private static Path createTemporary(Path directory, String name) throws IOException {
         String prefix = "." + name + ".";
         try {
-            FileAttribute<?> ordinary = PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-rw-rw-"));
+            FileAttribute<?> ordinary =
+                    PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-rw-rw-"));
             return Files.createTempFile(directory, prefix, ".tmp", ordinary);
         } catch (UnsupportedOperationException e) {
             return Files.createTempFile(directory, prefix, ".tmp"); // not a POSIX file system

@@ -42,7 +42,7 @@ import java.util.concurrent.atomic.AtomicInteger;
  *       file the page uploads (the request body), parsed in memory: nothing is written to disk.</li>
  * </ul>
  * A scene the loader rejects is answered 422 with {@code {"error": message}}, the message being
- * the CLI's own {@code file:line:column} line. The render is the CLI's: {@link Renderer} at the
+ * the CLI's own {@code file:line:column} line. The render is the CLI's: {@link FastRenderer} at the
  * CLI's default 640 x 480.
  *
  * <p>Nothing a client does can hold the server: every request must arrive, headers and body,

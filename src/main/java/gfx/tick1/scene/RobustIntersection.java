@@ -179,8 +179,8 @@ public final class RobustIntersection {
     }
 
     /**
-     * The quick test, {@link #handoutCertainlyAccurate}, with its arithmetic done here by the
-     * helpers below, one ray at a time.
+     * The quick test, {@link #handoutCertainlyAccurate}, with its arithmetic done by the helpers
+     * below.
      */
     static boolean quickAccepts(double a, double roughBeta, double betaAbs, double roughDelta, double E) {
         double sqrtLow = quickSquareRoot(roughDelta, E);
@@ -191,45 +191,28 @@ public final class RobustIntersection {
         return handoutCertainlyAccurate(roughDelta, E, near, far, spread, rootError);
     }
 
-    /**
-     * The same decision from quantities computed beforehand by the helpers below: a renderer can
-     * compute those for many rays at once, in loops the JIT turns into vector instructions, and
-     * then take the decision here, branch by branch, as the method above takes it.
-     */
-    public static double nearestRoot(double dx, double dy, double dz, double a, Offset offset,
-            boolean keepHandoutWhereAccurate, double betaAbs, double E, double roughDelta,
-            double near, double far, double spread, double rootError) {
-        if (certainlyMisses(roughDelta, E)) {
-            return Double.NEGATIVE_INFINITY;
-        }
-        if (keepHandoutWhereAccurate && handoutCertainlyAccurate(roughDelta, E, near, far, spread, rootError)) {
-            return HANDOUT_IS_ACCURATE;
-        }
-        return carefulNearestRoot(dx, dy, dz, a, offset, betaAbs, E, keepHandoutWhereAccurate);
-    }
-
     /** beta = D.f in plain doubles, as the handout computes it (its b is 2 beta, exactly). */
     public static double roughBeta(double dx, double dy, double dz, Offset offset) {
         return dx * offset.fx() + dy * offset.fy() + dz * offset.fz();
     }
 
     /** sum |D_i f_i|: the size of the terms of beta, which its rounding error is relative to. */
-    public static double betaAbs(double dx, double dy, double dz, Offset offset) {
+    static double betaAbs(double dx, double dy, double dz, Offset offset) {
         return Math.abs(dx * offset.fx()) + Math.abs(dy * offset.fy()) + Math.abs(dz * offset.fz());
     }
 
     /** E: the bound on the error of the handout's discriminant, divided by 4 (see the class comment). */
-    public static double discriminantBound(double a, double betaAbs, Offset offset) {
+    static double discriminantBound(double a, double betaAbs, Offset offset) {
         return DISCRIMINANT_BOUND * (betaAbs * betaAbs + a * (offset.ff() + offset.rr()));
     }
 
     /** Delta = beta^2 - a c in plain doubles: within E of the exact value. */
-    public static double roughDelta(double a, double roughBeta, Offset offset) {
+    static double roughDelta(double a, double roughBeta, Offset offset) {
         return roughBeta * roughBeta - a * (offset.ff() - offset.rr());
     }
 
     /** Below -2E both the handout and exact arithmetic certainly miss. */
-    public static boolean certainlyMisses(double roughDelta, double E) {
+    private static boolean certainlyMisses(double roughDelta, double E) {
         return roughDelta < -2 * E;
     }
 
@@ -237,7 +220,7 @@ public final class RobustIntersection {
      * sqrt(roughDelta - 2E), a lower bound on sqrt(Delta): the quick test's one square root. NaN
      * when the argument is negative, which the quick test rejects.
      */
-    public static double quickSquareRoot(double roughDelta, double E) {
+    private static double quickSquareRoot(double roughDelta, double E) {
         return Math.sqrt(roughDelta - 2 * E);
     }
 
@@ -289,8 +272,8 @@ public final class RobustIntersection {
      * answers with and without this shortcut are the same.
      *
      * <p>Its arithmetic is in the helpers below ({@link #quickSquareRoot}, {@link #quickNear},
-     * {@link #quickFar}, {@link #quickSpread}, {@link #quickRootError}), so that a renderer can do
-     * it for many rays at a time; only the comparisons are here. Multiplying by the reciprocals
+     * {@link #quickFar}, {@link #quickSpread}, {@link #quickRootError}), one named step of the
+     * bound each; only the comparisons are here. Multiplying by the reciprocals
      * 1 / a and 1 / sqrtLow instead of dividing rounds differently by an ulp, which the factors
      * of 2 and 8u absorb.
      */
@@ -308,12 +291,12 @@ public final class RobustIntersection {
     }
 
     /** The quick test's near root (-roughBeta - sqrtLow) / a. */
-    public static double quickNear(double roughBeta, double sqrtLow, double overA) {
+    private static double quickNear(double roughBeta, double sqrtLow, double overA) {
         return (-roughBeta - sqrtLow) * overA;
     }
 
     /** The quick test's far root (-roughBeta + sqrtLow) / a. */
-    public static double quickFar(double roughBeta, double sqrtLow, double overA) {
+    private static double quickFar(double roughBeta, double sqrtLow, double overA) {
         return (-roughBeta + sqrtLow) * overA;
     }
 
@@ -321,12 +304,12 @@ public final class RobustIntersection {
      * How far the quick roots may be from the exact ones. {@code sensitivity} is E / sqrtLow,
      * which bounds sqrt(Delta) - sqrtLow by twice itself (sqrt(x + 3E) &lt;= sqrt(x) + 3E / (2 sqrt(x))).
      */
-    public static double quickSpread(double betaAbs, double sensitivity, double overA, double near, double far) {
+    private static double quickSpread(double betaAbs, double sensitivity, double overA, double near, double far) {
         return (4 * U * betaAbs + 2 * sensitivity) * overA + 8 * U * (Math.abs(near) + Math.abs(far));
     }
 
     /** An upper bound on the larger of the exact roots' magnitudes. */
-    public static double quickLargest(double near, double far, double spread) {
+    private static double quickLargest(double near, double far, double spread) {
         return Math.max(Math.abs(near), Math.abs(far)) + spread;
     }
 
@@ -335,7 +318,7 @@ public final class RobustIntersection {
      * larger: sqrt(Delta) by sqrtLow below a division, by sqrtLow + 2 sensitivity elsewhere, and
      * the largest root by {@link #quickLargest}.
      */
-    public static double quickRootError(double betaAbs, double sensitivity, double sqrtLow, double overA,
+    private static double quickRootError(double betaAbs, double sensitivity, double sqrtLow, double overA,
             double largest) {
         double sqrtHigh = sqrtLow + 2 * sensitivity;
         return (sensitivity + 4 * U * (betaAbs + sqrtHigh)) * overA + 16 * U * largest;
@@ -395,7 +378,8 @@ public final class RobustIntersection {
 
     /** x1 y1 + x2 y2 + x3 y3 with every product split exactly by fma and summed in double-double. */
     static DoubleDouble exactDot(double x1, double x2, double x3, double y1, double y2, double y3) {
-        return DoubleDouble.twoProduct(x1, y1).add(DoubleDouble.twoProduct(x2, y2)).add(DoubleDouble.twoProduct(x3, y3));
+        return DoubleDouble.twoProduct(x1, y1).add(DoubleDouble.twoProduct(x2, y2))
+                .add(DoubleDouble.twoProduct(x3, y3));
     }
 
     /** The two roots of a s^2 + 2 beta s + c = 0, near &lt;= far, from the stable q form. */

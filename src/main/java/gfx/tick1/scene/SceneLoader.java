@@ -328,7 +328,8 @@ public final class SceneLoader {
             }
             String text = element.getAttribute("colour");
             if (!COLOUR.matcher(text).matches()) {
-                throw attributeError(at, element, "colour", "must be # followed by six hexadecimal digits, as in #FF8800");
+                throw attributeError(at, element, "colour",
+                        "must be # followed by six hexadecimal digits, as in #FF8800");
             }
             // Each channel is value / 255.0 (the starter code's conversion).
             int rgb = Integer.parseInt(text.substring(1), 16);

@@ -2,6 +2,7 @@ package gfx.tick1.tools;
 
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
+import gfx.tick1.render.GoldenImages;
 import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.TruthRenderer;
 import gfx.tick1.scene.Intersection;
@@ -31,10 +32,10 @@ public final class HardCaseReport {
         Path scenes = Path.of(args.length > 0 ? args[0] : "scenes/hard");
         Path images = Path.of(args.length > 1 ? args[1] : "docs/images/hard");
         Files.createDirectories(images);
-        int width = UpdateReferenceImages.WIDTH, height = UpdateReferenceImages.HEIGHT;
+        int width = GoldenImages.WIDTH, height = GoldenImages.HEIGHT;
         System.out.println("| case | handout formula vs truth | robust (default) vs truth | pictures |");
         System.out.println("| --- | --- | --- | --- |");
-        for (Path file : UpdateReferenceImages.scenesUnder(scenes)) {
+        for (Path file : GoldenImages.scenesUnder(scenes)) {
             String name = file.getFileName().toString().replace(".xml", "");
             Scene scene = new SceneLoader(file, false).getScene();
             BufferedImage truth = new TruthRenderer(width, height).render(scene);

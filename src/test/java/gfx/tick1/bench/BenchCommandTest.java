@@ -53,9 +53,8 @@ class BenchCommandTest {
         List<String> lines = Files.readAllLines(out.resolve("results.csv"));
         assertThat(lines.get(0)).startsWith("variant,scene,width,height,samples,threads,median_ms")
                 .contains("max_level_difference", "psnr_db");
-        assertThat(lines).hasSize(1 + 11 + 2); // eleven tick1.xml variants, brute force and BVH on the crowd
+        assertThat(lines).hasSize(1 + 10 + 2); // ten tick1.xml variants, brute force and BVH on the crowd
         assertThat(String.join("\n", lines)).contains("\"readable Renderer, handout formula\"", "\"float, robust\"",
-                "\"fast double, robust, scalar tracer\"",
                 "\"fast double, robust, 16 samples\"", "\"BVH\",crowd-1000.xml");
     }
 

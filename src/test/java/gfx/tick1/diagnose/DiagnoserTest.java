@@ -4,10 +4,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gfx.tick1.image.PngInput;
+import gfx.tick1.render.GoldenImages;
 import gfx.tick1.scene.BundledScenes;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
-import gfx.tick1.tools.UpdateReferenceImages;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -78,14 +78,15 @@ class DiagnoserTest {
     }
 
     static Stream<Path> scenes() throws IOException {
-        return UpdateReferenceImages.scenesUnder(Path.of("scenes")).stream();
+        return GoldenImages.scenesUnder(Path.of("scenes")).stream();
     }
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void everyReferenceImageIsDiagnosedCorrect(Path scene) throws IOException {
-        Path reference = UpdateReferenceImages.referenceFor(Path.of("scenes"), Path.of("reference-images"), scene);
-        Diagnosis diagnosis = new Diagnoser().diagnose(PngInput.read(reference), new SceneLoader(scene, false).getScene());
+        Path reference = GoldenImages.referenceFor(Path.of("scenes"), Path.of("reference-images"), scene);
+        Diagnosis diagnosis = new Diagnoser()
+                .diagnose(PngInput.read(reference), new SceneLoader(scene, false).getScene());
         assertThat(diagnosis.closest().variant()).as(String.join("\n", diagnosis.report())).isEqualTo(Variant.CORRECT);
         assertThat(diagnosis.closest().exactShare()).isEqualTo(1);
         assertThat(diagnosis.verdict()).isEqualTo(Diagnosis.Verdict.CORRECT);

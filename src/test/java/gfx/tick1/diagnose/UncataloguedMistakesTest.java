@@ -87,7 +87,8 @@ class UncataloguedMistakesTest {
                     Vector3 L = light.getPosition().subtract(P).normalised();
                     Vector3 V = P.scale(-1).normalised();
                     colour = shading.apply(new Shading(object.getColour(), scene.getAmbientLighting(),
-                            light.getIlluminationAt(distanceToLight), hit.getNormal(), L, V, L.reflectIn(hit.getNormal())));
+                            light.getIlluminationAt(distanceToLight), hit.getNormal(), L, V,
+                            L.reflectIn(hit.getNormal())));
                 }
                 image.setRGB(x, y, colour.toRGB());
             }

@@ -3,11 +3,11 @@ package gfx.tick1.diagnose;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.image.ImageDifference;
+import gfx.tick1.render.GoldenImages;
 import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.BundledScenes;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
-import gfx.tick1.tools.UpdateReferenceImages;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -20,7 +20,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 class VariantRendererTest {
 
     static Stream<Path> scenes() throws IOException {
-        return UpdateReferenceImages.scenesUnder(Path.of("scenes")).stream();
+        return GoldenImages.scenesUnder(Path.of("scenes")).stream();
     }
 
     /** The catalogue's "correct" entry may never drift from the reference renderer. */

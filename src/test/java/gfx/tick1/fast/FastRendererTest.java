@@ -2,17 +2,17 @@ package gfx.tick1.fast;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.fast.FastRenderer.SphereSearch;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.math.Vector3;
+import gfx.tick1.render.GoldenImages;
 import gfx.tick1.render.ReferenceRenderer;
-import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.PointLight;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
 import gfx.tick1.scene.Sphere;
-import gfx.tick1.tools.UpdateReferenceImages;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -27,7 +27,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 class FastRendererTest {
 
     static List<Path> scenes() throws IOException {
-        return UpdateReferenceImages.scenesUnder(Path.of("scenes"));
+        return GoldenImages.scenesUnder(Path.of("scenes"));
     }
 
     private static Scene load(Path scene) {
@@ -40,25 +40,16 @@ class FastRendererTest {
                 .isZero();
     }
 
-    /** Both tracers, forced: the vector one (true) and the scalar one (false). */
-    private static final boolean[] TRACERS = {true, false};
-
-    private static String tracer(boolean vector) {
-        return vector ? "vector tracer" : "scalar tracer";
-    }
-
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void matchesTheReadableRendererOnEveryRepositoryScene(Path scene) {
         BufferedImage expected = new ReferenceRenderer(640, 480).render(load(scene));
-        for (boolean vector : TRACERS) {
-            assertSamePixels(expected, new FastRenderer(640, 480, new SamplePattern(1), null, Intersection.DEFAULT, vector)
-                    .render(load(scene)), scene + ", " + tracer(vector));
-        }
+        assertSamePixels(expected, new FastRenderer(640, 480, new SamplePattern(1)).render(load(scene)),
+                scene.toString());
     }
 
     static List<Path> hardScenes() throws IOException {
-        return UpdateReferenceImages.scenesUnder(Path.of("scenes/hard"));
+        return GoldenImages.scenesUnder(Path.of("scenes/hard"));
     }
 
     @ParameterizedTest(name = "{0}")
@@ -66,11 +57,9 @@ class FastRendererTest {
     void matchesTheReadableRendererWithEveryIntersectionMethodOnTheHardCases(Path scene) {
         for (Intersection intersection : Intersection.values()) {
             BufferedImage expected = new ReferenceRenderer(320, 240, intersection).render(load(scene));
-            for (boolean vector : TRACERS) {
-                assertSamePixels(expected,
-                        new FastRenderer(320, 240, new SamplePattern(1), null, intersection, vector).render(load(scene)),
-                        scene + " with " + intersection + ", " + tracer(vector));
-            }
+            assertSamePixels(expected,
+                    new FastRenderer(320, 240, new SamplePattern(1), intersection).render(load(scene)),
+                    scene + " with " + intersection);
         }
     }
 
@@ -80,10 +69,7 @@ class FastRendererTest {
         Scene scene = load(Path.of("scenes/tick1.xml"));
         SamplePattern pattern = new SamplePattern(samples);
         BufferedImage expected = new ReferenceRenderer(160, 120).render(scene, pattern);
-        for (boolean vector : TRACERS) {
-            assertSamePixels(expected, new FastRenderer(160, 120, pattern, null, Intersection.DEFAULT, vector).render(scene),
-                    samples + " samples, " + tracer(vector));
-        }
+        assertSamePixels(expected, new FastRenderer(160, 120, pattern).render(scene), samples + " samples");
     }
 
     @ParameterizedTest(name = "seed {0}")
@@ -91,14 +77,12 @@ class FastRendererTest {
     void bvhAndBruteForceAgreeOnLargeScenesIncludingExactTies(long seed) {
         Scene scene = crowd(seed, 1500);
         BufferedImage readable = new ReferenceRenderer(200, 150).render(scene);
-        for (boolean vector : TRACERS) {
-            BufferedImage brute = new FastRenderer(200, 150, new SamplePattern(1), false, Intersection.DEFAULT, vector)
-                    .render(scene);
-            BufferedImage bvh = new FastRenderer(200, 150, new SamplePattern(1), true, Intersection.DEFAULT, vector)
-                    .render(scene);
-            assertSamePixels(brute, bvh, "BVH vs brute force, " + tracer(vector));
-            assertSamePixels(readable, bvh, "BVH vs readable, " + tracer(vector));
-        }
+        BufferedImage brute = new FastRenderer(200, 150, new SamplePattern(1), SphereSearch.BRUTE_FORCE,
+                Intersection.DEFAULT).render(scene);
+        BufferedImage bvh = new FastRenderer(200, 150, new SamplePattern(1), SphereSearch.BVH, Intersection.DEFAULT)
+                .render(scene);
+        assertSamePixels(brute, bvh, "BVH vs brute force");
+        assertSamePixels(readable, bvh, "BVH vs readable");
     }
 
     @Test
@@ -109,21 +93,22 @@ class FastRendererTest {
         }
         scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(1, 0, 0)));
         scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(0, 1, 0)));
-        int centre = new FastRenderer(64, 48, new SamplePattern(1), true, Intersection.DEFAULT).render(scene).getRGB(32, 24) & 0xFFFFFF;
+        int centre = new FastRenderer(64, 48, new SamplePattern(1), SphereSearch.BVH, Intersection.DEFAULT)
+                .render(scene).getRGB(32, 24) & 0xFFFFFF;
         assertThat(centre).as("the red sphere comes first in the file").isEqualTo(0xFF0000);
     }
 
     @ParameterizedTest(name = "{0}")
     @ValueSource(doubles = {Double.NaN, Double.NEGATIVE_INFINITY, -1, -0.0, 0.0, Double.MIN_VALUE, 0.1, 0.5,
         0.9999999999999999, 1, 1.0000000000000002, 2, Double.POSITIVE_INFINITY})
-    void theVectorTracerConvertsEveryChannelValueToTheReadableCodesByte(double channel) {
+    void everyChannelValueBecomesTheReadableCodesByte(double channel) {
         // An unlit white sphere's colour is the ambient light itself: every channel value reaches
         // the byte conversion as it is, NaN and infinities included.
         Scene scene = new Scene();
         scene.setAmbientLight(new Vector3(channel));
         scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(1)));
         assertSamePixels(new ReferenceRenderer(16, 12).render(scene),
-                new FastRenderer(16, 12, new SamplePattern(1), null, Intersection.DEFAULT, true).render(scene),
+                new FastRenderer(16, 12, new SamplePattern(1)).render(scene),
                 "ambient " + channel);
     }
 
@@ -165,7 +150,8 @@ class FastRendererTest {
         scene.setAmbientLight(new Vector3(0.2));
         scene.setPointLight(new PointLight(new Vector3(-2, 5, 0), new Vector3(1), 300));
         for (int i = 0; i < count; i++) {
-            Vector3 centre = new Vector3(random.nextGaussian() * 3, random.nextGaussian() * 2, 4 + random.nextDouble() * 30);
+            Vector3 centre = new Vector3(random.nextGaussian() * 3, random.nextGaussian() * 2,
+                    4 + random.nextDouble() * 30);
             Vector3 colour = new Vector3(random.nextDouble(), random.nextDouble(), random.nextDouble());
             double radius = 0.05 + random.nextDouble() * 0.4;
             scene.addObject(new Sphere(centre, radius, colour));

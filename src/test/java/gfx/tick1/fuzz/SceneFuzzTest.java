@@ -4,10 +4,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
 import gfx.tick1.fast.FastRenderer;
+import gfx.tick1.fast.FastRenderer.SphereSearch;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.math.Vector3;
 import gfx.tick1.render.ReferenceRenderer;
-import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.PointLight;
@@ -53,9 +53,12 @@ class SceneFuzzTest {
         }
         // The CLI renders with the fast renderer; the readable Renderer is its oracle, and the two
         // must agree pixel for pixel, with the BVH and without it.
-        BufferedImage image = new FastRenderer(8, 6, new SamplePattern(1), true, Intersection.DEFAULT).render(scene);
+        BufferedImage image = new FastRenderer(8, 6, new SamplePattern(1), SphereSearch.BVH, Intersection.DEFAULT)
+                .render(scene);
         int[] pixels = image.getRGB(0, 0, 8, 6, null, 0, 8);
-        assertThat(new FastRenderer(8, 6, new SamplePattern(1), false, Intersection.DEFAULT).render(scene).getRGB(0, 0, 8, 6, null, 0, 8))
+        BufferedImage bruteForce = new FastRenderer(8, 6, new SamplePattern(1), SphereSearch.BRUTE_FORCE,
+                Intersection.DEFAULT).render(scene);
+        assertThat(bruteForce.getRGB(0, 0, 8, 6, null, 0, 8))
                 .as("fast renderer without the BVH").isEqualTo(pixels);
         assertThat(new ReferenceRenderer(8, 6).render(scene).getRGB(0, 0, 8, 6, null, 0, 8))
                 .as("readable renderer").isEqualTo(pixels);

@@ -41,12 +41,10 @@ class PngOutputTest {
     Path dir;
 
     private Path target;
-    private final byte[] earlierImage = "an earlier image".getBytes(StandardCharsets.UTF_8);
 
     @BeforeEach
     void writeAnEarlierImage() throws IOException {
-        target = dir.resolve("out.png");
-        Files.write(target, earlierImage);
+        target = EarlierImage.writeTo(dir.resolve("out.png"));
     }
 
     private List<Path> filesInDir() throws IOException {
@@ -82,7 +80,8 @@ class PngOutputTest {
     }
 
     @ParameterizedTest(name = "{0} x {1}, deflate level {2}")
-    @CsvSource({"1, 1, 1", "3, 2, 1", "640, 480, 1", "17, 200, 1", "200, 129, 0", "64, 64, 2", "99, 65, 4", "31, 130, 9"})
+    @CsvSource({"1, 1, 1", "3, 2, 1", "640, 480, 1", "17, 200, 1", "200, 129, 0", "64, 64, 2", "99, 65, 4",
+        "31, 130, 9"})
     void theStreamDecodesToExactlyTheImagesPixelsAtEveryLevel(int width, int height, int level) throws IOException {
         BufferedImage image = noisyGradient(width, height, width * 31L + height);
         ByteArrayOutputStream out = new ByteArrayOutputStream();
@@ -164,7 +163,7 @@ class PngOutputTest {
             out.write(new byte[] {(byte) 0x89, 'P', 'N', 'G'});
             throw new IOException("No space left on device");
         })).isInstanceOf(IOException.class).hasMessage("No space left on device");
-        assertThat(target).hasBinaryContent(earlierImage);
+        assertThat(target).hasBinaryContent(EarlierImage.bytes());
         assertThat(dir.toFile().list()).containsExactly("out.png");
     }
 
@@ -173,7 +172,7 @@ class PngOutputTest {
         assertThatThrownBy(() -> PngOutput.write(IMAGE, target, (image, out) -> {
             throw new IllegalStateException("a bug in the encoder");
         })).isInstanceOf(IllegalStateException.class);
-        assertThat(target).hasBinaryContent(earlierImage);
+        assertThat(target).hasBinaryContent(EarlierImage.bytes());
         assertThat(dir.toFile().list()).containsExactly("out.png");
     }
 
@@ -193,7 +192,7 @@ class PngOutputTest {
             assumeTrue(!Files.isWritable(dir), "root may write anywhere: nothing to test");
             assertThatThrownBy(() -> PngOutput.write(IMAGE, target))
                     .hasMessage("cannot create a file in " + dir + " (permission denied)");
-            assertThat(target).hasBinaryContent(earlierImage);
+            assertThat(target).hasBinaryContent(EarlierImage.bytes());
         } finally {
             Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwxr-xr-x"));
         }
@@ -233,7 +232,7 @@ class PngOutputTest {
         } finally {
             process.destroyForcibly();
         }
-        assertThat(target).hasBinaryContent(earlierImage);
+        assertThat(target).hasBinaryContent(EarlierImage.bytes());
         assertThat(dir.toFile().list()).containsExactly("out.png");
     }
 

@@ -7,7 +7,6 @@ import gfx.tick1.math.Vector3;
 import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
-import gfx.tick1.tools.UpdateReferenceImages;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -28,11 +27,11 @@ import org.junit.jupiter.params.provider.MethodSource;
 class HardCaseTest {
 
     private static final Path HARD = Path.of("scenes", "hard");
-    private static final int WIDTH = UpdateReferenceImages.WIDTH, HEIGHT = UpdateReferenceImages.HEIGHT;
+    private static final int WIDTH = GoldenImages.WIDTH, HEIGHT = GoldenImages.HEIGHT;
     private static final Map<Path, BufferedImage> TRUTH = new ConcurrentHashMap<>();
 
     static List<Path> hardCases() throws IOException {
-        return UpdateReferenceImages.scenesUnder(HARD);
+        return GoldenImages.scenesUnder(HARD);
     }
 
     private static Scene load(Path scene) {
@@ -130,6 +129,7 @@ class HardCaseTest {
                 .collect(Collectors.toList());
         List<String> cases = hardCases().stream().map(p -> p.getFileName().toString().replace(".xml", ""))
                 .collect(Collectors.toList());
-        assertThat(measured).as("rows of theHandoutFormulaFailsExactlyWhereMeasured").containsExactlyInAnyOrderElementsOf(cases);
+        assertThat(measured).as("rows of theHandoutFormulaFailsExactlyWhereMeasured")
+                .containsExactlyInAnyOrderElementsOf(cases);
     }
 }

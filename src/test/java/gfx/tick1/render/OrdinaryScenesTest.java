@@ -9,7 +9,6 @@ import gfx.tick1.scene.RaycastHit;
 import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneLoader;
 import gfx.tick1.scene.Sphere;
-import gfx.tick1.tools.UpdateReferenceImages;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -31,7 +30,7 @@ class OrdinaryScenesTest {
     private static final int GENERATED = 300;
 
     static List<Path> ordinaryScenes() throws IOException {
-        return UpdateReferenceImages.scenesUnder(SCENES).stream()
+        return GoldenImages.scenesUnder(SCENES).stream()
                 .filter(p -> !p.startsWith(SCENES.resolve("hard"))).collect(Collectors.toList());
     }
 

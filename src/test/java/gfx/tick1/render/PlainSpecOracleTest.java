@@ -57,7 +57,8 @@ class PlainSpecOracleTest {
                 int expected = plainSpecPixel(scene, x, y), actual = image.getRGB(x, y) & 0xFFFFFF;
                 if (expected != actual) {
                     differing++;
-                    first = first != null ? first : String.format("(%d, %d): %06X, spec says %06X", x, y, actual, expected);
+                    first = first != null ? first
+                            : String.format("(%d, %d): %06X, spec says %06X", x, y, actual, expected);
                 }
             }
         }
@@ -123,7 +124,9 @@ class PlainSpecOracleTest {
         double lx = lp.x - x, ly = lp.y - y, lz = lp.z - z;
         double distance = Math.sqrt(lx * lx + ly * ly + lz * lz);
         double falloff = light.getIntensity() / (Math.PI * 4 * Math.pow(distance, 2));
-        double ir = falloff * light.getColour().x, ig = falloff * light.getColour().y, ib = falloff * light.getColour().z;
+        double ir = falloff * light.getColour().x;
+        double ig = falloff * light.getColour().y;
+        double ib = falloff * light.getColour().z;
         lx /= distance;
         ly /= distance;
         lz /= distance;

@@ -55,7 +55,8 @@ class RendererTest {
     void headOnLightGivesFullDiffuseAndFullSpecular() {
         Vector3 colour = renderer.trace(scene(BLACK, new PointLight(new Vector3(0), new Vector3(1), 100)), AXIS);
         assertThat(colour.y).as("specular: k_s I (R.V)^n with R.V = 1").isCloseTo(0.8 * I_AT_4, within(TOLERANCE));
-        assertThat(colour.x - colour.y).as("diffuse: k_d I (N.L) with N.L = 1").isCloseTo(0.8 * I_AT_4, within(TOLERANCE));
+        assertThat(colour.x - colour.y).as("diffuse: k_d I (N.L) with N.L = 1")
+                .isCloseTo(0.8 * I_AT_4, within(TOLERANCE));
         assertThat(colour.z).isEqualTo(colour.y);
     }
 
@@ -72,7 +73,8 @@ class RendererTest {
     @Test
     void lightBehindTheSurfaceAddsNeitherDiffuseNorSpecular() {
         // Light inside the sphere, behind P: N.L = -1 and R.V = -1, both clamped to 0.
-        Vector3 colour = renderer.trace(scene(new Vector3(0.2), new PointLight(new Vector3(0, 0, 5.5), new Vector3(1), 100)), AXIS);
+        PointLight light = new PointLight(new Vector3(0, 0, 5.5), new Vector3(1), 100);
+        Vector3 colour = renderer.trace(scene(new Vector3(0.2), light), AXIS);
         assertThat(colour).isEqualTo(new Vector3(0.2, 0, 0));
     }
 

@@ -43,6 +43,7 @@ class SamplePatternTest {
     @Test
     void sampleCountsOutsideTheRangeAreRefused() {
         assertThatThrownBy(() -> new SamplePattern(0)).isInstanceOf(IllegalArgumentException.class);
-        assertThatThrownBy(() -> new SamplePattern(SamplePattern.MAX_SAMPLES + 1)).isInstanceOf(IllegalArgumentException.class);
+        assertThatThrownBy(() -> new SamplePattern(SamplePattern.MAX_SAMPLES + 1))
+                .isInstanceOf(IllegalArgumentException.class);
     }
 }

@@ -79,7 +79,8 @@ class RobustIntersectionBoundsTest {
     }
 
     private static BigDecimal dot(Vector3 a, Vector3 b) {
-        return exact(a.x).multiply(exact(b.x)).add(exact(a.y).multiply(exact(b.y))).add(exact(a.z).multiply(exact(b.z)));
+        return exact(a.x).multiply(exact(b.x)).add(exact(a.y).multiply(exact(b.y)))
+                .add(exact(a.z).multiply(exact(b.z)));
     }
 
     /** What the bounds are about, for one case: the exact and the computed quantities side by side. */
@@ -124,7 +125,8 @@ class RobustIntersectionBoundsTest {
     void theHandoutsDiscriminantIsWithinEOfTheExactOne(Family family) {
         for (Case input : cases(family)) {
             Quantities q = Quantities.of(input);
-            assertThat(q.errorOf(q.handoutDiscriminant() / 4)).as("|(b^2 - 4ac) / 4 - Delta| for %s, E = %s", input, q.E())
+            assertThat(q.errorOf(q.handoutDiscriminant() / 4))
+                    .as("|(b^2 - 4ac) / 4 - Delta| for %s, E = %s", input, q.E())
                     .isLessThanOrEqualTo(q.E());
         }
     }
@@ -150,8 +152,8 @@ class RobustIntersectionBoundsTest {
                 q.exactBeta().negate().add(sqrtDelta).divide(q.exactA(), PRECISE)};
             for (int i = 0; i < 2; i++) {
                 double s = exactRoots[i].doubleValue();
-                double bound = (q.E() / sqrtDelta.doubleValue() + 4 * U * (q.betaAbs() + sqrtDelta.doubleValue())) / q.a()
-                        + 16 * U * Math.abs(s);
+                double sqrtD = sqrtDelta.doubleValue();
+                double bound = (q.E() / sqrtD + 4 * U * (q.betaAbs() + sqrtD)) / q.a() + 16 * U * Math.abs(s);
                 assertThat(exact(handout[i]).subtract(exactRoots[i]).abs().doubleValue())
                         .as("the error of the handout's %s root for %s (exact %s, bound E_s = %s)",
                                 i == 0 ? "near" : "far", input, s, bound)

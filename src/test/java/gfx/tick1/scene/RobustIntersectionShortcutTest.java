@@ -37,7 +37,8 @@ class RobustIntersectionShortcutTest {
         for (int i = 0; i < 4000; i++) {
             double r = Math.pow(10, -3 + 19 * random.nextDouble());
             double distance = r * Math.pow(10, -1 + 17 * random.nextDouble()) * (random.nextBoolean() ? 1 : 1.0000001);
-            Vector3 direction = new Vector3(random.nextGaussian(), random.nextGaussian(), random.nextGaussian()).normalised();
+            Vector3 direction = new Vector3(random.nextGaussian(), random.nextGaussian(), random.nextGaussian())
+                    .normalised();
             Vector3 centre = direction.scale(distance);
             // Aim at the silhouette, inside it or just outside it, at scales down to an ulp.
             Vector3 side = direction.cross(new Vector3(0.3, 1, 0.1)).normalised();

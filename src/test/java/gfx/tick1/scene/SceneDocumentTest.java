@@ -24,7 +24,8 @@ class SceneDocumentTest {
               <ambient-light colour="#555555"/>
                 <point-light x="1" y="3" z="2"
                              colour="#B3DDFF" intensity="120"/>
-              <sphere z="3.5" colour="#0071BC"/><sphere z="5" radius="0.9" colour="#FF1D25"><sphere colour="#000000"/></sphere>
+              <sphere z="3.5" colour="#0071BC"/><sphere z="5" radius="0.9" colour="#FF1D25">\
+            <sphere colour="#000000"/></sphere>
             </scene>
             """;
 

@@ -31,7 +31,8 @@ class SceneLoaderMemoryTest {
         try (BufferedWriter out = Files.newBufferedWriter(scene, StandardCharsets.UTF_8)) {
             out.write("<scene>\n<point-light x='1' y='3' z='2' colour='#FFFFFF' intensity='100'/>\n");
             for (int i = 2; i < SceneLoader.MAX_ELEMENTS; i++) {
-                out.write(String.format(Locale.ROOT, "<sphere x='%.3f' y='%.3f' z='%d' radius='0.0125' colour='#%06X'/>\n",
+                out.write(String.format(Locale.ROOT,
+                        "<sphere x='%.3f' y='%.3f' z='%d' radius='0.0125' colour='#%06X'/>\n",
                         (i % 997) / 997.0 - 0.5, (i % 991) / 991.0 - 0.5, 5 + i % 7, i & 0xFFFFFF));
             }
             out.write("</scene>\n");
@@ -82,7 +83,8 @@ class SceneLoaderMemoryTest {
 
     /** Loads each scene in a JVM with {@code heap}, and returns what it printed; it must exit 0. */
     private String loadInAnotherJvm(String heap, Path... scenes) throws Exception {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        List<String> command = new ArrayList<>(List.of(java,
                 heap, "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"), Load.class.getName()));
         for (Path scene : scenes) {
             command.add(scene.toString());

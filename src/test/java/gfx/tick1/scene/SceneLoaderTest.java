@@ -8,10 +8,12 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
 
 class SceneLoaderTest {
 
@@ -70,7 +72,8 @@ class SceneLoaderTest {
 
     @Test
     void ofSeveralPointLightsTheLastIsUsedWithAWarning() throws IOException {
-        Path path = file("<scene>\n<point-light x='1' colour='#FFFFFF'/>\n<point-light x='2' colour='#FFFFFF'/>\n</scene>");
+        Path path = file("<scene>\n<point-light x='1' colour='#FFFFFF'/>\n"
+                + "<point-light x='2' colour='#FFFFFF'/>\n</scene>");
         SceneLoader loader = new SceneLoader(path, false);
         assertThat(loader.getScene().getPointLight().getPosition().x).isEqualTo(2);
         assertThat(loader.getWarnings()).containsExactly(path + ":3:1: warning: another <point-light>: Tick 1 "
@@ -82,7 +85,7 @@ class SceneLoaderTest {
         Path path = file("<scene>\n<point-light colour='#FFFFFF'/><point-light colour='#FFFFFF'/></scene>");
         assertThatThrownBy(() -> new SceneLoader(path, true)).isInstanceOf(SceneException.class)
                 .hasMessage(path + ":2:32: another <point-light>: Tick 1 models one light, the last one in the "
-                        + "file is used (an error under --strict)");
+                                + "file is used (an error under --strict)");
     }
 
     @Test
@@ -101,28 +104,55 @@ class SceneLoaderTest {
         assertThat(sphere.getColour()).isEqualTo(new Vector3(1, 0, 0xAA / 255.0));
     }
 
+    static Stream<Arguments> badInputs() {
+        return Stream.of(
+                Arguments.of("wrong root", "<world/>",
+                        "scene.xml:1:1: root element <world>: expected <scene>"),
+                Arguments.of("unknown element", "<scene>\n  <plane colour='#FFFFFF'/></scene>",
+                        "scene.xml:2:3: unknown element <plane>: expected sphere, ambient-light or point-light"),
+                Arguments.of("missing colour", "<scene><sphere x='1'/></scene>",
+                        "scene.xml:1:8: sphere has no colour: expected colour=\"#RRGGBB\""),
+                Arguments.of("short colour", "<scene><sphere colour='#FFF'/></scene>",
+                        "scene.xml:1:16: sphere colour \"#FFF\": "
+                                + "must be # followed by six hexadecimal digits, as in #FF8800"),
+                Arguments.of("colour without hash", "<scene><ambient-light colour='FF0000'/></scene>",
+                        "scene.xml:1:23: ambient-light colour \"FF0000\": "
+                                + "must be # followed by six hexadecimal digits, as in #FF8800"),
+                Arguments.of("non-hex colour", "<scene><sphere colour='#GG0000'/></scene>",
+                        "scene.xml:1:16: sphere colour \"#GG0000\": "
+                                + "must be # followed by six hexadecimal digits, as in #FF8800"),
+                Arguments.of("unparsable number", "<scene><sphere x='1,5' colour='#FF0000'/></scene>",
+                        "scene.xml:1:16: sphere x \"1,5\": must be a decimal number such as 1.5 or -2e3"),
+                Arguments.of("empty number", "<scene><sphere y='' colour='#FF0000'/></scene>",
+                        "scene.xml:1:16: sphere y \"\": must be a decimal number such as 1.5 or -2e3"),
+                Arguments.of("not a number", "<scene><sphere z='NaN' colour='#FF0000'/></scene>",
+                        "scene.xml:1:16: sphere z \"NaN\": must be a finite decimal number"),
+                Arguments.of("infinity", "<scene><sphere z='-Infinity' colour='#FF0000'/></scene>",
+                        "scene.xml:1:16: sphere z \"-Infinity\": must be a finite decimal number"),
+                Arguments.of("overflowing number", "<scene><sphere z='1e400' colour='#FF0000'/></scene>",
+                        "scene.xml:1:16: sphere z \"1e400\": "
+                                + "must be a number between -1e16 and 1e16 (the range the renderer is tested for)"),
+                Arguments.of("hexadecimal number", "<scene><sphere z='0x10' colour='#FF0000'/></scene>",
+                        "scene.xml:1:16: sphere z \"0x10\": must be a decimal number such as 1.5 or -2e3"),
+                Arguments.of("zero radius", "<scene><sphere radius='0' colour='#FF0000'/></scene>",
+                        "scene.xml:1:16: sphere radius \"0\": must be a number greater than 0"),
+                Arguments.of("negative radius", "<scene><sphere radius='-1' colour='#FF0000'/></scene>",
+                        "scene.xml:1:16: sphere radius \"-1\": must be a number greater than 0"),
+                Arguments.of("negative intensity", "<scene><point-light intensity='-5' colour='#FF0000'/></scene>",
+                        "scene.xml:1:21: point-light intensity \"-5\": must be a number of at least 0"),
+                Arguments.of("truncated XML", "<scene><sphere colour='#FF0000'/>",
+                        "scene.xml:1:34: malformed XML: the file ends in the middle of the scene "
+                                + "(a tag, comment or element is left open), expected it to end with </scene>"),
+                Arguments.of("DOCTYPE", "<!DOCTYPE scene [<!ENTITY x 'y'>]><scene/>",
+                        "scene.xml:1:10: DOCTYPE declaration: "
+                                + "not allowed in scene files (no DTDs or entities), expected <scene>"));
+    }
+
     @ParameterizedTest(name = "{0}")
-    @CsvSource(delimiter = '|', textBlock = """
-            wrong root            | <world/>                                                      | scene.xml:1:1: root element <world>: expected <scene>
-            unknown element       | <scene>\\n  <plane colour='#FFFFFF'/></scene>                 | scene.xml:2:3: unknown element <plane>: expected sphere, ambient-light or point-light
-            missing colour        | <scene><sphere x='1'/></scene>                                | scene.xml:1:8: sphere has no colour: expected colour="#RRGGBB"
-            short colour          | <scene><sphere colour='#FFF'/></scene>                        | scene.xml:1:16: sphere colour "#FFF": must be # followed by six hexadecimal digits, as in #FF8800
-            colour without hash   | <scene><ambient-light colour='FF0000'/></scene>               | scene.xml:1:23: ambient-light colour "FF0000": must be # followed by six hexadecimal digits, as in #FF8800
-            non-hex colour        | <scene><sphere colour='#GG0000'/></scene>                     | scene.xml:1:16: sphere colour "#GG0000": must be # followed by six hexadecimal digits, as in #FF8800
-            unparsable number     | <scene><sphere x='1,5' colour='#FF0000'/></scene>             | scene.xml:1:16: sphere x "1,5": must be a decimal number such as 1.5 or -2e3
-            empty number          | <scene><sphere y='' colour='#FF0000'/></scene>                | scene.xml:1:16: sphere y "": must be a decimal number such as 1.5 or -2e3
-            not a number          | <scene><sphere z='NaN' colour='#FF0000'/></scene>             | scene.xml:1:16: sphere z "NaN": must be a finite decimal number
-            infinity              | <scene><sphere z='-Infinity' colour='#FF0000'/></scene>       | scene.xml:1:16: sphere z "-Infinity": must be a finite decimal number
-            overflowing number    | <scene><sphere z='1e400' colour='#FF0000'/></scene>           | scene.xml:1:16: sphere z "1e400": must be a number between -1e16 and 1e16 (the range the renderer is tested for)
-            hexadecimal number    | <scene><sphere z='0x10' colour='#FF0000'/></scene>            | scene.xml:1:16: sphere z "0x10": must be a decimal number such as 1.5 or -2e3
-            zero radius           | <scene><sphere radius='0' colour='#FF0000'/></scene>          | scene.xml:1:16: sphere radius "0": must be a number greater than 0
-            negative radius       | <scene><sphere radius='-1' colour='#FF0000'/></scene>         | scene.xml:1:16: sphere radius "-1": must be a number greater than 0
-            negative intensity    | <scene><point-light intensity='-5' colour='#FF0000'/></scene> | scene.xml:1:21: point-light intensity "-5": must be a number of at least 0
-            truncated XML         | <scene><sphere colour='#FF0000'/>                             | scene.xml:1:34: malformed XML: the file ends in the middle of the scene (a tag, comment or element is left open), expected it to end with </scene>
-            DOCTYPE               | <!DOCTYPE scene [<!ENTITY x 'y'>]><scene/>                    | scene.xml:1:10: DOCTYPE declaration: not allowed in scene files (no DTDs or entities), expected <scene>
-            """)
-    void rejectsBadInputWithOneLineNamingFileLineAndColumn(String what, String xml, String expected) throws IOException {
-        assertThat(errorFor(xml.replace("\\n", "\n"))).isEqualTo(expected);
+    @MethodSource("badInputs")
+    void rejectsBadInputWithOneLineNamingFileLineAndColumn(String what, String xml, String expected)
+            throws IOException {
+        assertThat(errorFor(xml)).isEqualTo(expected);
     }
 
     @Test
@@ -134,7 +164,8 @@ class SceneLoaderTest {
 
     @Test
     void aDirectoryIsNotAScene() {
-        assertThatThrownBy(() -> new SceneLoader(dir, false)).hasMessage(dir + ": is a directory, expected a scene file");
+        assertThatThrownBy(() -> new SceneLoader(dir, false))
+                .hasMessage(dir + ": is a directory, expected a scene file");
     }
 
     @Test
@@ -161,7 +192,8 @@ class SceneLoaderTest {
 
     @Test
     void anUnknownAttributeAfterAValueHoldingAGreaterThanSignIsNamedWhereItIs() throws IOException {
-        Path path = file("<scene><point-light colour='#FFFFFF'/>\n  <sphere colour='#FF0000' note='a>b' zeta='1'/></scene>");
+        Path path = file("<scene><point-light colour='#FFFFFF'/>\n"
+                + "  <sphere colour='#FF0000' note='a>b' zeta='1'/></scene>");
         assertThat(new SceneLoader(path, false).getWarnings()).extracting(w -> w.replace(path.toString(), ""))
                 .containsExactly(":2:28: warning: sphere attribute \"note\": not part of Tick 1 scenes, ignored "
                                 + "(expected colour, radius, x, y, z)",

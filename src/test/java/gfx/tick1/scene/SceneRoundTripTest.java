@@ -53,7 +53,8 @@ class SceneRoundTripTest {
                     radius == 0 ? 1 : radius, new Colour(random.nextInt(1 << 24))));
         }
 
-        StringBuilder xml = new StringBuilder(random.nextBoolean() ? "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" : "");
+        StringBuilder xml = new StringBuilder(
+                random.nextBoolean() ? "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" : "");
         xml.append("<scene>\n");
         if (ambient != null) {
             xml.append(element(random, "ambient-light", "colour", hex(random, ambient)));
@@ -106,7 +107,8 @@ class SceneRoundTripTest {
      * with optional spaces and sign. Both parse back to the same double.
      */
     private static String text(Random random, double value) {
-        String written = random.nextBoolean() ? Double.toString(value) : String.format(java.util.Locale.ROOT, "%.17g", value).trim();
+        String written = random.nextBoolean() ? Double.toString(value)
+                : String.format(java.util.Locale.ROOT, "%.17g", value).trim();
         if (value >= 0 && random.nextInt(4) == 0) {
             written = "+" + written;
         }

@@ -34,7 +34,8 @@ class SceneTest {
     void theNearestOfSeveralSpheresIsReturnedWhateverTheirOrder() {
         Sphere near = new Sphere(new Vector3(0, 0, 5), 1, new Vector3(1));
         List<Sphere> spheres = List.of(new Sphere(new Vector3(0, 0, 10), 1, new Vector3(1)), near,
-                new Sphere(new Vector3(0, 0, 7), 0.5, new Vector3(1)), new Sphere(new Vector3(0, 3, 5), 1, new Vector3(1)));
+                new Sphere(new Vector3(0, 0, 7), 0.5, new Vector3(1)),
+                new Sphere(new Vector3(0, 3, 5), 1, new Vector3(1)));
         List<List<Sphere>> orders = orders(spheres);
         assertThat(orders).hasSize(24);
         for (List<Sphere> order : orders) {

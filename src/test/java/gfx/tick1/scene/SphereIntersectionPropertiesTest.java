@@ -32,7 +32,8 @@ class SphereIntersectionPropertiesTest {
             Random random = new Random(seed);
             Sphere sphere = new Sphere(vector(random, 50), 0.01 + random.nextDouble() * 20, COLOUR);
             Vector3 origin = random.nextInt(4) == 0
-                    ? SphereGeometry.centre(sphere).add(vector(random, 1).normalised().scale(SphereGeometry.radius(sphere) * random.nextDouble()))
+                    ? SphereGeometry.centre(sphere).add(vector(random, 1).normalised()
+                            .scale(SphereGeometry.radius(sphere) * random.nextDouble()))
                     : vector(random, 50);
             // Aim near the sphere half of the time, so that hits, grazes and misses all occur.
             Vector3 direction = random.nextBoolean()
@@ -46,7 +47,8 @@ class SphereIntersectionPropertiesTest {
         }
 
         boolean originOutside() {
-            return ray.getOrigin().subtract(SphereGeometry.centre(sphere)).magnitude() > SphereGeometry.radius(sphere) * (1 + 1e-9);
+            return ray.getOrigin().subtract(SphereGeometry.centre(sphere)).magnitude()
+                    > SphereGeometry.radius(sphere) * (1 + 1e-9);
         }
 
         @Override
@@ -73,8 +75,10 @@ class SphereIntersectionPropertiesTest {
         List<Case> all = cases().collect(Collectors.toList());
         long hits = all.stream().filter(c -> c.sphere().intersectionWith(c.ray()).getObjectHit() != null).count();
         long outside = all.stream().filter(Case::originOutside).count();
-        long inside = all.stream().filter(c -> c.ray().getOrigin().subtract(SphereGeometry.centre(c.sphere())).magnitude()
-                <= SphereGeometry.radius(c.sphere()) * (1 - 1e-6)).count();
+        long inside = all.stream()
+                .filter(c -> c.ray().getOrigin().subtract(SphereGeometry.centre(c.sphere())).magnitude()
+                        <= SphereGeometry.radius(c.sphere()) * (1 - 1e-6))
+                .count();
         assertThat(hits).as("hits").isGreaterThan(50);
         assertThat(all.size() - hits).as("misses").isGreaterThan(50);
         assertThat(outside).as("origins outside").isGreaterThan(50);
@@ -123,7 +127,8 @@ class SphereIntersectionPropertiesTest {
             return;
         }
         // Any direction with a positive component along (O - C) moves away from every point of the sphere.
-        Vector3 direction = away.add(c.ray().getDirection().scale(0.5 * away.magnitude() / c.ray().getDirection().magnitude()));
+        Vector3 forward = c.ray().getDirection();
+        Vector3 direction = away.add(forward.scale(0.5 * away.magnitude() / forward.magnitude()));
         assertThat(c.sphere().intersectionWith(new Ray(c.ray().getOrigin(), direction)).getObjectHit()).as("%s", c)
                 .isNull();
     }
@@ -138,7 +143,8 @@ class SphereIntersectionPropertiesTest {
         RaycastHit hit = c.sphere().intersectionWith(c.ray());
         assertThat(hit.getObjectHit()).as("%s", c).isSameAs(c.sphere());
         double tolerance = 1e-9 * c.scale();
-        assertThat(hit.getLocation().subtract(SphereGeometry.centre(c.sphere())).magnitude() - SphereGeometry.radius(c.sphere()))
+        double distance = hit.getLocation().subtract(SphereGeometry.centre(c.sphere())).magnitude();
+        assertThat(distance - SphereGeometry.radius(c.sphere()))
                 .as("%s", c).isBetween(-tolerance, tolerance);
     }
 }

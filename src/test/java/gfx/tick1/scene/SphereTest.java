@@ -64,7 +64,8 @@ class SphereTest {
         Random random = new Random(42);
         int hits = 0;
         for (int i = 0; i < 10_000; i++) {
-            Vector3 centre = new Vector3(random.nextGaussian() * 3, random.nextGaussian() * 3, 2 + random.nextDouble() * 20);
+            Vector3 centre = new Vector3(random.nextGaussian() * 3, random.nextGaussian() * 3,
+                    2 + random.nextDouble() * 20);
             double radius = 0.1 + random.nextDouble() * 3;
             Sphere s = new Sphere(centre, radius, RED);
             // Aim near the sphere so that most rays hit, some graze and some miss.
