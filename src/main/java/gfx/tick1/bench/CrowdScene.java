@@ -27,7 +27,8 @@ public final class CrowdScene {
             double x = (random.nextDouble() - 0.5) * 0.9 * z;
             double y = (random.nextDouble() - 0.5) * 0.7 * z;
             double r = radius * (0.5 + random.nextDouble()) * (1 + z / 10);
-            xml.append(String.format(Locale.ROOT, "  <sphere x=\"%.4f\" y=\"%.4f\" z=\"%.4f\" radius=\"%.4f\" colour=\"#%06X\"/>%n",
+            xml.append(String.format(Locale.ROOT,
+                    "  <sphere x=\"%.4f\" y=\"%.4f\" z=\"%.4f\" radius=\"%.4f\" colour=\"#%06X\"/>%n",
                     x, y, z, r, random.nextInt(1 << 24)));
         }
         return xml.append("</scene>\n").toString();

@@ -74,8 +74,8 @@ final class FloatRenderer {
                     }
                 }
                 pixels[y * width + x] = hit < 0 ? 0x191919
-                        : shade(best * dx, best * dy, best * dz, cx[hit], cy[hit], cz[hit], red[hit], green[hit], blue[hit],
-                                ambient, light);
+                        : shade(best * dx, best * dy, best * dz, cx[hit], cy[hit], cz[hit],
+                                red[hit], green[hit], blue[hit], ambient, light);
             }
         });
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
@@ -116,8 +116,8 @@ final class FloatRenderer {
         return s > 0 ? s : Float.POSITIVE_INFINITY;
     }
 
-    private static int shade(float x, float y, float z, float cx, float cy, float cz, float red, float green, float blue,
-            Vector3 ambient, PointLight light) {
+    private static int shade(float x, float y, float z, float cx, float cy, float cz,
+            float red, float green, float blue, Vector3 ambient, PointLight light) {
         float ar = red * (float) ambient.x, ag = green * (float) ambient.y, ab = blue * (float) ambient.z;
         if (light == null) {
             return rgb(ar, ag, ab);

@@ -116,7 +116,8 @@ public record JavaMembers(String className, Map<String, String> members) {
 
     private static void dropThisBeforeMethodCalls(Node root) {
         for (MethodCallExpr call : root.findAll(MethodCallExpr.class)) {
-            if (call.getScope().filter(scope -> scope instanceof ThisExpr this_ && this_.getTypeName().isEmpty())
+            if (call.getScope()
+                    .filter(scope -> scope instanceof ThisExpr plainThis && plainThis.getTypeName().isEmpty())
                     .isPresent()) {
                 call.removeScope();
             }

@@ -25,7 +25,8 @@ final class SceneJson {
         StringJoiner spheres = new StringJoiner(",", "[", "]");
         for (Sphere sphere : scene.getObjects()) {
             spheres.add("{\"position\":" + vector(SphereGeometry.centre(sphere))
-                    + ",\"radius\":" + SphereGeometry.radius(sphere) + ",\"colour\":" + colour(sphere.getColour()) + "}");
+                    + ",\"radius\":" + SphereGeometry.radius(sphere)
+                    + ",\"colour\":" + colour(sphere.getColour()) + "}");
         }
         PointLight light = scene.getPointLight();
         String lightJson = light == null ? "null"

@@ -32,8 +32,10 @@ final class StaticFiles {
     static final String THREE_PREFIX = "/three/";
     // Letters, digits and single dots between names: no "..", no "//", no backslash, and only
     // the JavaScript modules the page imports.
-    private static final Pattern THREE_FILE = Pattern.compile("([A-Za-z0-9_-]+/)*[A-Za-z0-9_-]+(\\.[A-Za-z0-9_-]+)*\\.js");
-    private static final Pattern IMPORT_MAP = Pattern.compile("<script type=\"importmap\">(.*?)</script>", Pattern.DOTALL);
+    private static final Pattern THREE_FILE =
+            Pattern.compile("([A-Za-z0-9_-]+/)*[A-Za-z0-9_-]+(\\.[A-Za-z0-9_-]+)*\\.js");
+    private static final Pattern IMPORT_MAP =
+            Pattern.compile("<script type=\"importmap\">(.*?)</script>", Pattern.DOTALL);
 
     private final String threeDirectory;
 

@@ -58,7 +58,8 @@ class DiagnoseCommandTest {
         CliRun run = CliRun.of("diagnose", image.toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_CANNOT_DIAGNOSE);
         assertThat(run.err()).isEqualTo("tick1 diagnose: " + image
-                + ": not a render of tick1.xml or basic_scene.xml; give the scene with --scene" + System.lineSeparator());
+                + ": not a render of tick1.xml or basic_scene.xml; give the scene with --scene"
+                + System.lineSeparator());
         assertThat(run.out()).isEmpty();
     }
 

@@ -82,7 +82,8 @@ class DiffCommandTest {
     /** The mistake edits the grade tests make, on our own files. */
     static Stream<Arguments> mistakes() {
         return Stream.of(
-                Arguments.of(Variant.FAR_ROOT, "Sphere", INTERSECTION, "double s = s1 > 0 ? s1 : s2;", "double s = s2;"),
+                Arguments.of(Variant.FAR_ROOT, "Sphere", INTERSECTION, "double s = s1 > 0 ? s1 : s2;",
+                        "double s = s2;"),
                 Arguments.of(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT, "Sphere", INTERSECTION,
                         "double s = s1 > 0 ? s1 : s2;",
                         "if (s1 < 0 || s2 < 0) { return new RaycastHit(); } double s = s1 > 0 ? s1 : s2;"),
