@@ -87,7 +87,7 @@ class Tick1CommandTest {
         Path output = existingOutput();
         Path scene = scene("<scene>\n  <sphere radius=\"-1\" colour=\"#FF0000\"/>\n</scene>\n");
         CliRun run = CliRun.of("-i", scene.toString(), "-o", output.toString());
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
         assertThat(run.err()).isEqualTo(scene + ":2:11: sphere radius \"-1\": must be a number greater than 0"
                 + System.lineSeparator());
         assertThat(Files.readString(output)).isEqualTo("an earlier image");
@@ -97,7 +97,7 @@ class Tick1CommandTest {
     void aMissingInputIsNamed() throws IOException {
         Path output = existingOutput();
         CliRun run = CliRun.of("-i", dir.resolve("missing.xml").toString(), "-o", output.toString());
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
         assertThat(run.err().strip()).isEqualTo(dir.resolve("missing.xml") + ": no such file");
         assertThat(Files.readString(output)).isEqualTo("an earlier image");
     }
@@ -106,7 +106,7 @@ class Tick1CommandTest {
     void anUnwritableOutputGivesStatusThreeAndLeavesNoTemporaryFile() throws IOException {
         Path output = dir.resolve("no-such-dir").resolve("out.png");
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(), "--width", "8", "--height", "8");
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_CANNOT_WRITE);
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
         assertThat(run.err()).startsWith(output + ": cannot write the image: ").doesNotContain("\tat ");
         assertThat(run.err().lines()).hasSize(1);
     }
@@ -124,7 +124,7 @@ class Tick1CommandTest {
     @Test
     void outputThatIsADirectoryIsRefused() throws IOException {
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.toString(), "--width", "8", "--height", "8");
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_CANNOT_WRITE);
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
         assertThat(run.err().strip()).isEqualTo(dir + ": cannot write the image: is a directory, expected a file name for the PNG");
     }
 
@@ -133,7 +133,7 @@ class Tick1CommandTest {
         for (String[] args : new String[][] {{"--width", "0"}, {"--height", "100000"}, {"--width", "abc"},
                 {"--no-such-option"}, {"--threads", "0"}}) {
             CliRun run = CliRun.of(args);
-            assertThat(run.status()).as(String.join(" ", args)).isEqualTo(Tick1.EXIT_USAGE);
+            assertThat(run.status()).as(String.join(" ", args)).isEqualTo(RenderCommand.EXIT_USAGE);
             assertThat(run.err().lines()).as(run.err()).hasSize(1);
             assertThat(run.err()).startsWith("tick1: ").contains("(see tick1 --help)");
         }
@@ -153,22 +153,22 @@ class Tick1CommandTest {
     void strictRefusesWhatWouldOtherwiseBeAWarning() throws IOException {
         Path scene = scene("<scene><point-light colour='#FFFFFF'/><point-light colour='#FFFFFF'/></scene>");
         CliRun run = CliRun.of("--strict", "-i", scene.toString(), "-o", dir.resolve("s.png").toString());
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
         assertThat(run.err()).endsWith("(an error under --strict)" + System.lineSeparator());
         assertThat(dir.resolve("s.png")).doesNotExist();
     }
 
     @Test
     void aPlainRenderIsParsedWithoutBuildingTheSubcommandsButAnythingElseGetsThemAll() {
-        assertThat(Tick1.commandLine(new Tick1(), "-q", "-i", "scenes/tick1.xml", "-o", "out.png").getSubcommands())
+        assertThat(Tick1.commandLine(new RenderCommand(), "-q", "-i", "scenes/tick1.xml", "-o", "out.png").getSubcommands())
                 .as("options only: no subcommand can be reached").isEmpty();
-        assertThat(Tick1.commandLine(new Tick1(), "-o", "compare").getSubcommands())
+        assertThat(Tick1.commandLine(new RenderCommand(), "-o", "compare").getSubcommands())
                 .as("an argument that names a subcommand").containsKeys("compare", "bench");
-        assertThat(Tick1.commandLine(new Tick1(), "--help").getSubcommands()).as("help lists them")
+        assertThat(Tick1.commandLine(new RenderCommand(), "--help").getSubcommands()).as("help lists them")
                 .containsKeys("compare", "diagnose", "grade", "starter", "bench", "preview");
-        assertThat(Tick1.commandLine(new Tick1(), "comapre").getSubcommands()).as("a misspelt one gets suggestions")
+        assertThat(Tick1.commandLine(new RenderCommand(), "comapre").getSubcommands()).as("a misspelt one gets suggestions")
                 .isNotEmpty();
-        assertThat(Tick1.commandLine(new Tick1(), "-qh").getSubcommands()).as("help in a cluster of flags")
+        assertThat(Tick1.commandLine(new RenderCommand(), "-qh").getSubcommands()).as("help in a cluster of flags")
                 .isNotEmpty();
     }
 }

@@ -1,9 +1,10 @@
 package gfx.tick1.bench;
 
-import gfx.tick1.Tick1;
+import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
+import gfx.tick1.io.IoErrors;
 import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
@@ -35,14 +36,15 @@ import picocli.CommandLine.Spec;
  * program in fresh processes for start-up, scaling and end-to-end time. Writes report.md,
  * results.csv and speed-vs-error.png.
  */
-@Command(name = "bench", mixinStandardHelpOptions = true, sortOptions = false,
+@Command(name = "bench",
         description = "Measures speed against accuracy for every renderer variant and writes a report "
-                + "(report.md, results.csv, speed-vs-error.png).",
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {
-            "0:the report was written",
-            "3:the report could not be written, or a timed run of tick1 failed"})
-public final class Bench implements Callable<Integer> {
+                + "(report.md, results.csv, speed-vs-error.png).")
+public final class BenchCommand implements Callable<Integer> {
+
+    @ExitStatus("the report was written")
+    public static final int EXIT_OK = 0;
+    @ExitStatus("the report could not be written, or a timed run of tick1 failed")
+    public static final int EXIT_CANNOT_WRITE = 3;
 
     @Spec
     private CommandSpec spec;
@@ -62,8 +64,8 @@ public final class Bench implements Callable<Integer> {
         try {
             return run();
         } catch (IOException e) {
-            spec.commandLine().getErr().println("tick1 bench: " + e.getMessage());
-            return Tick1.EXIT_CANNOT_WRITE;
+            spec.commandLine().getErr().println("tick1 bench: " + IoErrors.describe(e));
+            return EXIT_CANNOT_WRITE;
         }
     }
 
@@ -111,7 +113,7 @@ public final class Bench implements Callable<Integer> {
         report.write(out);
         log.printf("Wrote %s, %s and %s%n", out.resolve("report.md"), out.resolve("results.csv"),
                 out.resolve("speed-vs-error.png"));
-        return 0;
+        return EXIT_OK;
     }
 
     /** Frame sizes, repetitions and scenes for the two modes. */
