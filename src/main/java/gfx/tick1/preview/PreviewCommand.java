@@ -31,6 +31,13 @@ import picocli.CommandLine.Spec;
             "Runs until interrupted (Ctrl-C)."})
 public final class PreviewCommand implements Callable<Integer> {
 
+    /** When the thread serving is interrupted inside Java, as a program embedding the previewer does. */
+    public static final int EXIT_STOPPED = 0;
+    @ExitStatus("SCENE.xml does not exist")
+    public static final int EXIT_NO_SCENE = 1;
+    @ExitStatus("the command line is wrong, or the port cannot be used")
+    public static final int EXIT_USAGE = ExitStatuses.EXIT_USAGE;
+
     /**
      * Java ends on Ctrl-C with 128 plus the signal's number (SIGINT, 2), the status by which shells
      * and make know that a program was interrupted. The previewer keeps that convention rather than
@@ -38,12 +45,6 @@ public final class PreviewCommand implements Callable<Integer> {
      */
     @ExitStatus("stopped with Ctrl-C (the usual status of an interrupted program)")
     public static final int EXIT_INTERRUPTED = 130;
-    @ExitStatus("SCENE.xml does not exist")
-    public static final int EXIT_NO_SCENE = 1;
-    @ExitStatus("the command line is wrong, or the port cannot be used")
-    public static final int EXIT_USAGE = ExitStatuses.EXIT_USAGE;
-    /** When the thread serving is interrupted inside Java, as a program embedding the previewer does. */
-    public static final int EXIT_STOPPED = 0;
 
     @Spec
     private CommandSpec spec;

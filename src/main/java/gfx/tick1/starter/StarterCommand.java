@@ -57,7 +57,7 @@ public final class StarterCommand implements Callable<Integer> {
                 file.writeUnder(folder);
             }
         } catch (IOException e) {
-            err.println("tick1 starter: " + folder + ": cannot write the kit: " + IoErrors.describe(e));
+            err.println("tick1 starter: cannot write the kit: " + IoErrors.describe(e));
             return EXIT_CANNOT_WRITE;
         }
         PrintWriter out = spec.commandLine().getOut();
