@@ -131,7 +131,8 @@ public final class RenderCommand implements Callable<Integer> {
             }
             List<String> names = Arrays.stream(Intersection.values())
                     .map(method -> method.name().toLowerCase(Locale.ROOT)).toList();
-            throw new TypeConversionException("expected one of " + String.join(", ", names) + " but was '" + name + "'");
+            throw new TypeConversionException("expected one of " + String.join(", ", names)
+                    + " but was '" + name + "'");
         }
     }
 
@@ -161,7 +162,8 @@ public final class RenderCommand implements Callable<Integer> {
             return EXIT_BAD_SCENE;
         } catch (SceneException e) {
             boolean defaultSceneMissing = inputIsTheDefault() && !Files.exists(Path.of(input));
-            err.println(e.getMessage() + (defaultSceneMissing ? " (give a scene with -i SCENE.xml; see tick1 --help)" : ""));
+            String hint = defaultSceneMissing ? " (give a scene with -i SCENE.xml; see tick1 --help)" : "";
+            err.println(e.getMessage() + hint);
             return EXIT_BAD_SCENE;
         }
 

@@ -54,7 +54,8 @@ class CommandLineHelpTest {
                     .as(command).containsPattern("\n  2 +\\S").containsPattern("\n  4 +an internal error")
                     .contains("Java ran out of memory");
         }
-        assertThat(help("bench")).contains("  " + BenchCommand.EXIT_CANNOT_WRITE + "   the report could not be written");
+        assertThat(help("bench"))
+                .contains("  " + BenchCommand.EXIT_CANNOT_WRITE + "   the report could not be written");
     }
 
     @Test

@@ -160,13 +160,15 @@ class Tick1CommandTest {
 
     @Test
     void aPlainRenderIsParsedWithoutBuildingTheSubcommandsButAnythingElseGetsThemAll() {
-        assertThat(Tick1.commandLine(new RenderCommand(), "-q", "-i", "scenes/tick1.xml", "-o", "out.png").getSubcommands())
+        assertThat(Tick1.commandLine(new RenderCommand(), "-q", "-i", "scenes/tick1.xml", "-o", "out.png")
+                .getSubcommands())
                 .as("options only: no subcommand can be reached").isEmpty();
         assertThat(Tick1.commandLine(new RenderCommand(), "-o", "compare").getSubcommands())
                 .as("an argument that names a subcommand").containsKeys("compare", "bench");
         assertThat(Tick1.commandLine(new RenderCommand(), "--help").getSubcommands()).as("help lists them")
                 .containsKeys("compare", "diagnose", "grade", "starter", "bench", "preview");
-        assertThat(Tick1.commandLine(new RenderCommand(), "comapre").getSubcommands()).as("a misspelt one gets suggestions")
+        assertThat(Tick1.commandLine(new RenderCommand(), "comapre").getSubcommands())
+                .as("a misspelt one gets suggestions")
                 .isNotEmpty();
         assertThat(Tick1.commandLine(new RenderCommand(), "-qh").getSubcommands()).as("help in a cluster of flags")
                 .isNotEmpty();

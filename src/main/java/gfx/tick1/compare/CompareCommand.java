@@ -56,7 +56,7 @@ public final class CompareCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         if (tolerance < 0 || tolerance > 255) {
-            // Reported and answered with exit status 2 like any other usage error (Tick1.configure).
+            // Reported and answered with exit status 2 like any other usage error (the start-up's handler).
             throw new ParameterException(spec.commandLine(), "--tolerance " + tolerance + ": must be from 0 to 255");
         }
         ImageDifference difference;

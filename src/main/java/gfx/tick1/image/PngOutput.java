@@ -116,7 +116,8 @@ public final class PngOutput {
         } catch (FileSystemException e) {
             // Most of these name only the file; say the reason where one is known.
             boolean known = e instanceof AccessDeniedException || e.getReason() != null;
-            throw new IOException("cannot create a file in " + directory + (known ? " (" + IoErrors.reason(e) + ")" : ""));
+            String reason = known ? " (" + IoErrors.reason(e) + ")" : "";
+            throw new IOException("cannot create a file in " + directory + reason);
         }
     }
 
