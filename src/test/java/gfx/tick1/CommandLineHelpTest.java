@@ -20,6 +20,10 @@ class CommandLineHelpTest {
     private static final List<String> COMMANDS =
             List.of("", "compare", "diagnose", "diff", "grade", "starter", "bench", "preview");
 
+    /** Every command, and picocli's help command as tick1 sets it up. */
+    private static final List<String> EVERY_HELP =
+            List.of("", "compare", "diagnose", "diff", "grade", "starter", "bench", "preview", "help");
+
     @Command(name = "extra", description = "A command added after the command line was built.")
     static final class ExtraCommand implements Callable<Integer> {
         @Override
@@ -118,8 +122,10 @@ class CommandLineHelpTest {
     }
 
     @Test
-    void previewsHelpStartsWithTheUsageLine() {
-        assertThat(help("preview")).startsWith("Usage: tick1 preview ");
+    void everyHelpStartsWithItsUsageLine() {
+        for (String command : EVERY_HELP) {
+            assertThat(help(command)).startsWith(("Usage: tick1 " + command).strip() + " ");
+        }
     }
 
     @Test
