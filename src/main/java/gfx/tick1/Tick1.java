@@ -86,7 +86,8 @@ public final class Tick1 {
         // In tick1's words, and laid out as the other commands are: picocli's own help command
         // puts a header and a blank line above "Usage:".
         commandLine.getSubcommands().get("help").getCommandSpec().usageMessage().header(new String[0])
-                .synopsisHeading("Usage: ").description("Shows the help of tick1, or of the command named (tick1 help grade).");
+                .synopsisHeading("Usage: ")
+                .description("Shows the help of tick1, or of the command named (tick1 help grade).");
         return configure(commandLine);
     }
 
