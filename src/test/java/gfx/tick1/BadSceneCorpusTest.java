@@ -65,7 +65,7 @@ class BadSceneCorpusTest {
 
         CliRun run = CliRun.of(args.toArray(String[]::new));
 
-        assertThat(run.status()).as(run.err()).isEqualTo(Tick1.EXIT_BAD_SCENE);
+        assertThat(run.status()).as(run.err()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
         assertThat(run.err()).as("standard error").isEqualTo(CORPUS + "/" + c.error() + System.lineSeparator());
         assertThat(run.err()).as("no stack trace").doesNotContain("\tat ", "Exception");
         assertThat(run.out()).as("standard output").isEmpty();

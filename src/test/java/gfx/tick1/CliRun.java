@@ -14,7 +14,7 @@ public record CliRun(int status, String out, String err, byte[] stdout) {
     public static CliRun of(String... args) {
         ByteArrayOutputStream binary = new ByteArrayOutputStream();
         StringWriter out = new StringWriter(), err = new StringWriter();
-        CommandLine commandLine = Tick1.commandLine(new Tick1(binary));
+        CommandLine commandLine = Tick1.commandLine(new RenderCommand(binary));
         commandLine.setOut(new PrintWriter(out, true));
         commandLine.setErr(new PrintWriter(err, true));
         int status = commandLine.execute(args);

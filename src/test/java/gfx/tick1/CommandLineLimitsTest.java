@@ -45,7 +45,7 @@ class CommandLineLimitsTest {
         String[] args = (String.join(" ", "-i", "scenes/basic_scene.xml", "-o", dir.resolve("o.png").toString())
                 + " " + options).split(" ");
         CliRun run = CliRun.of(args);
-        assertThat(run.status()).as(run.err()).isEqualTo(Tick1.EXIT_USAGE);
+        assertThat(run.status()).as(run.err()).isEqualTo(RenderCommand.EXIT_USAGE);
         assertThat(run.err()).isEqualTo("tick1: " + message + " (see tick1 --help)" + System.lineSeparator());
         assertThat(dir.resolve("o.png")).doesNotExist();
     }
@@ -56,7 +56,7 @@ class CommandLineLimitsTest {
         assumeTrue(Runtime.getRuntime().maxMemory() / 2 < 8L * 16384 * 16384, "a heap big enough for the image");
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.resolve("o.png").toString(),
                 "--width", "16384", "--height", "16384");
-        assertThat(run.status()).as(run.err()).isEqualTo(Tick1.EXIT_USAGE);
+        assertThat(run.status()).as(run.err()).isEqualTo(RenderCommand.EXIT_USAGE);
         assertThat(run.err()).matches("tick1: a 16384 x 16384 image needs about 2048 MiB, more than half of the "
                 + "\\d+ MiB this Java may use; raise that with JAVA_OPTS=-Xmx\\.\\.\\. \\(see tick1 --help\\)\\R");
     }
@@ -70,10 +70,10 @@ class CommandLineLimitsTest {
             }
         });
         StringWriter err = new StringWriter();
-        CommandLine commandLine = Tick1.commandLine(new Tick1(closedPipe));
+        CommandLine commandLine = Tick1.commandLine(new RenderCommand(closedPipe));
         commandLine.setErr(new PrintWriter(err, true));
         int status = commandLine.execute("-i", "scenes/basic_scene.xml", "-o", "-", "--width", "8", "--height", "6");
-        assertThat(status).as(err.toString()).isEqualTo(Tick1.EXIT_CANNOT_WRITE);
+        assertThat(status).as(err.toString()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
         assertThat(err.toString()).isEqualTo("-: cannot write the image: standard output was closed or could not "
                 + "be written" + System.lineSeparator());
     }

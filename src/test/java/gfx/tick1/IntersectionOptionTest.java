@@ -37,7 +37,7 @@ class IntersectionOptionTest {
     @Test
     void anUnknownMethodIsAUsageError() {
         CliRun run = CliRun.of("--intersection", "exact", "-o", dir.resolve("x.png").toString());
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_USAGE);
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_USAGE);
         assertThat(run.err()).contains("--intersection").contains("exact").doesNotContain("Exception");
         assertThat(run.err().lines()).hasSize(1);
     }

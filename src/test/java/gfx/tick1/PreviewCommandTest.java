@@ -2,6 +2,7 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.preview.PreviewCommand;
 import gfx.tick1.preview.PreviewServer;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintWriter;
@@ -25,7 +26,7 @@ class PreviewCommandTest {
     @Test
     void servesUntilInterruptedAfterPrintingOneLineWithItsAddress() throws Exception {
         StringWriter out = new StringWriter(), err = new StringWriter();
-        CommandLine commandLine = Tick1.commandLine(new Tick1(new ByteArrayOutputStream()));
+        CommandLine commandLine = Tick1.commandLine(new RenderCommand(new ByteArrayOutputStream()));
         commandLine.setOut(new PrintWriter(out, true));
         commandLine.setErr(new PrintWriter(err, true));
         CompletableFuture<Thread> runner = new CompletableFuture<>();
@@ -52,14 +53,14 @@ class PreviewCommandTest {
         } finally {
             runner.get(10, TimeUnit.SECONDS).interrupt();
         }
-        assertThat(status.get(10, TimeUnit.SECONDS)).isEqualTo(Tick1.EXIT_OK);
+        assertThat(status.get(10, TimeUnit.SECONDS)).isEqualTo(PreviewCommand.EXIT_STOPPED);
         assertThat(err.toString()).isEmpty();
     }
 
     @Test
     void aMissingSceneFileStopsItWithOneLine() {
         CliRun run = CliRun.of("preview", "no/such/scene.xml", "--no-open");
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
+        assertThat(run.status()).isEqualTo(PreviewCommand.EXIT_NO_SCENE);
         assertThat(run.err()).isEqualTo("no/such/scene.xml: no such file" + System.lineSeparator());
         assertThat(run.out()).isEmpty();
     }
@@ -67,7 +68,7 @@ class PreviewCommandTest {
     @Test
     void aPortOutOfRangeIsAUsageError() {
         CliRun run = CliRun.of("preview", "--port", "70000", "--no-open");
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_USAGE);
+        assertThat(run.status()).isEqualTo(PreviewCommand.EXIT_USAGE);
         assertThat(run.err()).contains("--port 70000: must be from 0 to 65535").doesNotContain("Exception");
     }
 
@@ -76,7 +77,7 @@ class PreviewCommandTest {
         try (PreviewServer other = PreviewServer.start(null, 0)) {
             String port = Integer.toString(other.uri().getPort());
             CliRun run = CliRun.of("preview", "--port", port, "--no-open");
-            assertThat(run.status()).isEqualTo(Tick1.EXIT_USAGE);
+            assertThat(run.status()).isEqualTo(PreviewCommand.EXIT_USAGE);
             assertThat(run.err()).startsWith("tick1 preview: cannot use port " + port + ":")
                     .contains("--port 0 for any free one");
         }

@@ -54,7 +54,8 @@ class ReadmeCommandsTest {
     @MethodSource("tick1Commands")
     void everyTick1CommandShownIsACommandLineTick1Accepts(String command) {
         String[] args = Arrays.stream(command.split("\\s+")).skip(1).toArray(String[]::new);
-        assertThatCode(() -> Tick1.commandLine(new Tick1()).parseArgs(args)).as(command).doesNotThrowAnyException();
+        assertThatCode(() -> Tick1.commandLine(new RenderCommand()).parseArgs(args)).as(command)
+                .doesNotThrowAnyException();
     }
 
     @ParameterizedTest(name = "{0}")

@@ -85,7 +85,7 @@ class Tick1CommandTest {
     void aMissingInputIsNamed() throws IOException {
         Path output = existingOutput();
         CliRun run = CliRun.of("-i", dir.resolve("missing.xml").toString(), "-o", output.toString());
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
         assertThat(run.err().strip()).isEqualTo(dir.resolve("missing.xml") + ": no such file");
         assertThat(output).hasBinaryContent(EarlierImage.bytes());
     }
@@ -94,7 +94,7 @@ class Tick1CommandTest {
     void anUnwritableOutputGivesStatusThreeAndLeavesNoTemporaryFile() throws IOException {
         Path output = dir.resolve("no-such-dir").resolve("out.png");
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(), "--width", "8", "--height", "8");
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_CANNOT_WRITE);
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
         assertThat(run.err()).startsWith(output + ": cannot write the image: ").doesNotContain("\tat ");
         assertThat(run.err().lines()).hasSize(1);
     }
@@ -112,7 +112,7 @@ class Tick1CommandTest {
     @Test
     void outputThatIsADirectoryIsRefused() throws IOException {
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.toString(), "--width", "8", "--height", "8");
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_CANNOT_WRITE);
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
         assertThat(run.err().strip()).isEqualTo(dir + ": cannot write the image: is a directory, expected a file name for the PNG");
     }
 
@@ -130,22 +130,24 @@ class Tick1CommandTest {
     void strictRefusesWhatWouldOtherwiseBeAWarning() throws IOException {
         Path scene = scene("<scene><point-light colour='#FFFFFF'/><point-light colour='#FFFFFF'/></scene>");
         CliRun run = CliRun.of("--strict", "-i", scene.toString(), "-o", dir.resolve("s.png").toString());
-        assertThat(run.status()).isEqualTo(Tick1.EXIT_BAD_SCENE);
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
         assertThat(run.err()).endsWith("(an error under --strict)" + System.lineSeparator());
         assertThat(dir.resolve("s.png")).doesNotExist();
     }
 
     @Test
     void aPlainRenderIsParsedWithoutBuildingTheSubcommandsButAnythingElseGetsThemAll() {
-        assertThat(Tick1.commandLine(new Tick1(), "-q", "-i", "scenes/tick1.xml", "-o", "out.png").getSubcommands())
+        assertThat(Tick1.commandLine(new RenderCommand(), "-q", "-i", "scenes/tick1.xml", "-o", "out.png")
+                .getSubcommands())
                 .as("options only: no subcommand can be reached").isEmpty();
-        assertThat(Tick1.commandLine(new Tick1(), "-o", "compare").getSubcommands())
+        assertThat(Tick1.commandLine(new RenderCommand(), "-o", "compare").getSubcommands())
                 .as("an argument that names a subcommand").containsKeys("compare", "bench");
-        assertThat(Tick1.commandLine(new Tick1(), "--help").getSubcommands()).as("help lists them")
+        assertThat(Tick1.commandLine(new RenderCommand(), "--help").getSubcommands()).as("help lists them")
                 .containsKeys("compare", "diagnose", "grade", "starter", "bench", "preview");
-        assertThat(Tick1.commandLine(new Tick1(), "comapre").getSubcommands()).as("a misspelt one gets suggestions")
+        assertThat(Tick1.commandLine(new RenderCommand(), "comapre").getSubcommands())
+                .as("a misspelt one gets suggestions")
                 .isNotEmpty();
-        assertThat(Tick1.commandLine(new Tick1(), "-qh").getSubcommands()).as("help in a cluster of flags")
+        assertThat(Tick1.commandLine(new RenderCommand(), "-qh").getSubcommands()).as("help in a cluster of flags")
                 .isNotEmpty();
     }
 }

@@ -17,10 +17,10 @@ final class BenchReport {
     private final List<Result> results;
     private final Map<String, String> png;
     private final String launcher;
-    private final Bench.Whole whole;
+    private final BenchCommand.Whole whole;
 
     BenchReport(boolean quick, int cores, List<Result> results, Map<String, String> png, String launcher,
-            Bench.Whole whole) {
+            BenchCommand.Whole whole) {
         this.quick = quick;
         this.cores = cores;
         this.results = results;

@@ -1,6 +1,6 @@
 package gfx.tick1.bench;
 
-import gfx.tick1.Tick1;
+import gfx.tick1.cli.MainClass;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -41,7 +41,7 @@ final class ProcessRuns {
         if (launcher != null) {
             command.add(launcher.toString());
         } else {
-            command.addAll(List.of(java, "-cp", classPath, Tick1.class.getName()));
+            command.addAll(List.of(java, "-cp", classPath, MainClass.NAME));
         }
         command.addAll(List.of(args));
         return command;
@@ -109,7 +109,8 @@ final class ProcessRuns {
 
     private static Path findLauncher() {
         try {
-            Path jar = Path.of(Tick1.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+            // This class sits in the same jar as the entry point.
+            Path jar = Path.of(ProcessRuns.class.getProtectionDomain().getCodeSource().getLocation().toURI());
             Path launcher = jar.getParent().resolveSibling("bin").resolve("tick1");
             return jar.toString().endsWith(".jar") && Files.isExecutable(launcher) ? launcher : null;
         } catch (Exception e) {

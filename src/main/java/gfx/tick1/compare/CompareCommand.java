@@ -1,8 +1,10 @@
 package gfx.tick1.compare;
 
+import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngInput;
 import gfx.tick1.image.PngOutput;
+import gfx.tick1.io.IoErrors;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -16,21 +18,18 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /** {@code tick1 compare}: how far one image is from another, in figures and as a heat map. */
-@Command(name = "compare", mixinStandardHelpOptions = true, sortOptions = false, usageHelpAutoWidth = true,
+@Command(name = "compare",
         description = "Compares two images pixel by pixel: how many pixels differ, the largest and mean "
-                + "difference per channel (in levels of 0 to 255), PSNR and the bounding box of the differences.",
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {
-            "0:every pixel is within the tolerance",
-            "1:some pixel differs by more than the tolerance",
-            "2:the images cannot be compared (bad command line, unreadable image, sizes differ)",
-            "3:the heat map could not be written",
-            "4:an internal error (a bug: please report it)"})
+                + "difference per channel (in levels of 0 to 255), PSNR and the bounding box of the differences.")
 public final class CompareCommand implements Callable<Integer> {
 
+    @ExitStatus("every pixel is within the tolerance")
     public static final int EXIT_SAME = 0;
+    @ExitStatus("some pixel differs by more than the tolerance")
     public static final int EXIT_DIFFERENT = 1;
+    @ExitStatus("the images cannot be compared (bad command line, unreadable image, sizes differ)")
     public static final int EXIT_CANNOT_COMPARE = 2;
+    @ExitStatus("the heat map could not be written")
     public static final int EXIT_CANNOT_WRITE = 3;
 
     @Spec
@@ -57,7 +56,7 @@ public final class CompareCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         if (tolerance < 0 || tolerance > 255) {
-            // Reported and answered with exit status 2 like any other usage error (Tick1.configure).
+            // Reported and answered with exit status 2 like any other usage error (the start-up's handler).
             throw new ParameterException(spec.commandLine(), "--tolerance " + tolerance + ": must be from 0 to 255");
         }
         ImageDifference difference;
@@ -74,7 +73,7 @@ public final class CompareCommand implements Callable<Integer> {
             try {
                 PngOutput.write(difference.heatMapWithLegend(), heatMapFile);
             } catch (IOException e) {
-                err.println("tick1 compare: " + heatMapFile + ": cannot write the heat map: " + e.getMessage());
+                err.println("tick1 compare: " + heatMapFile + ": cannot write the heat map: " + IoErrors.reason(e));
                 return EXIT_CANNOT_WRITE;
             }
             out.println("heat map: " + heatMapFile);

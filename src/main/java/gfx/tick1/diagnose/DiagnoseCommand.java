@@ -1,5 +1,6 @@
 package gfx.tick1.diagnose;
 
+import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.image.PngInput;
 import gfx.tick1.scene.BundledScenes;
 import gfx.tick1.scene.Scene;
@@ -20,7 +21,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /** {@code tick1 diagnose}: which stage of the handout, or which common mistake, an image shows. */
-@Command(name = "diagnose", mixinStandardHelpOptions = true, sortOptions = false, usageHelpAutoWidth = true,
+@Command(name = "diagnose",
         description = {
             "Renders the scene as each entry of a catalogue (the handout's stages, the correct image and the "
                     + "mistakes students make) and ranks them by the share of pixels that match exactly and within "
@@ -33,20 +34,17 @@ import picocli.CommandLine.Spec;
                     + "normalised (Figure 6a); N.L not clamped (Figure 6b); R.V not clamped (Figure 6c); far root; "
                     + "hit rejected when either root is negative; no distance fall-off; fall-off without 4 pi; V "
                     + "pointing away from the camera; R reflected the wrong way; rounding instead of truncating; "
-                    + "image upside down; red and blue swapped."},
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {
-            "0:the image is correct",
-            "1:an earlier stage or a mistake of the catalogue explains every pixel",
-            "2:the image or the scene cannot be read, the image is not of a scene it knows (give --scene), or the "
-                    + "command line is wrong",
-            "3:no entry of the catalogue explains the image, or two come out level: candidates only",
-            "4:an internal error (a bug: please report it)"})
+                    + "image upside down; red and blue swapped."})
 public final class DiagnoseCommand implements Callable<Integer> {
 
+    @ExitStatus("the image is correct")
     public static final int EXIT_CORRECT = 0;
+    @ExitStatus("an earlier stage or a mistake of the catalogue explains every pixel")
     public static final int EXIT_NOT_CORRECT = 1;
+    @ExitStatus("the image or the scene cannot be read, the image is not of a scene it knows (give --scene), or the "
+            + "command line is wrong")
     public static final int EXIT_CANNOT_DIAGNOSE = 2;
+    @ExitStatus("no entry of the catalogue explains the image, or two come out level: candidates only")
     public static final int EXIT_UNSURE = 3;
 
     @Spec

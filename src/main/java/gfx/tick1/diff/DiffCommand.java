@@ -1,15 +1,15 @@
 package gfx.tick1.diff;
 
+import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.diagnose.Variant;
+import gfx.tick1.io.IoErrors;
 import gfx.tick1.starter.StarterKit;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
-import java.nio.charset.MalformedInputException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -28,23 +28,20 @@ import picocli.CommandLine.Spec;
  * aside, members are matched by signature, and what still differs is shown as a unified diff,
  * member by member, with a hint where a change looks like a mistake of the diagnose catalogue.
  */
-@Command(name = "diff", mixinStandardHelpOptions = true, sortOptions = false, usageHelpAutoWidth = true,
+@Command(name = "diff",
         description = {
             "Compares your Sphere.java and Renderer.java with ours, ignoring comments, formatting, the package, "
                     + "imports and the order of fields and methods. Fields, constructors and methods are matched "
                     + "by signature; each one that differs is shown as a unified diff (- ours, + yours), with a "
                     + "one-line hint and the handout section to reread where the change looks like a common "
-                    + "mistake. A file is recognised by its class. Colour on a terminal only."},
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {
-            "0:nothing differs in meaning (and nothing is printed)",
-            "1:something differs",
-            "2:a file cannot be read or parsed, or is not a Sphere or Renderer class",
-            "4:an internal error (a bug: please report it)"})
+                    + "mistake. A file is recognised by its class. Colour on a terminal only."})
 public final class DiffCommand implements Callable<Integer> {
 
+    @ExitStatus("nothing differs in meaning (and nothing is printed)")
     public static final int EXIT_SAME = 0;
+    @ExitStatus("something differs")
     public static final int EXIT_DIFFERENT = 1;
+    @ExitStatus("a file cannot be read or parsed, or is not a Sphere or Renderer class")
     public static final int EXIT_CANNOT_COMPARE = 2;
 
     /** The classes a student writes, whose reference source the program carries. */
@@ -79,7 +76,7 @@ public final class DiffCommand implements Callable<Integer> {
                 err.println("tick1 diff: " + e.getMessage());
                 return EXIT_CANNOT_COMPARE;
             } catch (IOException e) {
-                err.println("tick1 diff: " + file + ": " + describe(e));
+                err.println("tick1 diff: " + file + ": " + IoErrors.reason(e));
                 return EXIT_CANNOT_COMPARE;
             }
         }
@@ -154,18 +151,6 @@ public final class DiffCommand implements Callable<Integer> {
         return Files.readString(file, StandardCharsets.UTF_8);
     }
 
-    private static String describe(IOException e) {
-        if (e instanceof NoSuchFileException) {
-            return "no such file";
-        }
-        if (e instanceof MalformedInputException) {
-            return "not UTF-8 text";
-        }
-        if (e instanceof java.nio.file.AccessDeniedException) {
-            return "permission denied";
-        }
-        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
-    }
 
     /** ANSI colours for a terminal, or the text as it is. */
     record Colours(boolean on) {

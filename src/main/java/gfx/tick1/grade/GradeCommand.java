@@ -1,10 +1,12 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.diagnose.Diagnoser;
 import gfx.tick1.diagnose.Diagnosis;
 import gfx.tick1.grade.StudentProcess.Outcome;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
+import gfx.tick1.io.IoErrors;
 import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.scene.BundledScenes;
 import gfx.tick1.scene.Intersection;
@@ -17,7 +19,6 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -38,7 +39,7 @@ import picocli.CommandLine.Spec;
  * the starter code, renders the grading scenes with them in a separate JVM, and compares each
  * image with the reference render.
  */
-@Command(name = "grade", mixinStandardHelpOptions = true, sortOptions = false, usageHelpAutoWidth = true,
+@Command(name = "grade",
         description = {
             "Grades a student's Sphere.java and Renderer.java as the course's tester does: compiles them with the "
                     + "starter code (see tick1 starter), renders tick1.xml and a hidden scene (or the scenes given) "
@@ -48,19 +49,16 @@ import picocli.CommandLine.Spec;
                     + "the diagnose catalogue, and a heat map (not for hidden scenes).",
             "Trust: inside the sandbox the student's code sees no file of yours but the scenes, has no network and "
                     + "cannot outlive the grade. It needs Linux and the bubblewrap package; --no-sandbox runs the "
-                    + "code with your permissions instead."},
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {
-            "0:the code passed: every scene matches pixel for pixel",
-            "1:the code failed: it does not compile, crashed, ran out of time or memory, or an image is wrong",
-            "2:the command line is wrong, a file given cannot be read, or the sandbox cannot be made",
-            "3:a scene failed and its images could not be written to the report folder",
-            "4:an internal error (a bug: please report it)"})
+                    + "code with your permissions instead."})
 public final class GradeCommand implements Callable<Integer> {
 
+    @ExitStatus("the code passed: every scene matches pixel for pixel")
     public static final int EXIT_PASS = 0;
+    @ExitStatus("the code failed: it does not compile, crashed, ran out of time or memory, or an image is wrong")
     public static final int EXIT_FAIL = 1;
+    @ExitStatus("the command line is wrong, a file given cannot be read, or the sandbox cannot be made")
     public static final int EXIT_USAGE = 2;
+    @ExitStatus("a scene failed and its images could not be written to the report folder")
     public static final int EXIT_CANNOT_WRITE = 3;
 
     /** The course tester's own words for a pass. */
@@ -205,7 +203,7 @@ public final class GradeCommand implements Callable<Integer> {
             err.println("tick1 grade: " + e.getMessage());
             return EXIT_USAGE;
         } catch (IOException e) {
-            err.println("tick1 grade: " + describe(e));
+            err.println("tick1 grade: " + IoErrors.describe(e));
             return EXIT_USAGE;
         }
         for (String problem : new String[] {StudentFile.packageProblem(sphere.toString(), sphereCode),
@@ -374,7 +372,7 @@ public final class GradeCommand implements Callable<Integer> {
             out.println("  heat map: " + reportFolder.resolve(stem + "-diff.png") + " (beside it: " + stem
                     + "-yours.png and " + stem + "-expected.png)");
         } catch (IOException e) {
-            err.println("tick1 grade: " + reportFolder + ": cannot write the report images: " + describe(e));
+            err.println("tick1 grade: " + reportFolder + ": cannot write the report images: " + IoErrors.describe(e));
             reportUnwritable = true;
         }
         return false;
@@ -434,18 +432,4 @@ public final class GradeCommand implements Callable<Integer> {
     private static String count(int n, String noun) {
         return n + " " + noun + (n == 1 ? "" : "s");
     }
-
-    private static String describe(IOException e) {
-        if (e instanceof NoSuchFileException) {
-            return e.getMessage() + ": no such file";
-        }
-        if (e instanceof java.nio.file.FileAlreadyExistsException) {
-            return e.getMessage() + " exists and is not a folder";
-        }
-        if (e instanceof java.nio.file.AccessDeniedException) {
-            return e.getMessage() + ": permission denied";
-        }
-        return e.getMessage();
-    }
-
 }

@@ -1,5 +1,6 @@
 package gfx.tick1.image;
 
+import gfx.tick1.io.IoErrors;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.InputStream;
@@ -23,10 +24,8 @@ public final class PngInput {
         BufferedImage image;
         try (InputStream in = Files.newInputStream(file)) {
             image = ImageIO.read(in);
-        } catch (NoSuchFileException e) {
-            throw new IOException(file + ": no such file");
-        } catch (AccessDeniedException e) {
-            throw new IOException(file + ": permission denied");
+        } catch (NoSuchFileException | AccessDeniedException e) {
+            throw new IOException(file + ": " + IoErrors.reason(e));
         } catch (IOException | RuntimeException e) {
             // ImageIO reports a damaged PNG as IIOException, and some as runtime exceptions.
             throw new IOException(file + ": not a readable PNG image (" + e.getMessage() + ")");

@@ -1,5 +1,6 @@
 package gfx.tick1.image;
 
+import gfx.tick1.io.IoErrors;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -55,18 +56,22 @@ public final class PngOutput {
     }
 
     static void write(BufferedImage image, Path target, Encoder encoder) throws IOException {
-        Path absolute = followLinks(target.toAbsolutePath());
-        if (Files.isDirectory(absolute)) {
+        Path given = target.toAbsolutePath();
+        if (Files.isDirectory(given)) {
             throw new IOException("is a directory, expected a file name for the PNG");
         }
-        if (Files.exists(absolute) && !Files.isRegularFile(absolute)) {
+        if (Files.exists(given) && !Files.isRegularFile(given)) {
             // A device or a pipe (/dev/stdout, a FIFO): renaming a file over it would replace it,
-            // and there is nothing to keep whole, so the PNG is written straight into it.
-            try (OutputStream out = Files.newOutputStream(absolute)) {
+            // and there is nothing to keep whole, so the PNG is written straight into it. Asked of
+            // the path as given, which the operating system follows to what it names: the links of
+            // /dev/stdout lead to /proc/self/fd/1 and on to a name such as "pipe:[1234]", which is
+            // no path at all.
+            try (OutputStream out = Files.newOutputStream(given)) {
                 encoder.encode(image, out);
             }
             return;
         }
+        Path absolute = followLinks(given);
         Path directory = absolute.getParent();
         if (directory == null || !Files.exists(directory)) {
             throw new IOException("directory " + directory + " does not exist");
@@ -109,10 +114,10 @@ public final class PngOutput {
             return Files.createTempFile(directory, prefix, ".tmp", ordinary);
         } catch (UnsupportedOperationException e) {
             return Files.createTempFile(directory, prefix, ".tmp"); // not a POSIX file system
-        } catch (AccessDeniedException e) {
-            throw new IOException("cannot create a file in " + directory + " (permission denied)");
         } catch (FileSystemException e) {
-            String reason = e.getReason() == null ? "" : " (" + e.getReason() + ")";
+            // Most of these name only the file; say the reason where one is known.
+            boolean known = e instanceof AccessDeniedException || e.getReason() != null;
+            String reason = known ? " (" + IoErrors.reason(e) + ")" : "";
             throw new IOException("cannot create a file in " + directory + reason);
         }
     }

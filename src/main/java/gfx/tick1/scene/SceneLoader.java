@@ -1,5 +1,6 @@
 package gfx.tick1.scene;
 
+import gfx.tick1.io.IoErrors;
 import gfx.tick1.math.Vector3;
 import java.io.IOException;
 import java.io.InputStream;
@@ -142,12 +143,10 @@ public final class SceneLoader {
                 }
                 return bytes;
             }
-        } catch (NoSuchFileException e) {
-            throw new SceneException(fileName + ": no such file");
-        } catch (AccessDeniedException e) {
-            throw new SceneException(fileName + ": permission denied");
+        } catch (NoSuchFileException | AccessDeniedException e) {
+            throw new SceneException(fileName + ": " + IoErrors.reason(e));
         } catch (IOException e) {
-            throw new SceneException(fileName + ": cannot read: " + e.getMessage());
+            throw new SceneException(fileName + ": cannot read: " + IoErrors.reason(e));
         }
     }
 

@@ -1,5 +1,7 @@
 package gfx.tick1.starter;
 
+import gfx.tick1.cli.ExitStatus;
+import gfx.tick1.io.IoErrors;
 import gfx.tick1.starter.StarterKit.KitFile;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -13,26 +15,25 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /** {@code tick1 starter}: writes the student's starting kit, exactly what {@code grade} compiles against. */
-@Command(name = "starter", mixinStandardHelpOptions = true, sortOptions = false, usageHelpAutoWidth = true,
+@Command(name = "starter",
         description = "Writes the Tick 1 starter kit: src/gfx/tick1/ with the given classes (Camera, PointLight, "
                 + "Ray, RaycastHit, Scene, SceneLoader, Tick1, Vector3), Sphere.java and Renderer.java with the "
-                + "handout's TODOs, and basic_scene.xml.",
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {
-            "0:the kit was written",
-            "2:the command line is wrong, or a file would be overwritten (see --force)",
-            "3:the kit could not be written",
-            "4:an internal error (a bug: please report it)"})
+                + "handout's TODOs, and basic_scene.xml.")
 public final class StarterCommand implements Callable<Integer> {
 
+    @ExitStatus("the kit was written")
+    public static final int EXIT_OK = 0;
+    @ExitStatus("the command line is wrong, or a file would be overwritten (see --force)")
     public static final int EXIT_WOULD_OVERWRITE = 2;
+    @ExitStatus("the kit could not be written")
     public static final int EXIT_CANNOT_WRITE = 3;
 
     @Spec
     private CommandSpec spec;
 
-    @Option(names = "--out", paramLabel = "DIR", required = true,
-            description = "The folder to write the kit into (created if missing).")
+    @Option(names = "--out", paramLabel = "DIR", defaultValue = "tick1-starter",
+            description = "The folder to write the kit into, created if missing (default: ${DEFAULT-VALUE}, in "
+                    + "the current folder).")
     private Path folder;
 
     @Option(names = "--force", description = "Overwrite files of an earlier kit in the folder.")
@@ -56,7 +57,7 @@ public final class StarterCommand implements Callable<Integer> {
                 file.writeUnder(folder);
             }
         } catch (IOException e) {
-            err.println("tick1 starter: " + folder + ": cannot write the kit: " + e.getMessage());
+            err.println("tick1 starter: cannot write the kit: " + IoErrors.describe(e));
             return EXIT_CANNOT_WRITE;
         }
         PrintWriter out = spec.commandLine().getOut();
@@ -64,6 +65,6 @@ public final class StarterCommand implements Callable<Integer> {
         files.forEach(file -> out.println("  " + file.path()));
         out.println("Students edit and submit " + StarterKit.SOURCE_FOLDER + "Sphere.java and "
                 + StarterKit.SOURCE_FOLDER + "Renderer.java.");
-        return 0;
+        return EXIT_OK;
     }
 }

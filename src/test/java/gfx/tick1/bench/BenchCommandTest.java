@@ -2,6 +2,7 @@ package gfx.tick1.bench;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.RenderCommand;
 import gfx.tick1.Tick1;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -30,7 +31,7 @@ class BenchCommandTest {
     @BeforeAll
     static void runTheQuickBenchmark() {
         StringWriter text = new StringWriter();
-        CommandLine commandLine = Tick1.commandLine(new Tick1());
+        CommandLine commandLine = Tick1.commandLine(new RenderCommand());
         commandLine.setOut(new PrintWriter(text, true));
         commandLine.setErr(new PrintWriter(text, true));
         status = commandLine.execute("bench", "--quick", "--out", out.toString());
@@ -82,7 +83,7 @@ class BenchCommandTest {
     void anUnwritableReportFolderIsOneLineAndStatusThree() throws IOException {
         Path file = Files.writeString(out.resolve("not-a-folder"), "x");
         StringWriter err = new StringWriter();
-        CommandLine commandLine = Tick1.commandLine(new Tick1());
+        CommandLine commandLine = Tick1.commandLine(new RenderCommand());
         commandLine.setOut(new PrintWriter(new StringWriter(), true));
         commandLine.setErr(new PrintWriter(err, true));
         assertThat(commandLine.execute("bench", "--quick", "--out", file.resolve("report").toString())).isEqualTo(3);

@@ -2,6 +2,7 @@ package gfx.tick1.preview;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.RenderCommand;
 import gfx.tick1.Tick1;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.math.Ray;
@@ -156,7 +157,7 @@ class PreviewPageTest {
         BufferedImage shown = browser.pixelsOf(element("#raytraced"));
 
         ByteArrayOutputStream png = new ByteArrayOutputStream();
-        CommandLine cli = Tick1.commandLine(new Tick1(png));
+        CommandLine cli = Tick1.commandLine(new RenderCommand(png));
         cli.setErr(new PrintWriter(new StringWriter()));
         assertThat(cli.execute("--quiet", "--input", TICK1_XML.toString(), "--output", "-")).isZero();
         BufferedImage fromCli = ImageIO.read(new ByteArrayInputStream(png.toByteArray()));
@@ -171,10 +172,10 @@ class PreviewPageTest {
         Path broken = dir.resolve("broken.xml");
         Files.writeString(broken, "<scene>\n  <sphere x=\"0\" z=\"4\" radius=\"-1\" colour=\"#FF0000\"/>\n</scene>\n");
         StringWriter err = new StringWriter();
-        CommandLine cli = Tick1.commandLine(new Tick1(new ByteArrayOutputStream()));
+        CommandLine cli = Tick1.commandLine(new RenderCommand(new ByteArrayOutputStream()));
         cli.setErr(new PrintWriter(err, true));
         assertThat(cli.execute("--input", broken.toString(), "--output", dir.resolve("out.png").toString()))
-                .isEqualTo(Tick1.EXIT_BAD_SCENE);
+                .isEqualTo(RenderCommand.EXIT_BAD_SCENE);
         // The CLI names the file as it was given; the page knows only the dropped file's name.
         String expected = err.toString().strip().replace(broken.toString(), "broken.xml");
 

@@ -1,11 +1,11 @@
 package gfx.tick1.bench;
 
-import gfx.tick1.Tick1;
+import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
+import gfx.tick1.io.IoErrors;
 import gfx.tick1.render.ReferenceRenderer;
-import gfx.tick1.render.Renderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.render.TruthRenderer;
 import gfx.tick1.scene.BundledScenes;
@@ -35,14 +35,15 @@ import picocli.CommandLine.Spec;
  * program in fresh processes for start-up, scaling and end-to-end time. Writes report.md,
  * results.csv and speed-vs-error.png.
  */
-@Command(name = "bench", mixinStandardHelpOptions = true, sortOptions = false,
+@Command(name = "bench",
         description = "Measures speed against accuracy for every renderer variant and writes a report "
-                + "(report.md, results.csv, speed-vs-error.png).",
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {
-            "0:the report was written",
-            "3:the report could not be written, or a timed run of tick1 failed"})
-public final class Bench implements Callable<Integer> {
+                + "(report.md, results.csv, speed-vs-error.png).")
+public final class BenchCommand implements Callable<Integer> {
+
+    @ExitStatus("the report was written")
+    public static final int EXIT_OK = 0;
+    @ExitStatus("the report could not be written, or a timed run of tick1 failed")
+    public static final int EXIT_CANNOT_WRITE = 3;
 
     @Spec
     private CommandSpec spec;
@@ -62,8 +63,8 @@ public final class Bench implements Callable<Integer> {
         try {
             return run();
         } catch (IOException e) {
-            spec.commandLine().getErr().println("tick1 bench: " + e.getMessage());
-            return Tick1.EXIT_CANNOT_WRITE;
+            spec.commandLine().getErr().println("tick1 bench: " + IoErrors.describe(e));
+            return EXIT_CANNOT_WRITE;
         }
     }
 
@@ -113,7 +114,7 @@ public final class Bench implements Callable<Integer> {
         report.write(out);
         log.printf("Wrote %s, %s and %s%n", out.resolve("report.md"), out.resolve("results.csv"),
                 out.resolve("speed-vs-error.png"));
-        return 0;
+        return EXIT_OK;
     }
 
     /** Frame sizes, repetitions and scenes for the two modes. */
@@ -148,7 +149,8 @@ public final class Bench implements Callable<Integer> {
                 (s, w, h) -> new FloatRenderer(w, h, FloatRenderer.Formula.HANDOUT).render(s)));
         variants.add(new Variant("float, robust", 1, cores,
                 (s, w, h) -> new FloatRenderer(w, h, FloatRenderer.Formula.ROBUST).render(s)));
-        variants.add(new Variant("readable Renderer, robust", 1, cores, (s, w, h) -> new ReferenceRenderer(w, h).render(s)));
+        variants.add(new Variant("readable Renderer, robust", 1, cores,
+                (s, w, h) -> new ReferenceRenderer(w, h).render(s)));
         variants.add(new Variant("readable Renderer, handout formula", 1, 1,
                 (s, w, h) -> new ReferenceRenderer(w, h, Intersection.HANDOUT).render(s)));
         return variants;
@@ -229,8 +231,8 @@ public final class Bench implements Callable<Integer> {
         Timing endToEnd = runs.tick1(quick ? 1 : 5, "-q", "-i", scene, "-o", image, "--width", "" + w, "--height",
                 "" + h, "--samples", "4");
         log.printf("  whole runs: start-up %.0f ms (handout-style java run %.0f ms); 10 spheres %.0f ms, 10,000 "
-                + "spheres %.0f ms; %d x %d x 4 samples %.0f ms%n", startup.median(), handoutStyle.median(), ten.median(),
-                tenThousand.median(), w, h, endToEnd.median());
+                + "spheres %.0f ms; %d x %d x 4 samples %.0f ms%n", startup.median(), handoutStyle.median(),
+                ten.median(), tenThousand.median(), w, h, endToEnd.median());
         Files.deleteIfExists(Path.of(image));
         return new Whole(phases, startup, handoutStyle, ten, tenThousand, endToEnd, w + " x " + h);
     }

@@ -1,6 +1,8 @@
 package gfx.tick1.preview;
 
-import gfx.tick1.Tick1;
+import gfx.tick1.cli.ExitStatus;
+import gfx.tick1.cli.ExitStatuses;
+import gfx.tick1.io.IoErrors;
 import java.awt.Desktop;
 import java.awt.GraphicsEnvironment;
 import java.io.IOException;
@@ -20,20 +22,29 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /** {@code tick1 preview}: a web page on this machine that shows a scene in 3D beside its ray-traced image. */
-@Command(name = "preview", mixinStandardHelpOptions = true,
-        sortOptions = false, usageHelpAutoWidth = true,
-        header = "Shows a scene in 3D in the browser, beside its ray-traced image.",
+@Command(name = "preview",
         description = {
+            "Shows a scene in 3D in the browser, beside its ray-traced image.",
             "Serves a page, to this machine only, that shows a scene in 3D (ground grid, axes, the camera, "
                     + "the light, the spheres) with what the camera sees and the ray-traced image beside it. "
                     + "Drop scene files onto the page, or pick one, to see them; reload the page to re-read SCENE.xml.",
-            "Runs until interrupted (Ctrl-C)."},
-        exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {
-            "0:stopped with Ctrl-C",
-            "1:SCENE.xml does not exist",
-            "2:the command line is wrong, or the port cannot be used"})
-public final class Preview implements Callable<Integer> {
+            "Runs until interrupted (Ctrl-C)."})
+public final class PreviewCommand implements Callable<Integer> {
+
+    /** When the thread serving is interrupted inside Java, as a program embedding the previewer does. */
+    public static final int EXIT_STOPPED = 0;
+    @ExitStatus("SCENE.xml does not exist")
+    public static final int EXIT_NO_SCENE = 1;
+    @ExitStatus("the command line is wrong, or the port cannot be used")
+    public static final int EXIT_USAGE = ExitStatuses.EXIT_USAGE;
+
+    /**
+     * Java ends on Ctrl-C with 128 plus the signal's number (SIGINT, 2), the status by which shells
+     * and make know that a program was interrupted. The previewer keeps that convention rather than
+     * catching the signal, which Java offers only through an unsupported API.
+     */
+    @ExitStatus("stopped with Ctrl-C (the usual status of an interrupted program)")
+    public static final int EXIT_INTERRUPTED = 130;
 
     @Spec
     private CommandSpec spec;
@@ -65,13 +76,13 @@ public final class Preview implements Callable<Integer> {
                 scenePath = Path.of(scene);
             } catch (InvalidPathException e) {
                 err.println(scene + ": not a valid file name");
-                return Tick1.EXIT_BAD_SCENE;
+                return EXIT_NO_SCENE;
             }
             // Only a missing file stops the previewer: anything wrong inside it is shown on the page,
             // where a corrected file can be dropped.
             if (!Files.exists(scenePath)) {
                 err.println(scene + ": no such file");
-                return Tick1.EXIT_BAD_SCENE;
+                return EXIT_NO_SCENE;
             }
         }
 
@@ -86,14 +97,14 @@ public final class Preview implements Callable<Integer> {
         } catch (BindException e) {
             err.println("tick1 preview: cannot use port " + port + ": " + e.getMessage()
                     + " (choose another with --port, or --port 0 for any free one)");
-            return Tick1.EXIT_USAGE;
+            return EXIT_USAGE;
         } catch (IOException e) {
-            err.println("tick1 preview: cannot start the server: " + e.getMessage());
-            return Tick1.EXIT_USAGE;
+            err.println("tick1 preview: cannot start the server: " + IoErrors.describe(e));
+            return EXIT_USAGE;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        return Tick1.EXIT_OK;
+        return EXIT_STOPPED;
     }
 
     /** Opens the page in the desktop's browser where there is one; otherwise the printed address has to do. */

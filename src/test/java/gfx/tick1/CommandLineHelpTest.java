@@ -1,0 +1,163 @@
+package gfx.tick1;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gfx.tick1.bench.BenchCommand;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** What tick1 --help, tick1 help COMMAND and a mistyped command line tell a newcomer. */
+class CommandLineHelpTest {
+
+    /** The commands as the help lists them, the render command first. */
+    private static final List<String> COMMANDS =
+            List.of("", "compare", "diagnose", "diff", "grade", "starter", "bench", "preview");
+
+    /** Every command, and picocli's help command as tick1 sets it up. */
+    private static final List<String> EVERY_HELP =
+            List.of("", "compare", "diagnose", "diff", "grade", "starter", "bench", "preview", "help");
+
+    @Command(name = "extra", description = "A command added after the command line was built.")
+    static final class ExtraCommand implements Callable<Integer> {
+        @Override
+        public Integer call() {
+            return 0;
+        }
+    }
+
+    @Test
+    void aSubcommandAddedAtRunTimeInheritsHelpVersionAndLayout() {
+        CommandLine commandLine = Tick1.commandLine(new RenderCommand());
+        commandLine.addSubcommand(new ExtraCommand());
+        CommandSpec extra = commandLine.getSubcommands().get("extra").getCommandSpec();
+        assertThat(extra.mixinStandardHelpOptions()).as("--help and --version").isTrue();
+        assertThat(extra.versionProvider()).as("the version provider").isInstanceOf(Version.class);
+        assertThat(extra.usageMessage().sortOptions()).as("options in the order written").isFalse();
+        assertThat(extra.usageMessage().autoWidth()).as("the terminal's width").isTrue();
+        assertThat(extra.usageMessage().exitCodeListHeading()).isEqualTo("%nExit status:%n");
+
+        StringWriter out = new StringWriter();
+        commandLine.setOut(new PrintWriter(out, true));
+        assertThat(commandLine.execute("extra", "--version")).isZero();
+        assertThat(out.toString()).startsWith("tick1 ");
+    }
+
+    @Test
+    void everyCommandsHelpListsTheStatusesOfAWrongCommandLineAndOfAnInternalError() {
+        for (String command : COMMANDS) {
+            String help = help(command);
+            assertThat(help).as(command).contains("Exit status:");
+            assertThat(help.substring(help.indexOf("Exit status:")))
+                    .as(command).containsPattern("\n  2 +\\S").containsPattern("\n  4 +an internal error")
+                    .contains("Java ran out of memory");
+        }
+        assertThat(help("bench"))
+                .contains("  " + BenchCommand.EXIT_CANNOT_WRITE + "   the report could not be written");
+    }
+
+    @Test
+    void helpFollowedByACommandShowsThatCommandsHelp() {
+        CliRun run = CliRun.of("help", "grade");
+        assertThat(run.status()).as(run.transcript()).isZero();
+        assertThat(run.out()).isEqualTo(help("grade"));
+    }
+
+    @Test
+    void helpAloneShowsTheMainHelp() {
+        CliRun run = CliRun.of("help");
+        assertThat(run.status()).as(run.transcript()).isZero();
+        assertThat(run.out()).isEqualTo(help(""));
+    }
+
+    @Test
+    void anUnknownWordBeforeACommandIsAnErrorNotIgnored() {
+        for (String[] args : new String[][] {{"foo", "grade"}, {"foo", "starter", "--out", "x"}}) {
+            CliRun run = CliRun.of(args);
+            assertThat(run.status()).as(run.transcript()).isEqualTo(RenderCommand.EXIT_USAGE);
+            assertThat(run.err()).as(run.transcript()).startsWith("tick1: ").contains("'foo'");
+            assertThat(run.err().lines()).hasSize(1);
+            assertThat(run.out()).isEmpty();
+        }
+    }
+
+    @Test
+    void aMisspeltCommandOrOptionGetsASuggestionOnItsOneLine() {
+        CliRun command = CliRun.of("compre", "a.png", "b.png");
+        assertThat(command.status()).isEqualTo(RenderCommand.EXIT_USAGE);
+        assertThat(command.err()).contains("did you mean compare?").doesNotContain("preview");
+        assertThat(command.err().lines()).hasSize(1);
+
+        CliRun option = CliRun.of("--inp", "scene.xml");
+        assertThat(option.err()).contains("did you mean --input?").doesNotContain("--intersection");
+        assertThat(option.err().lines()).hasSize(1);
+
+        CliRun typoBeforeACommand = CliRun.of("compre", "grade");
+        assertThat(typoBeforeACommand.err()).as("the first mistake is named, not grade's missing options")
+                .contains("did you mean compare?");
+    }
+
+    @Test
+    void anUnknownIntersectionMethodIsAnsweredWithTheNamesTheHelpUses() {
+        CliRun run = CliRun.of("--intersection", "foo");
+        assertThat(run.status()).isEqualTo(RenderCommand.EXIT_USAGE);
+        assertThat(run.err()).contains("robust, stable, handout").doesNotContain("ROBUST");
+    }
+
+    @Test
+    void usageLinesBreakOnlyBetweenTokens() {
+        for (String command : COMMANDS) {
+            List<String> tokens = synopsisTokens(command, 200);
+            for (int width = 55; width <= 120; width++) {
+                assertThat(synopsisTokens(command, width)).as("tick1 %s --help at %d columns", command, width)
+                        .isEqualTo(tokens);
+            }
+        }
+    }
+
+    @Test
+    void everyHelpStartsWithItsUsageLine() {
+        for (String command : EVERY_HELP) {
+            assertThat(help(command)).startsWith(("Usage: tick1 " + command).strip() + " ");
+        }
+    }
+
+    @Test
+    void aMissingDefaultSceneSaysHowToNameOne() {
+        CliRun run = CliRun.of("-q", "-o", "-");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
+        assertThat(run.err()).isEqualTo("basic_scene.xml: no such file (give a scene with -i SCENE.xml; see "
+                + "tick1 --help)" + System.lineSeparator());
+    }
+
+    @Test
+    void theStarterKitGoesToTick1StarterUnlessToldOtherwise() {
+        CommandLine starter = Tick1.commandLine(new RenderCommand()).getSubcommands().get("starter");
+        assertThat(starter.getCommandSpec().findOption("--out").defaultValue()).isEqualTo("tick1-starter");
+    }
+
+    /** What {@code tick1 COMMAND --help} prints. */
+    private static String help(String command) {
+        CliRun run = command.isEmpty() ? CliRun.of("--help") : CliRun.of(command, "--help");
+        assertThat(run.status()).as(run.transcript()).isZero();
+        return run.out();
+    }
+
+    /** The words of the usage lines of {@code tick1 COMMAND --help} at this width. */
+    private static List<String> synopsisTokens(String command, int width) {
+        CommandLine commandLine = Tick1.commandLine(new RenderCommand());
+        CommandLine target = command.isEmpty() ? commandLine : commandLine.getSubcommands().get(command);
+        target.setUsageHelpAutoWidth(false);
+        target.setUsageHelpWidth(width);
+        String usage = target.getUsageMessage(CommandLine.Help.Ansi.OFF);
+        String synopsis = usage.substring(0, usage.indexOf(target.getCommandSpec().usageMessage().description()[0]
+                .substring(0, 20)));
+        return Arrays.asList(synopsis.trim().split("\\s+"));
+    }
+}
