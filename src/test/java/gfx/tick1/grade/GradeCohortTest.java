@@ -3,16 +3,19 @@ package gfx.tick1.grade;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.Tick1;
 import gfx.tick1.diagnose.Variant;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.stream.Stream;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
 import org.junit.jupiter.api.BeforeAll;
@@ -243,11 +246,60 @@ class GradeCohortTest {
                 new Student("Third", 3, files("src/", correct), true)));
         Path report = dir.resolve("report");
         CliRun first = CliRun.of(gradeArguments(moodleZip(dir.resolve("a.zip"), three), report));
-        assertThat(first.out()).as(first.transcript()).contains("(2 now, 0 from earlier runs)");
+        assertThat(first.out()).as(first.transcript()).contains("(3 now, 0 from earlier runs)");
         three.set(1, new Student("Second", 2, files(correct), true));
         CliRun second = CliRun.of(gradeArguments(moodleZip(dir.resolve("b.zip"), three), report));
         assertThat(second.out()).as(second.transcript()).contains("(1 now, 2 from earlier runs)");
         assertThat(rows(report).values()).extracting(row -> row.get(4)).containsOnly("1.00");
+    }
+
+    @Test
+    void aGradeKilledMidRunKeepsEveryFinishedResultWholeAndTheNextRunFinishesIt(@TempDir Path dir) throws Exception {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        StudentSolution correct = StudentSolution.correct();
+        List<Student> students = new ArrayList<>();
+        for (int i = 0; i < 6; i++) {
+            students.add(new Student("Student " + i, 100 + i, files(correct.editRenderer("return image;",
+                    "return image; // " + i)), true));
+        }
+        Path zip = moodleZip(dir.resolve("download.zip"), students);
+        Path report = dir.resolve("report");
+        Path temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx--x--x")));
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
+                .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName()));
+        command.addAll(List.of(gradeArguments(zip, report, "--jobs", "1")));
+        Process grade = new ProcessBuilder(command).redirectErrorStream(true)
+                .redirectOutput(dir.resolve("grade.log").toFile()).start();
+        // Wait (at most two minutes) for the first result to be stored, then pull the plug.
+        Path state = report.resolve(CohortCommand.STATE_FOLDER);
+        for (int i = 0; i < 1200 && storedResults(state).isEmpty() && grade.isAlive(); i++) {
+            Thread.sleep(100);
+        }
+        grade.destroyForcibly().waitFor();
+        int kept = storedResults(state).size();
+        assertThat(kept).as(Files.readString(dir.resolve("grade.log"))).isBetween(1, students.size() - 1);
+        assertThat(report.resolve("grades.csv")).as("no grades.csv before the end").doesNotExist();
+
+        CliRun again = CliRun.of(gradeArguments(zip, report));
+        assertThat(again.status()).as(again.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(again.out()).contains("(" + (students.size() - kept) + " now, " + kept + " from earlier runs)");
+        assertThat(rows(report).values()).hasSize(students.size()).extracting(row -> row.get(4)).containsOnly("1.00");
+        try (Stream<Path> left = Files.list(state)) {
+            assertThat(left.map(p -> p.getFileName().toString())).as("half-written results")
+                    .noneMatch(name -> name.startsWith("."));
+        }
+    }
+
+    /** The results a grade has stored: each a folder named by its key, whole. */
+    private static List<Path> storedResults(Path state) throws IOException {
+        if (!Files.isDirectory(state)) {
+            return List.of();
+        }
+        try (Stream<Path> entries = Files.list(state)) {
+            return entries.filter(p -> !p.getFileName().toString().startsWith(".")).toList();
+        }
     }
 
     @Test
