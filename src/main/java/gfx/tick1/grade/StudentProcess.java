@@ -85,6 +85,8 @@ public final class StudentProcess {
     /** The folder holding {@value #SHARED_ARCHIVE}, or null. */
     private final Path sharedArchive;
     private volatile Process running;
+    /** Set by {@link #stop}: no run starts after it. */
+    private volatile boolean stopped;
 
     /** Runs the harness whose classes are in {@code harness}, in {@code sandbox}, with {@code memoryMegabytes} of heap. */
     public StudentProcess(Sandbox sandbox, Path harness, int memoryMegabytes) {
@@ -272,6 +274,7 @@ public final class StudentProcess {
 
     /** Kills the sandbox that is running, if one is (on Ctrl-C or SIGTERM). */
     void stop() {
+        stopped = true;
         Process process = running;
         if (process != null) {
             kill(process);
@@ -294,6 +297,9 @@ public final class StudentProcess {
     private Run run(List<String> harnessArguments, List<Bind> binds, Duration timeLimit, Path progress,
             Duration thenLimit, int heapMegabytes, boolean studentCode, List<String> javaOptions)
             throws IOException, InterruptedException {
+        if (stopped) {
+            throw new InterruptedException("the grade was stopped");
+        }
         List<String> command = new ArrayList<>(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx" + heapMegabytes + "m",
@@ -333,6 +339,10 @@ public final class StudentProcess {
                 heapMegabytes + NON_HEAP_MEGABYTES, studentCode)).redirectErrorStream(true).start();
         running = process;
         try {
+            if (stopped) {
+                // stop() came between the start and the line above: it must still end this run.
+                throw new InterruptedException("the grade was stopped");
+            }
             process.getOutputStream().close();
             OutputTail tail = new OutputTail(process.getInputStream());
             tail.start();

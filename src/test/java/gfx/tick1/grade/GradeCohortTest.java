@@ -247,7 +247,8 @@ class GradeCohortTest {
         Path report = dir.resolve("report");
         CliRun first = CliRun.of(gradeArguments(moodleZip(dir.resolve("a.zip"), three), report));
         assertThat(first.out()).as(first.transcript()).contains("(3 now, 0 from earlier runs)");
-        three.set(1, new Student("Second", 2, files(correct), true));
+        three.set(1, new Student("Second", 2, files(correct.editRenderer("return image;", "return image; // mended")),
+                true));
         CliRun second = CliRun.of(gradeArguments(moodleZip(dir.resolve("b.zip"), three), report));
         assertThat(second.out()).as(second.transcript()).contains("(1 now, 2 from earlier runs)");
         assertThat(rows(report).values()).extracting(row -> row.get(4)).containsOnly("1.00");
