@@ -41,6 +41,9 @@ public final class CohortTiming {
         }
     }
 
+    /** {@code tick1 grade}'s default --memory. */
+    private static final int DEFAULT_MEMORY_MEGABYTES = 512;
+
     private CohortTiming() {
     }
 
@@ -51,6 +54,15 @@ public final class CohortTiming {
      */
     public static Measured measure(String sphere, String renderer, int count, int jobs, int width, int height)
             throws IOException, InterruptedException, Unavailable {
+        return measure(sphere, renderer, count, jobs, width, height, DEFAULT_MEMORY_MEGABYTES);
+    }
+
+    /**
+     * As above, with {@code memoryMegabytes} of heap for the student's code: under 256 MiB, the
+     * compiler's least, tick1.xml runs in a JVM of its own (three JVM starts a submission).
+     */
+    public static Measured measure(String sphere, String renderer, int count, int jobs, int width, int height,
+            int memoryMegabytes) throws IOException, InterruptedException, Unavailable {
         Sandbox sandbox;
         try {
             sandbox = Sandbox.confined();
@@ -68,7 +80,8 @@ public final class CohortTiming {
         try {
             long start = System.nanoTime();
             Grading grading = Grading.prepare(Files.createDirectory(work.resolve("grading")), null,
-                    new Grading.Limits(width, height, Duration.ofSeconds(60), 512, GradeCommand.ReferenceChoice.either));
+                    new Grading.Limits(width, height, Duration.ofSeconds(60), memoryMegabytes,
+                            GradeCommand.ReferenceChoice.either));
             CohortGrade.Done done = new CohortGrade(grading, sandbox, jobs, new ResultStore(report.resolve("state")),
                     new PrintWriter(Writer.nullWriter()), false).run(submissions, work);
             double wall = (System.nanoTime() - start) / 1e9;

@@ -28,6 +28,10 @@ import picocli.CommandLine.Spec;
                     + "rendering run in a separate Java process inside a bubblewrap sandbox, with time, memory and "
                     + "process limits. A failing scene is explained: the difference figures, the closest entry of "
                     + "the diagnose catalogue, and a heat map (not for hidden scenes).",
+            "With --submissions it grades a whole cohort from Moodle's download: every submission in a sandbox of "
+                    + "its own, several at once, into grades.csv (Moodle's grading worksheet), a feedback page per "
+                    + "student and index.html. Each result is kept as soon as it is known: a grade that is stopped "
+                    + "loses nothing, and running it again grades only what is new or changed.",
             "Trust: inside the sandbox the student's code sees no file of yours but the scenes, has no network and "
                     + "cannot outlive the grade. It needs Linux and the bubblewrap package; --no-sandbox runs the "
                     + "code with your permissions instead."},
