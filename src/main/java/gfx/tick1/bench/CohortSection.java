@@ -69,7 +69,7 @@ final class CohortSection {
                 | wall time per submission (whole grade / submissions) | %.3f |
                 | whole grade, wall | %.1f |
                 | median per submission: compile (the sandbox, the JVM's start, javac) | %.3f |
-                | median per submission: render (tick1.xml in the compiler's JVM, then the hidden scene in a JVM of its own) | %.3f |
+                | median per submission: render (tick1.xml in the compiler's JVM, the hidden scene in another) | %.3f |
                 | median per submission: compare (with the references, explanations and images of failures) | %.3f |
                 | median per submission: total, one job's view | %.3f |
 

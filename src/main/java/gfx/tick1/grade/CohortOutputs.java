@@ -55,7 +55,8 @@ final class CohortOutputs {
     static void writeFeedback(List<StudentResult> results, List<Path> images, Path report) throws IOException {
         for (int i = 0; i < results.size(); i++) {
             StudentResult result = results.get(i);
-            Path folder = Files.createDirectories(report.resolve("feedback").resolve(safe(result.submission().folder())));
+            Path folder = Files.createDirectories(
+                    report.resolve("feedback").resolve(safe(result.submission().folder())));
             StringBuilder page = new StringBuilder("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
                     + "<title>Tick 1 feedback</title></head><body>\n<h1>Tick 1: ")
                     .append(result.passed() ? "passed" : "not yet passed").append("</h1>\n<p>")

@@ -72,7 +72,8 @@ public final class CohortTiming {
         List<Submission> submissions = new ArrayList<>();
         for (int i = 0; i < count; i++) {
             submissions.add(new Submission("student-" + i, Integer.toString(i), "Student " + i,
-                    new SourceFile("Sphere.java", (sphere + "\n// student " + i + "\n").getBytes(StandardCharsets.UTF_8)),
+                    new SourceFile("Sphere.java",
+                            (sphere + "\n// student " + i + "\n").getBytes(StandardCharsets.UTF_8)),
                     new SourceFile("Renderer.java", renderer.getBytes(StandardCharsets.UTF_8)), null));
         }
         Path work = Files.createTempDirectory("tick1-grade");

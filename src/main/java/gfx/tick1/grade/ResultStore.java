@@ -45,7 +45,7 @@ final class ResultStore {
 
     private final Path folder;
 
-    /** The store in {@code folder}, made if need be; folders left half-written by a run that was stopped are deleted. */
+    /** The store in {@code folder}, made if need be; what a stopped run left half-written is deleted. */
     ResultStore(Path folder) throws IOException {
         this.folder = Files.createDirectories(folder);
         try (DirectoryStream<Path> entries = Files.newDirectoryStream(folder, WRITING + "*")) {
@@ -116,7 +116,8 @@ final class ResultStore {
             for (int i = 0; i < count; i++) {
                 String at = "scene." + i + ".";
                 String explanation = p.getProperty(at + "explanation");
-                scenes.add(new SceneResult(p.getProperty(at + "name"), Boolean.parseBoolean(p.getProperty(at + "hidden")),
+                scenes.add(new SceneResult(p.getProperty(at + "name"),
+                        Boolean.parseBoolean(p.getProperty(at + "hidden")),
                         Boolean.parseBoolean(p.getProperty(at + "passed")),
                         explanation.isEmpty() ? List.of() : explanation.lines().toList(),
                         orNull(p.getProperty(at + "heatMap")), orNull(p.getProperty(at + "yours")),

@@ -279,7 +279,8 @@ final class SubmissionGrader {
             String which = "the reference", other = "";
             if (handout != null && robust != null && !referencesAgree) {
                 which = handoutMatched ? "the handout-arithmetic reference" : "the robust reference";
-                other = "; the " + (handoutMatched ? "robust" : "handout-arithmetic") + " reference differs on this scene";
+                other = "; the " + (handoutMatched ? "robust" : "handout-arithmetic")
+                        + " reference differs on this scene";
             }
             out.println(scene.name() + ": PASS (identical to " + which + ", "
                     + image.getWidth() * image.getHeight() + " pixels" + other + ")");

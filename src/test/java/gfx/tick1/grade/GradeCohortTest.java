@@ -107,7 +107,8 @@ class GradeCohortTest {
         twice.put("old/Sphere.java", correct.sphere().getBytes(StandardCharsets.UTF_8));
         students.add(new Student("Two Spheres", id++, twice, false));
         students.add(new Student("Latin One", id++, Map.of("Sphere.java", correct.sphere().getBytes(
-                StandardCharsets.UTF_8), "Renderer.java", correct.renderer().replace("// The colour", "// Th\u00e9 colour")
+                StandardCharsets.UTF_8), "Renderer.java",
+                correct.renderer().replace("// The colour", "// Th\u00e9 colour")
                 .getBytes(StandardCharsets.ISO_8859_1)), false));
         return students;
     }
