@@ -101,7 +101,9 @@ final class CohortCommand {
         Path report = options.reportFolder();
         List<StudentResult> results = done.results();
         try {
-            CohortOutputs.writeFeedback(results, done.images(), report);
+            CohortOutputs.placeImages(results, done.images(), report);
+            // The gradebook, the feedback pages and the cohort's page, from every result.
+            CohortOutputs.writeFeedback(results, report);
             CohortOutputs.writeGrades(results, report, options.maxGrade(), options.perScene());
             CohortOutputs.writeIndex(results, report);
         } catch (IOException e) {

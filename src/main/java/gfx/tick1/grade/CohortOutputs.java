@@ -51,12 +51,35 @@ final class CohortOutputs {
         writeAtomically(report.resolve("grades.csv"), csv.toString());
     }
 
-    /** Writes feedback/FOLDER/feedback.html for each result, with its images copied from {@code images}. */
-    static void writeFeedback(List<StudentResult> results, List<Path> images, Path report) throws IOException {
+    /** The feedback folder of {@code result} in {@code report}: feedback/ and the download's folder name. */
+    static Path feedbackFolder(Path report, StudentResult result) {
+        return report.resolve("feedback").resolve(safe(result.submission().folder()));
+    }
+
+    /**
+     * Copies each result's images (the files its scene results name) from the folder where its
+     * result is stored, {@code images} (in the same order; null for none), into its feedback folder.
+     */
+    static void placeImages(List<StudentResult> results, List<Path> images, Path report) throws IOException {
         for (int i = 0; i < results.size(); i++) {
-            StudentResult result = results.get(i);
-            Path folder = Files.createDirectories(
-                    report.resolve("feedback").resolve(safe(result.submission().folder())));
+            Path folder = Files.createDirectories(feedbackFolder(report, results.get(i)));
+            for (SceneResult scene : results.get(i).scenes()) {
+                for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
+                    if (image != null && images.get(i) != null) {
+                        Path temporary = writing(folder.resolve(image));
+                        Files.copy(images.get(i).resolve(image), temporary, StandardCopyOption.REPLACE_EXISTING);
+                        Files.move(temporary, folder.resolve(image), StandardCopyOption.REPLACE_EXISTING,
+                                StandardCopyOption.ATOMIC_MOVE);
+                    }
+                }
+            }
+        }
+    }
+
+    /** Writes feedback/FOLDER/feedback.html for each result, beside the images {@link #placeImages} put there. */
+    static void writeFeedback(List<StudentResult> results, Path report) throws IOException {
+        for (StudentResult result : results) {
+            Path folder = Files.createDirectories(feedbackFolder(report, result));
             StringBuilder page = new StringBuilder("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
                     + "<title>Tick 1 feedback</title></head><body>\n<h1>Tick 1: ")
                     .append(result.passed() ? "passed" : "not yet passed").append("</h1>\n<p>")
@@ -68,9 +91,7 @@ final class CohortOutputs {
                     page.append("<pre>").append(html(String.join("\n", scene.explanation()))).append("</pre>\n");
                 }
                 for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
-                    if (image != null && images.get(i) != null) {
-                        Files.copy(images.get(i).resolve(image), folder.resolve(image),
-                                StandardCopyOption.REPLACE_EXISTING);
+                    if (image != null) {
                         page.append("<img src=\"").append(html(image)).append("\" alt=\"").append(html(image))
                                 .append("\">\n");
                     }
@@ -113,9 +134,14 @@ final class CohortOutputs {
         return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
     }
 
+    /** The temporary file beside {@code target} that is renamed over it once complete. */
+    private static Path writing(Path target) {
+        return target.resolveSibling("." + target.getFileName() + ".writing");
+    }
+
     /** Writes {@code text} to a temporary file beside {@code target}, then renames it over the target. */
     static void writeAtomically(Path target, String text) throws IOException {
-        Path temporary = target.resolveSibling("." + target.getFileName() + ".writing");
+        Path temporary = writing(target);
         Files.writeString(temporary, text, StandardCharsets.UTF_8);
         Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
     }
