@@ -37,11 +37,14 @@ final class CohortSection {
             log.printf("grading a cohort of %d correct solutions, %d at a time%n", count, jobs);
             log.flush();
             try {
+                String loadBefore = loadAverage();
                 CohortTiming.Measured m = CohortTiming.measure(
                         Files.readString(SOLUTION.resolve("Sphere.java"), StandardCharsets.UTF_8),
                         Files.readString(SOLUTION.resolve("Renderer.java"), StandardCharsets.UTF_8),
                         count, jobs, WIDTH, HEIGHT);
-                section = markdown(m);
+                section = markdown(m) + "\nThe machine's load average (1 minute) was " + loadBefore
+                        + " before the grade and " + loadAverage() + " after it: other work on the machine slows "
+                        + "every phase.\n";
             } catch (CohortTiming.Unavailable e) {
                 section = heading() + "Not measured: " + e.getMessage() + ".\n";
             } catch (InterruptedException e) {
@@ -50,6 +53,15 @@ final class CohortSection {
             }
         }
         Files.writeString(report, "\n" + section, StandardCharsets.UTF_8, StandardOpenOption.APPEND);
+    }
+
+    /** The first figure of /proc/loadavg, or "unknown" where there is none. */
+    private static String loadAverage() {
+        try {
+            return Files.readString(Path.of("/proc/loadavg")).split(" ")[0];
+        } catch (IOException | RuntimeException e) {
+            return "unknown";
+        }
     }
 
     private static String heading() {
