@@ -200,7 +200,7 @@ public final class GradeCommand implements Callable<Integer> {
             return "--jobs " + jobs + ": must be from 1 to " + Sandbox.MOST_JOBS;
         }
         if (!(maxGrade > 0 && maxGrade <= 1_000_000)) {
-            return "--max-grade " + maxGrade + ": must be more than 0";
+            return "--max-grade " + maxGrade + ": must be more than 0 and at most 1000000";
         }
         if (!(timeLimitSeconds > 0 && timeLimitSeconds <= 3600)) {
             return "--time-limit " + timeLimitSeconds + ": must be more than 0 and at most 3600 seconds";

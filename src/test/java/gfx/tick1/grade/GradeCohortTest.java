@@ -15,6 +15,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
@@ -291,6 +292,39 @@ class GradeCohortTest {
         try (Stream<Path> left = Files.list(state)) {
             assertThat(left.map(p -> p.getFileName().toString())).as("half-written results")
                     .noneMatch(name -> name.startsWith("."));
+        }
+    }
+
+    @Test
+    void sigtermStopsTheGradeStoresNothingItCutShortAndLeavesNoWorkFolder(@TempDir Path dir) throws Exception {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        List<Student> looping = List.of(new Student("Loops", 1, files(StudentSolution.correct().editSphere(NEAR_ROOT,
+                NEAR_ROOT + " while (s > 0) { }")), false));
+        Path report = dir.resolve("report");
+        Path temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx--x--x")));
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
+                .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName()));
+        command.addAll(List.of(gradeArguments(moodleZip(dir.resolve("a.zip"), looping), report,
+                "--time-limit", "600")));
+        Process grade = new ProcessBuilder(command).redirectErrorStream(true)
+                .redirectOutput(dir.resolve("grade.log").toFile()).start();
+        // Wait (at most two minutes) for the student's code to be running.
+        for (int i = 0; i < 1200 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
+                .contains("StudentHarness render")); i++) {
+            Thread.sleep(100);
+        }
+        List<ProcessHandle> running = grade.descendants().toList();
+        grade.destroy();   // SIGTERM
+        assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+        for (ProcessHandle process : running) {
+            process.onExit().get(30, TimeUnit.SECONDS);
+        }
+        assertThat(storedResults(report.resolve(CohortCommand.STATE_FOLDER))).as("results of a grade cut short")
+                .isEmpty();
+        try (Stream<Path> left = Files.list(temporary)) {
+            assertThat(left).as("work folders").isEmpty();
         }
     }
 
