@@ -258,7 +258,6 @@ class GradeCohortTest {
 
     @Test
     void aGradeKilledMidRunKeepsEveryFinishedResultWholeAndTheNextRunFinishesIt(@TempDir Path dir) throws Exception {
-        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
         StudentSolution correct = StudentSolution.correct();
         List<Student> students = new ArrayList<>();
         for (int i = 0; i < 6; i++) {
@@ -267,14 +266,7 @@ class GradeCohortTest {
         }
         Path zip = moodleZip(dir.resolve("download.zip"), students);
         Path report = dir.resolve("report");
-        Path temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
-                PosixFilePermissions.fromString("rwx--x--x")));
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
-                .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
-                Tick1.class.getName()));
-        command.addAll(List.of(gradeArguments(zip, report, "--jobs", "1")));
-        Process grade = new ProcessBuilder(command).redirectErrorStream(true)
-                .redirectOutput(dir.resolve("grade.log").toFile()).start();
+        Process grade = gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, "--jobs", "1"));
         // Wait (at most two minutes) for the first result to be stored, then pull the plug.
         Path state = report.resolve(CohortCommand.STATE_FOLDER);
         for (int i = 0; i < 1200 && storedResults(state).isEmpty() && grade.isAlive(); i++) {
@@ -297,19 +289,11 @@ class GradeCohortTest {
 
     @Test
     void sigtermStopsTheGradeStoresNothingItCutShortAndLeavesNoWorkFolder(@TempDir Path dir) throws Exception {
-        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
         List<Student> looping = List.of(new Student("Loops", 1, files(StudentSolution.correct().editSphere(NEAR_ROOT,
                 NEAR_ROOT + " while (s > 0) { }")), false));
         Path report = dir.resolve("report");
-        Path temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
-                PosixFilePermissions.fromString("rwx--x--x")));
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
-                .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
-                Tick1.class.getName()));
-        command.addAll(List.of(gradeArguments(moodleZip(dir.resolve("a.zip"), looping), report,
-                "--time-limit", "600")));
-        Process grade = new ProcessBuilder(command).redirectErrorStream(true)
-                .redirectOutput(dir.resolve("grade.log").toFile()).start();
+        Process grade = gradeInAJvmOfItsOwn(dir, gradeArguments(moodleZip(dir.resolve("a.zip"), looping), report,
+                "--time-limit", "600"));
         // Wait (at most two minutes) for the student's code to be running.
         for (int i = 0; i < 1200 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
                 .contains("StudentHarness render")); i++) {
@@ -323,9 +307,26 @@ class GradeCohortTest {
         }
         assertThat(storedResults(report.resolve(CohortCommand.STATE_FOLDER))).as("results of a grade cut short")
                 .isEmpty();
-        try (Stream<Path> left = Files.list(temporary)) {
+        try (Stream<Path> left = Files.list(dir.resolve("tmp"))) {
             assertThat(left).as("work folders").isEmpty();
         }
+    }
+
+    /**
+     * Starts {@code tick1 ARGS} in a JVM of its own, printing into {@code dir}/grade.log, with
+     * {@code dir}/tmp as its temporary folder (where its work folder goes), which the sandbox's
+     * users can pass through.
+     */
+    private static Process gradeInAJvmOfItsOwn(Path dir, String... args) throws IOException {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        Path temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx--x--x")));
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
+                .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName()));
+        command.addAll(List.of(args));
+        return new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve("grade.log").toFile())
+                .start();
     }
 
     /** The results a grade has stored: each a folder named by its key, whole. */
