@@ -94,7 +94,8 @@ public final class GradeCommand implements Callable<Integer> {
 
     @Option(names = "--report", paramLabel = "DIR", defaultValue = "grade-report",
             description = "Where to write the images of failing scenes: the student's, the expected one and a heat "
-                    + "map (default: ${DEFAULT-VALUE}).")
+                    + "map; with --submissions, the whole report and, in its state folder, every result so far "
+                    + "(default: ${DEFAULT-VALUE}).")
     private Path reportFolder;
 
     @Option(names = "--time-limit", paramLabel = "SECONDS", defaultValue = "60",
