@@ -112,6 +112,7 @@ public final class BenchCommand implements Callable<Integer> {
 
         BenchReport report = new BenchReport(quick, cores, results, png, runs.describe(), whole);
         report.write(out);
+        CohortSection.appendTo(out.resolve("report.md"), quick, log);
         log.printf("Wrote %s, %s and %s%n", out.resolve("report.md"), out.resolve("results.csv"),
                 out.resolve("speed-vs-error.png"));
         return EXIT_OK;

@@ -53,20 +53,40 @@ final class Sandbox {
     record Bind(Path outside, String inside, boolean writable) {
     }
 
+    /** How many grades one program may run at once, each under a user of its own: see {@link #forJob}. */
+    static final int MOST_JOBS = 64;
+    /** The distance between the user ids of two jobs: more than the process ids the first one's id is made of. */
+    private static final int JOB_UID_STEP = 1_000_000;
+
     private final Path bwrap;
     private final boolean confined;
     /** The user the student's code runs as when the grader is root; -1 to keep the grader's. */
     private final int uid;
+    /** Which of the grades this program runs at once this sandbox is for: 0 for a single grade. */
+    private final int job;
 
-    private Sandbox(Path bwrap, boolean confined, int uid) {
+    private Sandbox(Path bwrap, boolean confined, int uid, int job) {
         this.bwrap = bwrap;
         this.confined = confined;
         this.uid = uid;
+        this.job = job;
+    }
+
+    /**
+     * The same sandbox for the {@code job}-th of the grades this program runs at the same time
+     * (0 to {@link #MOST_JOBS} - 1): under a user of its own, so that one student's processes
+     * never count against another's process limit nor can signal them, and started on the next core.
+     */
+    Sandbox forJob(int job) {
+        if (job < 0 || job >= MOST_JOBS) {
+            throw new IllegalArgumentException("job " + job + ": must be from 0 to " + (MOST_JOBS - 1));
+        }
+        return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + job * JOB_UID_STEP, job);
     }
 
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
     static Sandbox unconfined() {
-        return new Sandbox(null, false, -1);
+        return new Sandbox(null, false, -1, 0);
     }
 
     /**
@@ -88,7 +108,8 @@ final class Sandbox {
         }
         // A user of its own for each grade running at the same time (the grader's process id is
         // unique), far above the ranges of real users and of containers' subordinate ids.
-        Sandbox sandbox = new Sandbox(bwrap, true, root ? FIRST_UID + (int) (ProcessHandle.current().pid() % 1_000_000) : -1);
+        Sandbox sandbox = new Sandbox(bwrap, true,
+                root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0);
         sandbox.probe();
         return sandbox;
     }
@@ -154,7 +175,7 @@ final class Sandbox {
             return command;
         }
         List<String> wrapped = new ArrayList<>();
-        String core = oneCore ? oneAllowedCore() : null;
+        String core = oneCore ? oneAllowedCore(job) : null;
         if (core != null) {
             wrapped.addAll(List.of(TASKSET.toString(), "--cpu-list", core));
         }
@@ -238,9 +259,10 @@ final class Sandbox {
 
     /**
      * One of the cores this process may run on (from /proc/self/status), chosen by the process id
-     * so that grades running at the same time spread over the cores; null if that cannot be told.
+     * and the job so that grades running at the same time spread over the cores; null if that
+     * cannot be told.
      */
-    private static String oneAllowedCore() {
+    private static String oneAllowedCore(int job) {
         if (!Files.isExecutable(TASKSET)) {
             return null;
         }
@@ -256,7 +278,7 @@ final class Sandbox {
                         }
                     }
                     return cores.isEmpty() ? null
-                            : Integer.toString(cores.get((int) (ProcessHandle.current().pid() % cores.size())));
+                            : Integer.toString(cores.get((int) ((ProcessHandle.current().pid() + job) % cores.size())));
                 }
             }
         } catch (IOException | RuntimeException e) {

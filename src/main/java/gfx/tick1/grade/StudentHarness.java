@@ -23,6 +23,10 @@ import javax.imageio.ImageIO;
  *       in SOURCES ({@code Sphere.java} and {@code Renderer.java} reported under the names given,
  *       the others as starter code) into {@code OUTPUT/classes}; exits 0, or writes the errors,
  *       separated by NUL characters, to {@code OUTPUT/errors} and exits 1.
+ *   <li>{@code render --compile SOURCES SPHERE-NAME RENDERER-NAME OUTPUT WIDTH HEIGHT SCENE...}:
+ *       compiles as {@code compile} does, logs "compiled" in {@code OUTPUT/progress} before any
+ *       code of the student's is loaded, and renders as {@code render} does with
+ *       {@code OUTPUT/classes}: one JVM start for both.
  *   <li>{@code render CLASSES OUTPUT WIDTH HEIGHT SCENE...}: for each scene, loads it with the
  *       starter code's {@code SceneLoader}, renders it with the student's {@code Renderer} and
  *       writes {@code OUTPUT/<index>.png}, or {@code OUTPUT/<index>.error} with what went wrong.
@@ -40,6 +44,10 @@ public final class StudentHarness {
     static final String CLASSES_FOLDER = "classes";
     /** Exit status of {@code compile} when the code does not compile. */
     static final int DOES_NOT_COMPILE = 3;
+    /** The option of {@code render} that compiles first. */
+    static final String COMPILE_FIRST = "--compile";
+    /** The line of the progress log that says compiling is over and the student's code may run. */
+    static final String COMPILED = "compiled";
 
     private StudentHarness() {
     }
@@ -47,6 +55,17 @@ public final class StudentHarness {
     public static void main(String[] args) throws Exception {
         if (args[0].equals("compile")) {
             System.exit(compile(Path.of(args[1]), Path.of(args[2]), args[3], args[4]));
+        }
+        if (args[1].equals(COMPILE_FIRST)) {
+            Path output = Path.of(args[5]);
+            int status = compile(Path.of(args[2]), output, args[3], args[4]);
+            if (status != 0) {
+                System.exit(status);
+            }
+            log(output.resolve(PROGRESS_FILE), COMPILED);
+            render(output.resolve(CLASSES_FOLDER), output, Integer.parseInt(args[6]), Integer.parseInt(args[7]),
+                    List.of(args).subList(8, args.length));
+            return;
         }
         render(Path.of(args[1]), Path.of(args[2]), Integer.parseInt(args[3]), Integer.parseInt(args[4]),
                 List.of(args).subList(5, args.length));

@@ -1,0 +1,161 @@
+package gfx.tick1.grade;
+
+import gfx.tick1.grade.cohort.CohortInputException;
+import gfx.tick1.grade.cohort.CohortReport;
+import gfx.tick1.grade.cohort.StudentResult;
+import gfx.tick1.grade.cohort.Submission;
+import gfx.tick1.grade.cohort.Submissions;
+import gfx.tick1.grade.cohort.Worksheet;
+import gfx.tick1.io.IoErrors;
+import gfx.tick1.scene.SceneException;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.ZonedDateTime;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
+
+/**
+ * {@code tick1 grade --submissions}: reads the cohort's download, grades every submission
+ * ({@link CohortGrade}), and writes grades.csv, the feedback folders and index.html from every
+ * result, those of earlier runs included.
+ */
+final class CohortCommand {
+
+    /** The folder inside the report folder where each result is kept as soon as it is known. */
+    static final String STATE_FOLDER = "state";
+
+    /** The gradebook in the report folder, in the form of Moodle's grading worksheet. */
+    static final String GRADES = "grades.csv";
+
+    private final GradeCommand options;
+    private final Sandbox sandbox;
+    private final PrintWriter out;
+    private final PrintWriter err;
+
+    CohortCommand(GradeCommand options, Sandbox sandbox, PrintWriter out, PrintWriter err) {
+        this.options = options;
+        this.sandbox = sandbox;
+        this.out = out;
+        this.err = err;
+    }
+
+    int call() throws IOException, InterruptedException {
+        List<Submission> submissions;
+        try {
+            submissions = Submissions.read(options.submissions());
+            if (options.worksheet() != null && !Files.isRegularFile(options.worksheet())) {
+                throw new java.nio.file.NoSuchFileException(options.worksheet().toString());
+            }
+        } catch (IOException e) {
+            err.println("tick1 grade: " + IoErrors.describe(e));
+            return GradeCommand.EXIT_USAGE;
+        }
+        Path work = Files.createTempDirectory("tick1-grade");
+        AtomicReference<CohortGrade> running = new AtomicReference<>();
+        // Ctrl-C or SIGTERM: stop the students' processes and delete the work folder. Finished
+        // results are in the store already; the one being stored is renamed into place whole or
+        // not at all.
+        Thread cleanUp = new Thread(() -> {
+            CohortGrade cohort = running.get();
+            if (cohort != null) {
+                cohort.stop();
+            }
+            GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
+        });
+        Runtime.getRuntime().addShutdownHook(cleanUp);
+        try {
+            Grading grading;
+            ResultStore store;
+            try {
+                sandbox.checkReachable(work);
+                grading = Grading.prepare(Files.createDirectory(work.resolve("grading")), options.scenesFolder(),
+                        options.limits());
+            } catch (SceneException e) {
+                err.println("tick1 grade: " + e.getMessage());
+                return GradeCommand.EXIT_USAGE;
+            } catch (IOException e) {
+                err.println("tick1 grade: " + IoErrors.describe(e));
+                return GradeCommand.EXIT_USAGE;
+            }
+            try {
+                store = new ResultStore(Files.createDirectories(options.reportFolder()).resolve(STATE_FOLDER));
+            } catch (IOException e) {
+                err.println("tick1 grade: " + options.reportFolder() + ": cannot write the report: "
+                        + IoErrors.describe(e));
+                return GradeCommand.EXIT_CANNOT_WRITE;
+            }
+            CohortGrade cohort = new CohortGrade(grading, sandbox, options.jobs(), store, err,
+                    System.console() != null);
+            running.set(cohort);
+            CohortGrade.Done done = cohort.run(submissions, work);
+            return report(done);
+        } finally {
+            CohortGrade cohort = running.getAndSet(null);
+            if (cohort != null) {
+                cohort.stop();
+            }
+            GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
+            try {
+                Runtime.getRuntime().removeShutdownHook(cleanUp);
+            } catch (IllegalStateException e) {
+                // The JVM is shutting down: the hook runs (or ran) anyway.
+            }
+        }
+    }
+
+    /** Writes grades.csv, the feedback folders and index.html from every result, and says what was done. */
+    private int report(CohortGrade.Done done) {
+        Path report = options.reportFolder();
+        List<StudentResult> results = CohortOutputs.withPlainFolders(done.results());
+        try {
+            CohortOutputs.placeImages(results, done.images(), report);
+            // The gradebook first: the cohort's page links to it when it is there.
+            writeGrades(results, report);
+            CohortReport.write(report, results,
+                    result -> Worksheet.grade(CohortOutputs.grade(result, options.maxGrade(), options.perScene())));
+        } catch (CohortInputException e) {
+            err.println("tick1 grade: " + e.getMessage());
+            return GradeCommand.EXIT_USAGE;
+        } catch (IOException e) {
+            err.println("tick1 grade: " + report + ": cannot write the report: " + IoErrors.describe(e));
+            return GradeCommand.EXIT_CANNOT_WRITE;
+        }
+        long passed = results.stream().filter(StudentResult::passed).count();
+        out.println("Graded " + SubmissionGrader.count(results.size(), "submission") + " ("
+                + (results.size() - done.stored() - done.ungraded().size()) + " now, " + done.stored()
+                + " from earlier runs): " + passed + " passed, " + (results.size() - passed) + " failed.");
+        out.println("Grades: " + report.resolve(GRADES) + "; report: " + report.resolve("index.html"));
+        for (String folder : done.ungraded()) {
+            err.println("tick1 grade: " + folder + ": not graded: its images could not be stored in " + report);
+        }
+        return done.ungraded().isEmpty() ? GradeCommand.EXIT_PASS : GradeCommand.EXIT_CANNOT_WRITE;
+    }
+
+    /**
+     * grades.csv: the worksheet given with --worksheet, its Grade and Feedback comments cells filled in
+     * for the students graded (the file given is only read), or else a fresh worksheet. The students
+     * of the one without submissions, and the submissions without a row, go to standard error.
+     */
+    private void writeGrades(List<StudentResult> results, Path report) throws IOException {
+        List<Worksheet.Mark> marks = results.stream()
+                .map(result -> Worksheet.Mark.of(result,
+                        CohortOutputs.grade(result, options.maxGrade(), options.perScene())))
+                .toList();
+        if (options.worksheet() == null) {
+            CohortOutputs.writeAtomically(report.resolve(GRADES),
+                    Worksheet.fresh(marks, options.maxGrade(), ZonedDateTime.now()));
+            return;
+        }
+        Worksheet.Filled filled = Worksheet.fill(options.worksheet(), marks);
+        CohortOutputs.writeAtomically(report.resolve(GRADES), filled.bytes());
+        for (String student : filled.withoutSubmission()) {
+            err.println("tick1 grade: " + options.worksheet() + ": " + student + " has no submission");
+        }
+        for (String student : filled.withoutRow()) {
+            err.println("tick1 grade: " + options.worksheet() + ": no row for " + student
+                    + ": graded in the report, but not in grades.csv");
+        }
+    }
+}

@@ -1,0 +1,98 @@
+package gfx.tick1.grade;
+
+import gfx.tick1.grade.cohort.StudentResult;
+import gfx.tick1.grade.cohort.StudentResult.SceneResult;
+import gfx.tick1.grade.cohort.Submission;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * The grader's part of a cohort's report folder: each student's mark, and the images of the
+ * failing scenes placed in the student's feedback folder, where the pages of
+ * {@link gfx.tick1.grade.cohort.CohortReport} show them. Each file is written beside its place and
+ * renamed into it, so that none is ever half-written.
+ */
+final class CohortOutputs {
+
+    private CohortOutputs() {
+    }
+
+    /** The mark for {@code result}: the pass mark, or with {@code perScene} the share of scenes passed of it. */
+    static double grade(StudentResult result, double maxGrade, boolean perScene) {
+        if (perScene) {
+            return result.scenesTotal() == 0 ? 0 : maxGrade * result.scenesPassed() / result.scenesTotal();
+        }
+        return result.passed() ? maxGrade : 0;
+    }
+
+    /** The feedback folder of {@code result} in {@code report}: feedback/ and the download's folder name. */
+    static Path feedbackFolder(Path report, StudentResult result) {
+        return report.resolve("feedback").resolve(safe(result.submission().folder()));
+    }
+
+    /**
+     * Copies each result's images (the files its scene results name) from the folder where its
+     * result is stored, {@code images} (in the same order; null for none), into its feedback folder.
+     */
+    static void placeImages(List<StudentResult> results, List<Path> images, Path report) throws IOException {
+        for (int i = 0; i < results.size(); i++) {
+            Path folder = Files.createDirectories(feedbackFolder(report, results.get(i)));
+            for (SceneResult scene : results.get(i).scenes()) {
+                for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
+                    if (image != null && images.get(i) != null) {
+                        Path temporary = writing(folder.resolve(image));
+                        Files.copy(images.get(i).resolve(image), temporary, StandardCopyOption.REPLACE_EXISTING);
+                        Files.move(temporary, folder.resolve(image), StandardCopyOption.REPLACE_EXISTING,
+                                StandardCopyOption.ATOMIC_MOVE);
+                    }
+                }
+            }
+        }
+    }
+
+    /**
+     * The results with each submission's folder name made one plain path element, different from
+     * the others': a name from a download can hold a backslash or a control character, and after
+     * that change two names could meet. Moodle's own names pass unchanged.
+     */
+    static List<StudentResult> withPlainFolders(List<StudentResult> results) {
+        Set<String> taken = new HashSet<>();
+        List<StudentResult> plain = new ArrayList<>();
+        for (StudentResult result : results) {
+            Submission submission = result.submission();
+            String folder = safe(submission.folder());
+            for (int n = 2; !taken.add(folder); n++) {
+                folder = safe(submission.folder()) + "_" + n;
+            }
+            plain.add(new StudentResult(new Submission(folder, submission.id(), submission.fullName(),
+                    submission.sphere(), submission.renderer(), submission.problem()), result.passed(),
+                    result.scenesPassed(), result.scenesTotal(), result.diagnosis(), result.reason(), result.scenes(),
+                    result.time()));
+        }
+        return plain;
+    }
+
+    /** A folder name from the download, as a single safe path element. */
+    static String safe(String folder) {
+        String name = folder.replaceAll("[/\\\\\\x00-\\x1f]", "_");
+        return name.isEmpty() || name.equals(".") || name.equals("..") ? "_" + name : name;
+    }
+
+    /** The temporary file beside {@code target} that is renamed over it once complete. */
+    private static Path writing(Path target) {
+        return target.resolveSibling("." + target.getFileName() + ".writing");
+    }
+
+    /** Writes {@code bytes} to a temporary file beside {@code target}, then renames it over the target. */
+    static void writeAtomically(Path target, byte[] bytes) throws IOException {
+        Path temporary = writing(target);
+        Files.write(temporary, bytes);
+        Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+    }
+}

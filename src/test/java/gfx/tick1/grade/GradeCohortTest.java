@@ -1,0 +1,389 @@
+package gfx.tick1.grade;
+
+import gfx.tick1.grade.cohort.Worksheet;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gfx.tick1.CliRun;
+import gfx.tick1.Tick1;
+import gfx.tick1.diagnose.Variant;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import java.util.zip.ZipEntry;
+import java.util.zip.ZipOutputStream;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * {@code tick1 grade --submissions} on a generated cohort in Moodle's download form: correct
+ * solutions laid out as students lay them out, one submission for each mistake of the diagnose
+ * catalogue, and the submissions a cohort always has (a missing file, code that does not compile,
+ * an infinite loop, a cheat, a nested zip). Every row of grades.csv is checked against the grade
+ * each submission must get. One cohort is graded once for the whole class; the tests of resuming
+ * grade small cohorts of their own.
+ */
+class GradeCohortTest {
+
+    private static final String[] SMALL = {"--width", "160", "--height", "120", "--time-limit", "10"};
+    private static final String NEAR_ROOT = "double s = s1 > 0 ? s1 : s2;";
+
+    @TempDir
+    static Path shared;
+
+    /** One student of the generated cohort: the folder Moodle gives them, their files, and the grade they must get. */
+    private record Student(String name, int id, Map<String, byte[]> files, boolean passes) {
+        String folder() {
+            return name + "_" + id + "_assignsubmission_file_";
+        }
+    }
+
+    private static List<Student> cohort;
+    private static CliRun firstRun;
+
+    @BeforeAll
+    static void gradeTheGeneratedCohort() throws IOException {
+        cohort = generatedCohort();
+        firstRun = CliRun.of(gradeArguments(moodleZip(shared.resolve("download.zip"), cohort),
+                shared.resolve("report")));
+    }
+
+    private static String[] gradeArguments(Path submissions, Path report, String... more) {
+        List<String> args = new ArrayList<>(List.of("grade", "--submissions", submissions.toString(),
+                "--report", report.toString()));
+        args.addAll(List.of(SMALL));
+        args.addAll(List.of(more));
+        return args.toArray(String[]::new);
+    }
+
+    /** About forty students: what a year of Tick 1 submissions looks like. */
+    static List<Student> generatedCohort() throws IOException {
+        List<Student> students = new ArrayList<>();
+        StudentSolution correct = StudentSolution.correct();
+        int id = 1000;
+        // Correct solutions, each a little different (as no two students' files are the same), in the layouts
+        // students use: the files alone, the kit's src/gfx/tick1 folders, and a zip inside the submission.
+        for (int i = 0; i < 6; i++) {
+            StudentSolution own = correct.editRenderer("return image;", "return image; // student " + i);
+            students.add(new Student("Correct Student " + i, id++, i % 2 == 0 ? files(own)
+                    : files("src/gfx/tick1/", own), true));
+        }
+        students.add(new Student("Zipped Twice", id++, Map.of("tick1.zip", zip(files(correct))), true));
+        students.add(new Student("Zoë Ünïcode-Ñame", id++, files(correct), true));
+        students.add(new Student("Byte Order", id++, files(new StudentSolution("\uFEFF" + correct.sphere(),
+                correct.renderer())), true));
+        // A mistake that shows only with the camera inside a sphere: the default scenes cannot see it.
+        students.add(new Student("Inside Sphere", id++, files(GradeCommandTest.HIT_REJECTED_ON_A_NEGATIVE_ROOT), true));
+        for (var mistake : GradeCommandTest.mistakes().toList()) {
+            Variant variant = (Variant) mistake.get()[0];
+            students.add(new Student("Mistake " + variant.name().replace('_', ' '), id++,
+                    files((StudentSolution) mistake.get()[1]), false));
+        }
+        Map<String, byte[]> missing = new LinkedHashMap<>(files(correct));
+        missing.remove("Renderer.java");
+        students.add(new Student("Missing Renderer", id++, missing, false));
+        students.add(new Student("Does Not Compile", id++, files(correct.editSphere(NEAR_ROOT,
+                "double s = s1 > 0 ? s1 : s2")), false));
+        students.add(new Student("Missing Method", id++, files(correct.editRenderer("k_d * Math.max(0, NdotL)",
+                "k_d * N.dotProduct(L)")), false));
+        students.add(new Student("Loops Forever", id++, files(correct.editSphere(NEAR_ROOT,
+                NEAR_ROOT + " while (s > 0) { }")), false));
+        students.add(new Student("Copies The Reference", id++, files(new StudentSolution(correct.sphere(),
+                resource("/students/attacks/copy-the-reference/Renderer.java"))), false));
+        students.add(new Student("Throws", id++, files(correct.editRenderer("L.reflectIn(N)", "L.reflectIn(null)")),
+                false));
+        students.add(new Student("Exits", id++, files(correct.editRenderer("return image;",
+                "System.exit(0); return image;")), false));
+        students.add(new Student("Other Package", id++, files(correct.editSphere("package gfx.tick1;",
+                "package tick1;")), false));
+        Map<String, byte[]> twice = new LinkedHashMap<>(files(correct));
+        twice.put("old/Sphere.java", correct.sphere().getBytes(StandardCharsets.UTF_8));
+        students.add(new Student("Two Spheres", id++, twice, false));
+        students.add(new Student("Latin One", id++, Map.of("Sphere.java", correct.sphere().getBytes(
+                StandardCharsets.UTF_8), "Renderer.java",
+                correct.renderer().replace("// The colour", "// Th\u00e9 colour")
+                .getBytes(StandardCharsets.ISO_8859_1)), false));
+        return students;
+    }
+
+    private static Map<String, byte[]> files(StudentSolution solution) {
+        return files("", solution);
+    }
+
+    private static Map<String, byte[]> files(String folder, StudentSolution solution) {
+        Map<String, byte[]> files = new LinkedHashMap<>();
+        files.put(folder + "Sphere.java", solution.sphere().getBytes(StandardCharsets.UTF_8));
+        files.put(folder + "Renderer.java", solution.renderer().getBytes(StandardCharsets.UTF_8));
+        return files;
+    }
+
+    private static String resource(String name) throws IOException {
+        try (var in = GradeCohortTest.class.getResourceAsStream(name)) {
+            assertThat(in).as(name).isNotNull();
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+    }
+
+    private static byte[] zip(Map<String, byte[]> files) throws IOException {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        try (ZipOutputStream zip = new ZipOutputStream(bytes)) {
+            for (Map.Entry<String, byte[]> file : files.entrySet()) {
+                zip.putNextEntry(new ZipEntry(file.getKey()));
+                zip.write(file.getValue());
+                zip.closeEntry();
+            }
+        }
+        return bytes.toByteArray();
+    }
+
+    /** The cohort as Moodle's "Download all submissions" zip: one folder per student. */
+    static Path moodleZip(Path zip, List<Student> students) throws IOException {
+        Map<String, byte[]> all = new LinkedHashMap<>();
+        for (Student student : students) {
+            student.files().forEach((name, bytes) -> all.put(student.folder() + "/" + name, bytes));
+        }
+        Files.write(zip, zip(all));
+        return zip;
+    }
+
+    /** grades.csv's rows after the header, by identifier. */
+    private static Map<String, List<String>> rows(Path report) throws IOException {
+        List<String> lines = Files.readString(report.resolve("grades.csv")).lines().toList();
+        assertThat(lines.get(0)).isEqualTo(String.join(",", Worksheet.HEADER));
+        Map<String, List<String>> rows = new LinkedHashMap<>();
+        for (String line : lines.subList(1, lines.size())) {
+            List<String> cells = csvCells(line);
+            rows.put(cells.get(0), cells);
+        }
+        return rows;
+    }
+
+    private static List<String> csvCells(String line) {
+        List<String> cells = new ArrayList<>();
+        StringBuilder cell = new StringBuilder();
+        boolean quoted = false;
+        for (int i = 0; i < line.length(); i++) {
+            char c = line.charAt(i);
+            if (quoted && c == '"' && i + 1 < line.length() && line.charAt(i + 1) == '"') {
+                cell.append('"');
+                i++;
+            } else if (c == '"') {
+                quoted = !quoted;
+            } else if (c == ',' && !quoted) {
+                cells.add(cell.toString());
+                cell.setLength(0);
+            } else {
+                cell.append(c);
+            }
+        }
+        cells.add(cell.toString());
+        return cells;
+    }
+
+    @Test
+    void everyStudentGetsTheGradeTheirSubmissionDeserves() throws IOException {
+        assertThat(firstRun.status()).as(firstRun.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        Map<String, List<String>> rows = rows(shared.resolve("report"));
+        assertThat(rows).as(firstRun.transcript()).hasSize(cohort.size());
+        for (Student student : cohort) {
+            List<String> row = rows.get("Participant " + student.id());
+            assertThat(row).as(student.name()).isNotNull();
+            assertThat(row.get(1)).isEqualTo(student.name());
+            assertThat(row.get(4)).as(student.name() + ": " + row.get(9)).isEqualTo(student.passes() ? "1.00" : "0.00");
+            assertThat(row.get(5)).isEqualTo("1.00");
+        }
+    }
+
+    @Test
+    void eachFailureSaysWhyInTheFeedbackCell() throws IOException {
+        Map<String, List<String>> rows = rows(shared.resolve("report"));
+        Map<String, String> reasons = new LinkedHashMap<>();
+        cohort.forEach(student -> reasons.put(student.name(), rows.get("Participant " + student.id()).get(9)));
+        assertThat(reasons.get("Correct Student 0")).isEqualTo(GradeCommand.CONGRATULATIONS);
+        assertThat(reasons.get("Missing Renderer")).contains("Renderer.java");
+        assertThat(reasons.get("Does Not Compile")).contains("does not compile", "Sphere.java:");
+        assertThat(reasons.get("Loops Forever")).contains("time limit");
+        assertThat(reasons.get("Copies The Reference")).contains("ClassNotFoundException");
+        assertThat(reasons.get("Other Package")).contains("package gfx.tick1");
+        assertThat(reasons.get("Latin One")).contains("not UTF-8");
+        assertThat(reasons.get("Mistake UNCLAMPED N DOT L")).contains("closest: " + Variant.UNCLAMPED_N_DOT_L.title());
+        assertThat(reasons.values()).allMatch(reason -> !reason.contains("\n"));
+    }
+
+    @Test
+    void aFailingStudentsFeedbackFolderHoldsThePageAndTheHeatMap() {
+        Student student = cohort.stream().filter(s -> s.name().equals("Mistake UNCLAMPED N DOT L")).findFirst()
+                .orElseThrow();
+        Path feedback = shared.resolve("report").resolve("feedback").resolve(student.folder());
+        assertThat(feedback.resolve("feedback.html")).exists();
+        assertThat(feedback.resolve("1-tick1-diff.png")).exists();
+        assertThat(feedback).isDirectoryNotContaining("glob:**/2-hidden*");
+        assertThat(shared.resolve("report").resolve("index.html")).exists();
+    }
+
+    @Test
+    void aSecondRunGradesNothingAgainAndWritesTheSameGrades() throws IOException {
+        Path report = shared.resolve("report");
+        Map<String, List<String>> before = withoutGradingTime(rows(report));
+        CliRun again = CliRun.of(gradeArguments(shared.resolve("download.zip"), report));
+        assertThat(again.status()).as(again.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(again.out()).contains("(0 now, ");
+        assertThat(withoutGradingTime(rows(report))).isEqualTo(before);
+    }
+
+    /**
+     * The rows without their "Last modified (grade)" cell: a fresh worksheet says when it was
+     * written, as Moodle wants to know when the grades it takes were made.
+     */
+    private static Map<String, List<String>> withoutGradingTime(Map<String, List<String>> rows) {
+        int column = Worksheet.HEADER.indexOf("Last modified (grade)");
+        Map<String, List<String>> without = new LinkedHashMap<>();
+        rows.forEach((id, cells) -> {
+            List<String> kept = new ArrayList<>(cells);
+            kept.remove(column);
+            without.put(id, kept);
+        });
+        return without;
+    }
+
+    @Test
+    void aChangedSubmissionIsTheOnlyOneGradedAgain(@TempDir Path dir) throws IOException {
+        StudentSolution correct = StudentSolution.correct();
+        List<Student> three = new ArrayList<>(List.of(
+                new Student("First", 1, files(correct), true),
+                new Student("Second", 2, files(correct.editRenderer("L.reflectIn(N)", "N.reflectIn(L)")), false),
+                new Student("Third", 3, files("src/", correct), true)));
+        Path report = dir.resolve("report");
+        CliRun first = CliRun.of(gradeArguments(moodleZip(dir.resolve("a.zip"), three), report));
+        assertThat(first.out()).as(first.transcript()).contains("(3 now, 0 from earlier runs)");
+        three.set(1, new Student("Second", 2, files(correct.editRenderer("return image;", "return image; // mended")),
+                true));
+        CliRun second = CliRun.of(gradeArguments(moodleZip(dir.resolve("b.zip"), three), report));
+        assertThat(second.out()).as(second.transcript()).contains("(1 now, 2 from earlier runs)");
+        assertThat(rows(report).values()).extracting(row -> row.get(4)).containsOnly("1.00");
+    }
+
+    @Test
+    void aGradeKilledMidRunKeepsEveryFinishedResultWholeAndTheNextRunFinishesIt(@TempDir Path dir) throws Exception {
+        StudentSolution correct = StudentSolution.correct();
+        List<Student> students = new ArrayList<>();
+        for (int i = 0; i < 6; i++) {
+            students.add(new Student("Student " + i, 100 + i, files(correct.editRenderer("return image;",
+                    "return image; // " + i)), true));
+        }
+        Path zip = moodleZip(dir.resolve("download.zip"), students);
+        Path report = dir.resolve("report");
+        Process grade = gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, "--jobs", "1"));
+        // Wait (at most two minutes) for the first result to be stored, then pull the plug.
+        Path state = report.resolve(CohortCommand.STATE_FOLDER);
+        for (int i = 0; i < 1200 && storedResults(state).isEmpty() && grade.isAlive(); i++) {
+            Thread.sleep(100);
+        }
+        grade.destroyForcibly().waitFor();
+        int kept = storedResults(state).size();
+        assertThat(kept).as(Files.readString(dir.resolve("grade.log"))).isBetween(1, students.size() - 1);
+        assertThat(report.resolve("grades.csv")).as("no grades.csv before the end").doesNotExist();
+
+        CliRun again = CliRun.of(gradeArguments(zip, report));
+        assertThat(again.status()).as(again.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(again.out()).contains("(" + (students.size() - kept) + " now, " + kept + " from earlier runs)");
+        assertThat(rows(report).values()).hasSize(students.size()).extracting(row -> row.get(4)).containsOnly("1.00");
+        try (Stream<Path> left = Files.list(state)) {
+            assertThat(left.map(p -> p.getFileName().toString())).as("half-written results")
+                    .noneMatch(name -> name.startsWith("."));
+        }
+    }
+
+    @Test
+    void sigtermStopsTheGradeStoresNothingItCutShortAndLeavesNoWorkFolder(@TempDir Path dir) throws Exception {
+        List<Student> looping = List.of(new Student("Loops", 1, files(StudentSolution.correct().editSphere(NEAR_ROOT,
+                NEAR_ROOT + " while (s > 0) { }")), false));
+        Path report = dir.resolve("report");
+        Process grade = gradeInAJvmOfItsOwn(dir, gradeArguments(moodleZip(dir.resolve("a.zip"), looping), report,
+                "--time-limit", "600"));
+        // Wait (at most two minutes) for the student's code to be running.
+        for (int i = 0; i < 1200 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
+                .contains("StudentHarness render")); i++) {
+            Thread.sleep(100);
+        }
+        List<ProcessHandle> running = grade.descendants().toList();
+        grade.destroy();   // SIGTERM
+        assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+        for (ProcessHandle process : running) {
+            process.onExit().get(30, TimeUnit.SECONDS);
+        }
+        assertThat(storedResults(report.resolve(CohortCommand.STATE_FOLDER))).as("results of a grade cut short")
+                .isEmpty();
+        try (Stream<Path> left = Files.list(dir.resolve("tmp"))) {
+            assertThat(left).as("work folders").isEmpty();
+        }
+    }
+
+    /**
+     * Starts {@code tick1 ARGS} in a JVM of its own, printing into {@code dir}/grade.log, with
+     * {@code dir}/tmp as its temporary folder (where its work folder goes), which the sandbox's
+     * users can pass through.
+     */
+    private static Process gradeInAJvmOfItsOwn(Path dir, String... args) throws IOException {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        Path temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx--x--x")));
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
+                .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName()));
+        command.addAll(List.of(args));
+        return new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve("grade.log").toFile())
+                .start();
+    }
+
+    /** The results a grade has stored: each a folder named by its key, whole. */
+    private static List<Path> storedResults(Path state) throws IOException {
+        if (!Files.isDirectory(state)) {
+            return List.of();
+        }
+        try (Stream<Path> entries = Files.list(state)) {
+            return entries.filter(p -> !p.getFileName().toString().startsWith(".")).toList();
+        }
+    }
+
+    @Test
+    void perSceneGradesAreTheShareOfScenesPassedTimesTheMaximum(@TempDir Path dir) throws IOException {
+        StudentSolution correct = StudentSolution.correct();
+        List<Student> two = List.of(new Student("Right", 1, files(correct), true),
+                new Student("Wrong", 2, files(correct.editSphere(NEAR_ROOT, "double s = s2;")), false));
+        Path report = dir.resolve("report");
+        CliRun run = CliRun.of(gradeArguments(moodleZip(dir.resolve("a.zip"), two), report,
+                "--per-scene", "--max-grade", "10"));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        Map<String, List<String>> rows = rows(report);
+        assertThat(rows.get("Participant 1")).element(4).isEqualTo("10.00");
+        assertThat(rows.get("Participant 2")).element(4).isEqualTo("0.00");
+        assertThat(rows.get("Participant 1")).element(5).isEqualTo("10.00");
+    }
+
+    @Test
+    void aDownloadThatIsNotThereIsOneLineAndExitTwo(@TempDir Path dir) {
+        CliRun run = CliRun.of(gradeArguments(dir.resolve("nope.zip"), dir.resolve("report")));
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
+                .contains("nope.zip");
+    }
+
+    @Test
+    void cohortOptionsWithOneStudentAreRefused(@TempDir Path dir) throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir);
+        CliRun run = CliRun.of("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
+                "--jobs", "2");
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err()).contains("go with --submissions");
+    }
+}
