@@ -43,7 +43,8 @@ class Tick1CommandTest {
     @Test
     void shortOptionsAndSizeOptionsWork() throws IOException {
         Path output = dir.resolve("small.png");
-        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(), "--width", "32", "--height", "20");
+        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(),
+                "--width", "32", "--height", "20");
         assertThat(run.status()).as(run.err()).isZero();
         assertThat(ImageIO.read(output.toFile()).getWidth()).isEqualTo(32);
     }
@@ -93,7 +94,8 @@ class Tick1CommandTest {
     @Test
     void anUnwritableOutputGivesStatusThreeAndLeavesNoTemporaryFile() throws IOException {
         Path output = dir.resolve("no-such-dir").resolve("out.png");
-        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(), "--width", "8", "--height", "8");
+        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(),
+                "--width", "8", "--height", "8");
         assertThat(run.status()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
         assertThat(run.err()).startsWith(output + ": cannot write the image: ").doesNotContain("\tat ");
         assertThat(run.err().lines()).hasSize(1);
@@ -113,7 +115,8 @@ class Tick1CommandTest {
     void outputThatIsADirectoryIsRefused() throws IOException {
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.toString(), "--width", "8", "--height", "8");
         assertThat(run.status()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
-        assertThat(run.err().strip()).isEqualTo(dir + ": cannot write the image: is a directory, expected a file name for the PNG");
+        assertThat(run.err().strip())
+                .isEqualTo(dir + ": cannot write the image: is a directory, expected a file name for the PNG");
     }
 
     @Test

@@ -89,7 +89,8 @@ public final class StudentCompiler {
         }
         DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
         Map<String, byte[]> classes = new TreeMap<>();
-        StandardJavaFileManager standard = compiler.getStandardFileManager(diagnostics, Locale.ROOT, StandardCharsets.UTF_8);
+        StandardJavaFileManager standard =
+                compiler.getStandardFileManager(diagnostics, Locale.ROOT, StandardCharsets.UTF_8);
         // Nothing on the class path: the student's code sees the JDK and the starter code only,
         // never this program's own classes (which include a gfx.tick1.Tick1 of their own).
         standard.setLocation(StandardLocation.CLASS_PATH, List.of());

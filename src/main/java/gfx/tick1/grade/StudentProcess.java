@@ -88,7 +88,10 @@ public final class StudentProcess {
     /** Set by {@link #stop}: no run starts after it. */
     private volatile boolean stopped;
 
-    /** Runs the harness whose classes are in {@code harness}, in {@code sandbox}, with {@code memoryMegabytes} of heap. */
+    /**
+     * Runs the harness whose classes are in {@code harness}, in {@code sandbox}, with
+     * {@code memoryMegabytes} of heap.
+     */
     public StudentProcess(Sandbox sandbox, Path harness, int memoryMegabytes) {
         this(sandbox, harness, memoryMegabytes, null);
     }
@@ -146,7 +149,8 @@ public final class StudentProcess {
     /** What a run that compiled (or tried to) says about compiling. */
     private Compiled compiled(Run run, Path output, Duration timeLimit) throws IOException {
         if (!run.finished()) {
-            return new Compiled(List.of(), "the compiler did not finish within the time limit of " + describe(timeLimit));
+            return new Compiled(List.of(),
+                    "the compiler did not finish within the time limit of " + describe(timeLimit));
         }
         if (run.exitStatus() == StudentHarness.DOES_NOT_COMPILE) {
             byte[] errors = ChildOutput.read(output.resolve(StudentHarness.ERRORS_FILE), ChildOutput.TEXT_CAP);

@@ -102,8 +102,10 @@ class GradeAttackTest {
     }
 
     private Grade gradeFiles(Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+        List<String> command = new ArrayList<>(List.of(
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporary,
+                "-cp", System.getProperty("java.class.path"),
                 Tick1.class.getName(), "grade", "--sphere", sphere.toString(), "--renderer", renderer.toString(),
                 "--report", dir.resolve("report").toString()));
         command.addAll(List.of(SMALL));

@@ -87,7 +87,8 @@ class GradeCommandTest {
                         "return ambient.add(diffuse).add(specular);", "return ambient.add(diffuse);")),
                 Arguments.of(Variant.AMBIENT_WITHOUT_C_DIFF, correct.editRenderer(
                         "Vector3 ambient = C_diff.scale(I_a);", "Vector3 ambient = I_a;")),
-                Arguments.of(Variant.SPECULAR_WITHOUT_I, correct.editRenderer("C_spec.scale(I).scale(k_s", "C_spec.scale(k_s")),
+                Arguments.of(Variant.SPECULAR_WITHOUT_I,
+                        correct.editRenderer("C_spec.scale(I).scale(k_s", "C_spec.scale(k_s")),
                 Arguments.of(Variant.UNNORMALISED_L_V, correct
                         .editRenderer("subtract(P).normalised();", "subtract(P);")
                         .editRenderer("Vector3 V = P.scale(-1).normalised();", "Vector3 V = P.scale(-1);")),

@@ -102,7 +102,8 @@ class PreviewServerTest {
 
         HttpResponse<byte[]> three = send(get("/three/build/three.module.min.js"));
         assertThat(three.statusCode()).isEqualTo(200);
-        assertThat(three.headers().firstValue("Content-Type")).hasValueSatisfying(type -> assertThat(type).startsWith("text/javascript"));
+        assertThat(three.headers().firstValue("Content-Type"))
+                .hasValueSatisfying(type -> assertThat(type).startsWith("text/javascript"));
         assertThat(send(get("/three/examples/jsm/controls/OrbitControls.js")).statusCode()).isEqualTo(200);
     }
 
@@ -138,7 +139,8 @@ class PreviewServerTest {
         byte[] scene = Files.readAllBytes(TICK1_XML);
         assertThat(send(upload("/api/scene", "tick1.xml", scene)).statusCode()).as("from its own page").isEqualTo(200);
 
-        HttpResponse<byte[]> foreign = send(upload("/api/scene", "tick1.xml", scene).header("Origin", "http://evil.example"));
+        HttpResponse<byte[]> foreign =
+                send(upload("/api/scene", "tick1.xml", scene).header("Origin", "http://evil.example"));
         assertThat(foreign.statusCode()).isEqualTo(403);
         assertThat(send(get("/api/render").header("Origin", "null")).statusCode()).isEqualTo(403);
     }
@@ -234,7 +236,8 @@ class PreviewServerTest {
                 String request = i % 2 == 0
                         ? "GET / HTTP/1.1\r\nHost: 127.0.0.1:" + port() + "\r\nX-Half: "    // headers never end
                         : "POST /api/scene?name=a.xml HTTP/1.1\r\nHost: 127.0.0.1:" + port() + "\r\nOrigin: "
-                                + "http://127.0.0.1:" + port() + "\r\nContent-Length: 1000\r\n\r\n<scene>"; // body never ends
+                                // The body never ends.
+                                + "http://127.0.0.1:" + port() + "\r\nContent-Length: 1000\r\n\r\n<scene>";
                 socket.getOutputStream().write(request.getBytes(StandardCharsets.ISO_8859_1));
                 socket.getOutputStream().flush();
                 stalled.add(socket);
@@ -255,7 +258,8 @@ class PreviewServerTest {
         int spheres = (int) (PreviewServer.RENDER_BUDGET / (640 * 480)) + 1;
         StringBuilder xml = new StringBuilder("<scene>\n<point-light x=\"0\" y=\"5\" z=\"0\" colour=\"#FFFFFF\"/>\n");
         for (int i = 0; i < spheres; i++) {
-            xml.append("<sphere x=\"").append(i % 100).append("\" y=\"").append(i / 100).append("\" z=\"50\" colour=\"#FF0000\"/>\n");
+            xml.append("<sphere x=\"").append(i % 100).append("\" y=\"").append(i / 100)
+                    .append("\" z=\"50\" colour=\"#FF0000\"/>\n");
         }
         xml.append("</scene>\n");
         HttpResponse<byte[]> response = send(upload("/api/render", "crowd.xml",

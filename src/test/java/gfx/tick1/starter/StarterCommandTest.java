@@ -23,9 +23,11 @@ class StarterCommandTest {
             assertThat(Files.readString(dir.resolve(file.path()))).as(file.path()).isEqualTo(file.content());
         }
         assertThat(StarterKit.files()).hasSize(11);
-        assertThat(dir.resolve("src/gfx/tick1/Sphere.java")).content().contains("TODO: Determine if ray and sphere intersect");
+        assertThat(dir.resolve("src/gfx/tick1/Sphere.java")).content()
+                .contains("TODO: Determine if ray and sphere intersect");
         assertThat(dir.resolve("src/gfx/tick1/Renderer.java")).content().contains("TODO: Calculate L, V, and R");
-        assertThat(dir.resolve("basic_scene.xml")).content().isEqualTo(Files.readString(Path.of("scenes/basic_scene.xml")));
+        assertThat(dir.resolve("basic_scene.xml")).content()
+                .isEqualTo(Files.readString(Path.of("scenes/basic_scene.xml")));
     }
 
     @Test
