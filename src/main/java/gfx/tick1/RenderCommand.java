@@ -80,13 +80,15 @@ public final class RenderCommand implements Callable<Integer> {
 
     @Option(names = "--samples", paramLabel = "N", defaultValue = "1",
             description = "Rays per pixel, averaged before the conversion to bytes (default: ${DEFAULT-VALUE}, the "
-                    + "course's image: one ray a pixel, aimed as the starter code's camera aims it, across the "
-                    + "pixel's centre and one pixel above its centre; at most " + SamplePattern.MAX_SAMPLES
+                    + "course's image: one ray a pixel, aimed as the starter code's camera aims it, through the "
+                    + "centre of the pixel's column and one pixel above the centre of its row; at most "
+                    + SamplePattern.MAX_SAMPLES
                     + "). More samples spread the rays over the pixel; the same image on every run.")
     private int samples;
 
     @Option(names = "--threads", paramLabel = "N",
-            description = "Threads to render with (default: all ${sys:tick1.cores} cores). The image is the same "
+            description = "Threads to render with (default: one per core; this machine has "
+                    + "${sys:tick1.cores}). The image is the same "
                     + "for any number.")
     private Integer threads;
 
@@ -246,7 +248,8 @@ public final class RenderCommand implements Callable<Integer> {
             err.println(output + ": cannot write the image: " + IoErrors.reason(e));
             return EXIT_CANNOT_WRITE;
         }
-        if (!quiet && !output.equals("-")) {
+        // Only a file is worth naming; and behind -o /dev/stdout the line would land in the PNG.
+        if (!quiet && !output.equals("-") && Files.isRegularFile(Path.of(output))) {
             spec.commandLine().getOut().println("Wrote " + output + " (" + width + " x " + height + ")");
         }
         return EXIT_OK;

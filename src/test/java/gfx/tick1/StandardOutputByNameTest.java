@@ -7,6 +7,7 @@ import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -24,7 +25,7 @@ class StandardOutputByNameTest {
     void thePngGoesIntoThePipeBehindTheName(String name) throws IOException, InterruptedException {
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         Process process = new ProcessBuilder(List.of(java, "-cp", System.getProperty("java.class.path"),
-                MainClass.NAME, "-q", "-i", "scenes/basic_scene.xml", "-o", name, "--width", "16", "--height", "12"))
+                MainClass.NAME, "-i", "scenes/basic_scene.xml", "-o", name, "--width", "16", "--height", "12"))
                 .redirectError(ProcessBuilder.Redirect.PIPE).start();
         byte[] png = process.getInputStream().readAllBytes();
         String err = new String(process.getErrorStream().readAllBytes());
@@ -32,5 +33,8 @@ class StandardOutputByNameTest {
         BufferedImage image = ImageIO.read(new ByteArrayInputStream(png));
         assertThat(image).as("a PNG on standard output; error output: %s", err).isNotNull();
         assertThat(image.getHeight()).isEqualTo(12);
+        // Nothing after the PNG's last chunk: IEND, its empty data and its CRC, 0xAE426082.
+        assertThat(Arrays.copyOfRange(png, png.length - 8, png.length)).as("the stream's last 8 bytes")
+                .containsExactly('I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82);
     }
 }

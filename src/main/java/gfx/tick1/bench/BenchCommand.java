@@ -78,7 +78,7 @@ public final class BenchCommand implements Callable<Integer> {
         Scene tick1 = load(tick1File);
 
         List<Result> results = new ArrayList<>();
-        log.printf("tick1 bench (%s): %d cores, Java %s%n", quick ? "quick" : "full", cores,
+        log.printf("tick1 bench (%s): %s, Java %s%n", quick ? "quick" : "full", count(cores, "core"),
                 System.getProperty("java.version"));
 
         BufferedImage truth = new TruthRenderer(settings.errorWidth, settings.errorHeight).render(tick1);

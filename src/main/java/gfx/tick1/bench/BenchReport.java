@@ -36,8 +36,9 @@ final class BenchReport {
     }
 
     private String machine() {
-        return String.format(Locale.ROOT, "%s %s (%s), %d cores, %s %s, %s", System.getProperty("java.vm.name"),
-                System.getProperty("java.version"), System.getProperty("java.vendor"), cores,
+        return String.format(Locale.ROOT, "%s %s (%s), %s, %s %s, %s", System.getProperty("java.vm.name"),
+                System.getProperty("java.version"), System.getProperty("java.vendor"),
+                BenchCommand.count(cores, "core"),
                 System.getProperty("os.name"), System.getProperty("os.arch"),
                 ZonedDateTime.now().format(DateTimeFormatter.ISO_OFFSET_DATE_TIME));
     }

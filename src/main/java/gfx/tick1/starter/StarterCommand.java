@@ -53,6 +53,12 @@ public final class StarterCommand implements Callable<Integer> {
             }
         }
         try {
+            Files.createDirectories(folder);
+        } catch (IOException e) {
+            err.println("tick1 starter: cannot create the folder " + folder + ": " + IoErrors.reason(e));
+            return EXIT_CANNOT_WRITE;
+        }
+        try {
             for (KitFile file : files) {
                 file.writeUnder(folder);
             }
