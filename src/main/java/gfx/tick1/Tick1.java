@@ -102,7 +102,9 @@ public final class Tick1 {
             ParameterException e = leftOver != null ? leftOver : reported;
             PrintWriter err = e.getCommandLine().getErr();
             String name = e.getCommandLine().getCommandSpec().qualifiedName();
-            err.println(name + ": " + e.getMessage() + suggestion(e) + " (see " + name + " --help)");
+            // One sentence on one line: picocli ends some messages with a full stop of its own.
+            String message = e.getMessage().replaceAll("\\.$", "");
+            err.println(name + ": " + message + suggestion(e) + " (see " + name + " --help)");
             err.flush();
             return ExitStatuses.EXIT_USAGE;
         });

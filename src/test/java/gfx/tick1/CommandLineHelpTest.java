@@ -77,6 +77,19 @@ class CommandLineHelpTest {
     }
 
     @Test
+    void theHelpCommandsOwnHelpHasNoEmptyExitStatusSection() {
+        assertThat(help("help")).doesNotContain("Exit status:");
+    }
+
+    @Test
+    void anUnknownCommandAfterHelpIsOneSentenceOnOneLine() {
+        CliRun run = CliRun.of("help", "nosuch");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(RenderCommand.EXIT_USAGE);
+        assertThat(run.err()).isEqualTo("tick1: Unknown subcommand 'nosuch' (see tick1 --help)"
+                + System.lineSeparator());
+    }
+
+    @Test
     void anUnknownWordBeforeACommandIsAnErrorNotIgnored() {
         for (String[] args : new String[][] {{"foo", "grade"}, {"foo", "starter", "--out", "x"}}) {
             CliRun run = CliRun.of(args);

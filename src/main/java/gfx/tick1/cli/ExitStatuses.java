@@ -35,6 +35,9 @@ public final class ExitStatuses {
             Map<String, String> help = new LinkedHashMap<>();
             statuses.forEach((status, meaning) -> help.put(Integer.toString(status), meaning));
             commandLine.getCommandSpec().usageMessage().exitCodeList(help);
+        } else {
+            // The heading is inherited by every command; one with no statuses shows none.
+            commandLine.getCommandSpec().usageMessage().exitCodeListHeading("");
         }
         commandLine.getSubcommands().values().stream().distinct().forEach(ExitStatuses::describe);
     }
