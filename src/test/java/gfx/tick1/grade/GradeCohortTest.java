@@ -1,17 +1,19 @@
 package gfx.tick1.grade;
 
-import gfx.tick1.grade.cohort.Worksheet;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
 import gfx.tick1.diagnose.Variant;
+import gfx.tick1.grade.cohort.Worksheet;
+import gfx.tick1.preview.HeadlessChromium;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -23,6 +25,8 @@ import java.util.zip.ZipOutputStream;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.openqa.selenium.By;
+import org.openqa.selenium.support.ui.ExpectedConditions;
 
 /**
  * {@code tick1 grade --submissions} on a generated cohort in Moodle's download form: correct
@@ -228,6 +232,25 @@ class GradeCohortTest {
         assertThat(feedback.resolve("1-tick1-diff.png")).exists();
         assertThat(feedback).isDirectoryNotContaining("glob:**/2-hidden*");
         assertThat(shared.resolve("report").resolve("index.html")).exists();
+    }
+
+    @Test
+    void theReportPageInABrowserCountsWhatGradesCsvSaysAndDrawsTheChart() throws Exception {
+        HeadlessChromium.assumeInstalled();
+        Path report = shared.resolve("report");
+        Map<String, List<String>> rows = rows(report);
+        long passed = rows.values().stream().filter(row -> row.get(4).equals("1.00")).count();
+        try (HeadlessChromium browser = HeadlessChromium.start()) {
+            browser.driver.get(report.resolve("index.html").toUri().toString());
+            browser.waitUpTo(Duration.ofSeconds(60))
+                    .until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-status", "ready"));
+            assertThat(browser.driver.findElement(By.id("passed-count")).getText()).as("passed, as grades.csv says")
+                    .isEqualTo(String.valueOf(passed));
+            assertThat(browser.driver.findElement(By.id("total-count")).getText()).as("rows of grades.csv")
+                    .isEqualTo(String.valueOf(rows.size()));
+            assertThat(browser.driver.findElements(By.cssSelector("#diagnoses g.bar"))).as("the chart's bars")
+                    .isNotEmpty();
+        }
     }
 
     @Test
