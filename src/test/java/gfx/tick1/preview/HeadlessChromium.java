@@ -11,6 +11,8 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Base64;
 import java.util.Comparator;
+import java.util.logging.Level;
+import java.util.logging.Logger;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.openqa.selenium.Dimension;
@@ -29,6 +31,13 @@ public final class HeadlessChromium implements AutoCloseable {
 
     static final Path CHROMIUM = Path.of("/usr/bin/chromium");
     static final Path CHROMEDRIVER = Path.of("/usr/bin/chromedriver");
+
+    /**
+     * Selenium's DevTools bindings lag Debian's Chromium, and it warns on every start that it has
+     * none for this version. The tests drive the browser through WebDriver, not DevTools, so the
+     * warning says nothing about them. (A strong reference: the logging system keeps weak ones.)
+     */
+    private static final Logger DEVTOOLS_VERSIONS = Logger.getLogger("org.openqa.selenium.devtools.CdpVersionFinder");
 
     public final ChromeDriver driver;
     private final Path profile;
@@ -50,6 +59,7 @@ public final class HeadlessChromium implements AutoCloseable {
 
     /** Starts the browser; see {@link #isInstalled()}. */
     public static HeadlessChromium start() throws IOException {
+        DEVTOOLS_VERSIONS.setLevel(Level.SEVERE);
         System.setProperty(ChromeDriverService.CHROME_DRIVER_EXE_PROPERTY, CHROMEDRIVER.toString());
         ChromeDriverService service = new ChromeDriverService.Builder()
                 .usingDriverExecutable(CHROMEDRIVER.toFile())
