@@ -44,7 +44,11 @@ final class CohortCommand {
     int call() throws IOException, InterruptedException {
         List<Submission> submissions;
         try {
-            submissions = Submissions.read(options.submissions());
+            submissions = withoutOwnFiles(Submissions.read(options.submissions()));
+            if (options.worksheet() != null && Files.isDirectory(options.worksheet())) {
+                throw new IOException(options.worksheet() + ": a folder, not a worksheet (--worksheet wants the "
+                        + "CSV file downloaded from the assignment)");
+            }
             if (options.worksheet() != null && !Files.isRegularFile(options.worksheet())) {
                 throw new java.nio.file.NoSuchFileException(options.worksheet().toString());
             }
@@ -90,6 +94,13 @@ final class CohortCommand {
                     System.console() != null);
             running.set(cohort);
             CohortGrade.Done done = cohort.run(submissions, work);
+            if (cohort.stopped()) {
+                // Stopped part way: the report of the last whole run stays as it was.
+                err.println("tick1 grade: stopped; the results finished so far are kept in "
+                        + options.reportFolder().resolve(STATE_FOLDER) + ": run the same command again to grade "
+                        + "the rest and write the report");
+                return GradeCommand.EXIT_STOPPED;
+            }
             return report(done);
         } finally {
             CohortGrade cohort = running.getAndSet(null);
@@ -123,14 +134,44 @@ final class CohortCommand {
             return GradeCommand.EXIT_CANNOT_WRITE;
         }
         long passed = results.stream().filter(StudentResult::passed).count();
+        // A submission with a problem (a missing file, ...) is never run, so neither now nor earlier.
+        long problems = results.stream().filter(result -> result.submission().problem() != null).count();
         out.println("Graded " + SubmissionGrader.count(results.size(), "submission") + " ("
-                + (results.size() - done.stored() - done.ungraded().size()) + " now, " + done.stored()
-                + " from earlier runs): " + passed + " passed, " + (results.size() - passed) + " failed.");
+                + (results.size() - done.stored() - problems) + " now, " + done.stored() + " from earlier runs"
+                + (problems > 0 ? ", " + problems + " not run: a problem with their files" : "") + "): "
+                + passed + " passed, " + (results.size() - passed) + " failed.");
         out.println("Grades: " + report.resolve(GRADES) + "; report: " + report.resolve("index.html"));
         for (String folder : done.ungraded()) {
-            err.println("tick1 grade: " + folder + ": not graded: its images could not be stored in " + report);
+            err.println("tick1 grade: " + printable(folder) + ": not graded: its images could not be stored in "
+                    + report);
         }
         return done.ungraded().isEmpty() ? GradeCommand.EXIT_PASS : GradeCommand.EXIT_CANNOT_WRITE;
+    }
+
+    /**
+     * The submissions without the report folder and the worksheet, when they are in the download's
+     * folder (a report written beside the students' folders is not a student).
+     */
+    private List<Submission> withoutOwnFiles(List<Submission> submissions) {
+        Path download = options.submissions().toAbsolutePath().normalize();
+        List<String> own = new java.util.ArrayList<>();
+        for (Path path : new Path[] {options.reportFolder(), options.worksheet()}) {
+            if (path != null && download.equals(path.toAbsolutePath().normalize().getParent())) {
+                own.add(path.getFileName().toString());
+            }
+        }
+        return submissions.stream().filter(submission -> !own.contains(submission.folder())).toList();
+    }
+
+    /**
+     * A name from the download as one line of plain text: control characters (a newline, a
+     * terminal's escape) and the characters that reorder text become "?".
+     */
+    private static String printable(String text) {
+        StringBuilder line = new StringBuilder();
+        text.codePoints().forEach(c -> line.appendCodePoint(
+                Character.isISOControl(c) || Character.getType(c) == Character.FORMAT ? '?' : c));
+        return line.toString();
     }
 
     /**
@@ -151,10 +192,10 @@ final class CohortCommand {
         Worksheet.Filled filled = Worksheet.fill(options.worksheet(), marks);
         CohortOutputs.writeAtomically(report.resolve(GRADES), filled.bytes());
         for (String student : filled.withoutSubmission()) {
-            err.println("tick1 grade: " + options.worksheet() + ": " + student + " has no submission");
+            err.println("tick1 grade: " + options.worksheet() + ": " + printable(student) + " has no submission");
         }
         for (String student : filled.withoutRow()) {
-            err.println("tick1 grade: " + options.worksheet() + ": no row for " + student
+            err.println("tick1 grade: " + options.worksheet() + ": no row for " + printable(student)
                     + ": graded in the report, but not in grades.csv");
         }
     }

@@ -16,6 +16,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.stream.IntStream;
 
 /**
  * Grades a cohort: every submission in the sandbox, {@code jobs} at a time, each in a process and
@@ -58,6 +59,11 @@ final class CohortGrade {
         this.showProgress = showProgress;
     }
 
+    /** Whether {@link #stop()} was called: the results are then not the whole cohort's. */
+    boolean stopped() {
+        return stopping;
+    }
+
     /**
      * Stops the grade (Ctrl-C, SIGTERM): kills every student's process that is running, and
      * makes sure that no result of a grade this cuts short is stored.
@@ -95,7 +101,8 @@ final class CohortGrade {
                 images[i] = store.folderOf(key);
             }
         }
-        int stored = count - todo.size() - sameAsEarlier.size();
+        int stored = (int) IntStream.range(0, count)
+                .filter(i -> results[i] != null && submissions.get(i).problem() == null).count();
         List<SubmissionGrader.Phases> phases = Collections.synchronizedList(new ArrayList<>());
         List<String> ungraded = Collections.synchronizedList(new ArrayList<>());
         if (!todo.isEmpty()) {

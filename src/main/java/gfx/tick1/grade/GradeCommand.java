@@ -48,6 +48,9 @@ public final class GradeCommand implements Callable<Integer> {
     @ExitStatus("a scene failed and its images could not be written to the report folder; with --submissions: the "
             + "report could not be written, or a submission's images could not be stored")
     public static final int EXIT_CANNOT_WRITE = 3;
+    @ExitStatus("with --submissions: stopped by Ctrl-C; the results finished so far are kept, and the same command "
+            + "grades the rest")
+    public static final int EXIT_STOPPED = 130;
 
     /** The course tester's own words for a pass. */
     public static final String CONGRATULATIONS = "Congratulations! Your code passed the tester.";

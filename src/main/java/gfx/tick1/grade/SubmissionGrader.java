@@ -245,14 +245,20 @@ final class SubmissionGrader {
         return new Phases(grade.compileNanos, grade.renderNanos, grade.compareNanos);
     }
 
-    /** The failing scenes' first lines, their closest mistake and what to reread, for the gradebook's comment. */
+    /**
+     * The failing scenes' first lines, their closest mistake and what to reread, for the gradebook's
+     * comment. A hidden scene is "hidden scene N", as on the feedback page: its file name may tell
+     * what it holds, and the comment goes to the student.
+     */
     private static String reasons(List<SceneResult> scenes) {
         StringBuilder text = new StringBuilder();
+        int hidden = 0;
         for (SceneResult scene : scenes) {
+            String name = scene.hidden() ? "hidden scene " + ++hidden : scene.name();
             if (scene.passed()) {
                 continue;
             }
-            text.append(' ').append(scene.name()).append(": ").append(scene.explanation().get(0));
+            text.append(' ').append(name).append(": ").append(scene.explanation().get(0));
             scene.explanation().stream().filter(line -> line.startsWith("closest: ") || line.startsWith("reread: "))
                     .forEach(line -> text.append("; ").append(line));
             text.append('.');

@@ -254,6 +254,22 @@ class GradeCohortTest {
     }
 
     @Test
+    void noFileAStudentIsGivenNamesAHiddenScene() throws IOException {
+        Path report = shared.resolve("report");
+        List<String> feedback = new ArrayList<>(rows(report).values().stream().map(row -> row.get(9)).toList());
+        try (Stream<Path> files = Files.walk(report.resolve("feedback"))) {
+            for (Path file : files.filter(f -> f.toString().endsWith(".txt") || f.toString().endsWith(".html"))
+                    .toList()) {
+                feedback.add(Files.readString(file));
+            }
+        }
+        feedback.add(Files.readString(report.resolve("index.html")));
+        assertThat(feedback).as("the gradebook's comments, the feedback files and the cohort's page")
+                .noneMatch(text -> text.contains("hidden.xml"))
+                .anyMatch(text -> text.contains("hidden scene 1: "));
+    }
+
+    @Test
     void aSecondRunGradesNothingAgainAndWritesTheSameGrades() throws IOException {
         Path report = shared.resolve("report");
         Map<String, List<String>> before = withoutGradingTime(rows(report));
@@ -346,6 +362,8 @@ class GradeCohortTest {
         }
         assertThat(storedResults(report.resolve(CohortCommand.STATE_FOLDER))).as("results of a grade cut short")
                 .isEmpty();
+        assertThat(report.resolve("grades.csv")).as("a gradebook without the students not yet graded")
+                .doesNotExist();
         try (Stream<Path> left = Files.list(dir.resolve("tmp"))) {
             assertThat(left).as("work folders").isEmpty();
         }

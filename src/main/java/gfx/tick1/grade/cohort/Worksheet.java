@@ -49,6 +49,7 @@ public final class Worksheet {
     private static final String GRADE = "Grade";
     private static final String FEEDBACK = "Feedback comments";
     private static final String FULL_NAME = "Full name";
+    private static final String MAXIMUM_GRADE = "Maximum Grade";
     /** How Moodle's identifier cell starts ("hiddenuser" in mod/assign's language strings). */
     private static final String PARTICIPANT = "Participant ";
     private static final String SUBMITTED = "Submitted for grading";
@@ -161,6 +162,7 @@ public final class Worksheet {
         int grade = column(name, header, GRADE);
         int feedback = column(name, header, FEEDBACK);
         int fullName = header.cells().stream().map(CsvRecords.Cell::value).toList().indexOf(FULL_NAME);
+        int maximum = header.cells().stream().map(CsvRecords.Cell::value).toList().indexOf(MAXIMUM_GRADE);
         Map<String, Mark> byId = new LinkedHashMap<>();
         marks.forEach(mark -> byId.putIfAbsent(mark.id(), mark));
         Set<String> matched = new HashSet<>();
@@ -183,6 +185,7 @@ public final class Worksheet {
                 throw new CohortInputException(name + ":" + row.line() + ": the row has " + row.cells().size()
                         + " cells, too few for its " + GRADE + " and " + FEEDBACK + " columns");
             }
+            checkWithinMaximum(name, row, maximum, mark);
             CsvRecords.Cell first = row.cells().get(Math.min(grade, feedback));
             CsvRecords.Cell second = row.cells().get(Math.max(grade, feedback));
             String firstText = grade < feedback ? grade(mark.grade()) : mark.feedback();
@@ -194,6 +197,29 @@ public final class Worksheet {
         List<String> withoutRow = byId.values().stream().filter(mark -> !matched.contains(mark.id()))
                 .map(Mark::describe).toList();
         return new Filled(out.toByteArray(), List.copyOf(withoutSubmission), withoutRow);
+    }
+
+    /**
+     * Refuses a grade above the row's {@code Maximum Grade}: Moodle would refuse it on upload, or
+     * worse, take it. The usual cause is a {@code --max-grade} other than the assignment's.
+     */
+    private static void checkWithinMaximum(String name, CsvRecords.Row row, int maximum, Mark mark)
+            throws CohortInputException {
+        if (maximum < 0 || maximum >= row.cells().size()) {
+            return;
+        }
+        String text = row.value(maximum).strip();
+        double most;
+        try {
+            most = Double.parseDouble(text);
+        } catch (NumberFormatException e) {
+            return;   // a maximum written in a form of its own (a scale, a locale's comma): Moodle checks it
+        }
+        if (mark.grade() > most) {
+            throw new CohortInputException(name + ":" + row.line() + ": the grade " + grade(mark.grade())
+                    + " is above the row's " + MAXIMUM_GRADE + " " + text + "; give --max-grade " + text
+                    + " (the assignment's maximum)");
+        }
     }
 
     /** Copies the bytes up to the cell, then the cell's new text; returns where copying resumes. */

@@ -170,6 +170,15 @@ class WorksheetTest {
     }
 
     @Test
+    void aGradeAboveTheRowsMaximumIsRefusedInOneLine() {
+        String input = HEADER + "\r\nParticipant 101,Zoë Ünal,,Submitted for grading,,1.00,Yes,,,,Maths\r\n";
+        assertThatThrownBy(() -> Worksheet.fill("w.csv", utf8(input),
+                List.of(new Worksheet.Mark("101", "Zoë Ünal", 10, "Passed."))))
+                .hasMessage("w.csv:2: the grade 10.00 is above the row's Maximum Grade 1.00; give --max-grade 1.00 "
+                        + "(the assignment's maximum)");
+    }
+
+    @Test
     void aGradedRowTooShortForItsCellsIsOneLine() {
         assertThatThrownBy(() -> Worksheet.fill("w.csv", utf8(HEADER + "\r\nParticipant 101,Zoë\r\n"), MARKS))
                 .hasMessage("w.csv:2: the row has 2 cells, too few for its Grade and Feedback comments columns");
