@@ -102,8 +102,9 @@ public final class Tick1 {
             ParameterException e = leftOver != null ? leftOver : reported;
             PrintWriter err = e.getCommandLine().getErr();
             String name = e.getCommandLine().getCommandSpec().qualifiedName();
-            // One sentence on one line: picocli ends some messages with a full stop of its own.
-            String message = e.getMessage().replaceAll("\\.$", "");
+            // One sentence on one line: picocli ends some messages with a full stop of its own (but an
+            // ellipsis, as in "-Xmx...", stays whole).
+            String message = e.getMessage().replaceAll("(?<!\\.)\\.$", "");
             err.println(name + ": " + message + suggestion(e) + " (see " + name + " --help)");
             err.flush();
             return ExitStatuses.EXIT_USAGE;
