@@ -1,9 +1,12 @@
 package gfx.tick1.grade;
 
+import static java.nio.file.LinkOption.NOFOLLOW_LINKS;
+
 import gfx.tick1.grade.cohort.StudentResult;
 import gfx.tick1.grade.cohort.StudentResult.SceneResult;
 import gfx.tick1.grade.cohort.Submission;
 import java.io.IOException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -43,6 +46,7 @@ final class CohortOutputs {
     static void placeImages(List<StudentResult> results, List<Path> images, Path report) throws IOException {
         for (int i = 0; i < results.size(); i++) {
             Path folder = Files.createDirectories(feedbackFolder(report, results.get(i)));
+            removeImagesNotNamed(folder, results.get(i));
             for (SceneResult scene : results.get(i).scenes()) {
                 for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
                     if (image != null && images.get(i) != null) {
@@ -51,6 +55,28 @@ final class CohortOutputs {
                         Files.move(temporary, folder.resolve(image), StandardCopyOption.REPLACE_EXISTING,
                                 StandardCopyOption.ATOMIC_MOVE);
                     }
+                }
+            }
+        }
+    }
+
+    /**
+     * Deletes the PNGs of a student's feedback folder that the result does not name: the images of
+     * an earlier failure the student has since mended must not go back to them.
+     */
+    private static void removeImagesNotNamed(Path folder, StudentResult result) throws IOException {
+        Set<String> named = new HashSet<>();
+        for (SceneResult scene : result.scenes()) {
+            for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
+                if (image != null) {
+                    named.add(image);
+                }
+            }
+        }
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "*.png")) {
+            for (Path file : files) {
+                if (!named.contains(file.getFileName().toString()) && Files.isRegularFile(file, NOFOLLOW_LINKS)) {
+                    Files.delete(file);
                 }
             }
         }

@@ -304,11 +304,14 @@ class GradeCohortTest {
         Path report = dir.resolve("report");
         CliRun first = CliRun.of(gradeArguments(moodleZip(dir.resolve("a.zip"), three), report));
         assertThat(first.out()).as(first.transcript()).contains("(3 now, 0 from earlier runs)");
+        Path secondsFeedback = report.resolve("feedback").resolve(three.get(1).folder());
+        assertThat(secondsFeedback.resolve("1-tick1-diff.png")).exists();
         three.set(1, new Student("Second", 2, files(correct.editRenderer("return image;", "return image; // mended")),
                 true));
         CliRun second = CliRun.of(gradeArguments(moodleZip(dir.resolve("b.zip"), three), report));
         assertThat(second.out()).as(second.transcript()).contains("(1 now, 2 from earlier runs)");
         assertThat(rows(report).values()).extracting(row -> row.get(4)).containsOnly("1.00");
+        assertThat(secondsFeedback).as("the images of a failure since mended").isDirectoryNotContaining("glob:**.png");
     }
 
     @Test
