@@ -2,6 +2,7 @@ package gfx.tick1.grade;
 
 import gfx.tick1.grade.cohort.CohortInputException;
 import gfx.tick1.grade.cohort.CohortReport;
+import gfx.tick1.grade.cohort.ReportFiles;
 import gfx.tick1.grade.cohort.StudentResult;
 import gfx.tick1.grade.cohort.Submission;
 import gfx.tick1.grade.cohort.Submissions;
@@ -163,15 +164,9 @@ final class CohortCommand {
         return submissions.stream().filter(submission -> !own.contains(submission.folder())).toList();
     }
 
-    /**
-     * A name from the download as one line of plain text: control characters (a newline, a
-     * terminal's escape) and the characters that reorder text become "?".
-     */
+    /** A name from the download as one line of plain text (a newline in a folder name included). */
     private static String printable(String text) {
-        StringBuilder line = new StringBuilder();
-        text.codePoints().forEach(c -> line.appendCodePoint(
-                Character.isISOControl(c) || Character.getType(c) == Character.FORMAT ? '?' : c));
-        return line.toString();
+        return ChildOutput.printable(text).replace('\n', '?');
     }
 
     /**
@@ -185,12 +180,12 @@ final class CohortCommand {
                         CohortOutputs.grade(result, options.maxGrade(), options.perScene())))
                 .toList();
         if (options.worksheet() == null) {
-            CohortOutputs.writeAtomically(report.resolve(GRADES),
-                    Worksheet.fresh(marks, options.maxGrade(), ZonedDateTime.now()));
+            byte[] fresh = Worksheet.fresh(marks, options.maxGrade(), ZonedDateTime.now());
+            ReportFiles.write(report.resolve(GRADES), out -> out.write(fresh));
             return;
         }
         Worksheet.Filled filled = Worksheet.fill(options.worksheet(), marks);
-        CohortOutputs.writeAtomically(report.resolve(GRADES), filled.bytes());
+        ReportFiles.write(report.resolve(GRADES), out -> out.write(filled.bytes()));
         for (String student : filled.withoutSubmission()) {
             err.println("tick1 grade: " + options.worksheet() + ": " + printable(student) + " has no submission");
         }

@@ -2,6 +2,7 @@ package gfx.tick1.grade;
 
 import static java.nio.file.LinkOption.NOFOLLOW_LINKS;
 
+import gfx.tick1.grade.cohort.ReportFiles;
 import gfx.tick1.grade.cohort.StudentResult;
 import gfx.tick1.grade.cohort.StudentResult.SceneResult;
 import gfx.tick1.grade.cohort.Submission;
@@ -9,7 +10,6 @@ import java.io.IOException;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -18,8 +18,7 @@ import java.util.Set;
 /**
  * The grader's part of a cohort's report folder: each student's mark, and the images of the
  * failing scenes placed in the student's feedback folder, where the pages of
- * {@link gfx.tick1.grade.cohort.CohortReport} show them. Each file is written beside its place and
- * renamed into it, so that none is ever half-written.
+ * {@link gfx.tick1.grade.cohort.CohortReport} show them, each written whole by {@link ReportFiles}.
  */
 final class CohortOutputs {
 
@@ -50,10 +49,8 @@ final class CohortOutputs {
             for (SceneResult scene : results.get(i).scenes()) {
                 for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
                     if (image != null && images.get(i) != null) {
-                        Path temporary = writing(folder.resolve(image));
-                        Files.copy(images.get(i).resolve(image), temporary, StandardCopyOption.REPLACE_EXISTING);
-                        Files.move(temporary, folder.resolve(image), StandardCopyOption.REPLACE_EXISTING,
-                                StandardCopyOption.ATOMIC_MOVE);
+                        Path stored = images.get(i).resolve(image);
+                        ReportFiles.write(folder.resolve(image), out -> Files.copy(stored, out));
                     }
                 }
             }
@@ -108,17 +105,5 @@ final class CohortOutputs {
     static String safe(String folder) {
         String name = folder.replaceAll("[/\\\\\\x00-\\x1f]", "_");
         return name.isEmpty() || name.equals(".") || name.equals("..") ? "_" + name : name;
-    }
-
-    /** The temporary file beside {@code target} that is renamed over it once complete. */
-    private static Path writing(Path target) {
-        return target.resolveSibling("." + target.getFileName() + ".writing");
-    }
-
-    /** Writes {@code bytes} to a temporary file beside {@code target}, then renames it over the target. */
-    static void writeAtomically(Path target, byte[] bytes) throws IOException {
-        Path temporary = writing(target);
-        Files.write(temporary, bytes);
-        Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
     }
 }

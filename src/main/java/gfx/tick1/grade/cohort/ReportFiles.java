@@ -15,14 +15,14 @@ import java.nio.file.attribute.PosixFilePermissions;
  * is atomic. A grade stopped part way (Ctrl-C, a crash, a full disk) leaves the old page or the
  * new one, never half of one; at worst a {@code .NAME.RANDOM.tmp} beside it.
  */
-final class ReportFiles {
+public final class ReportFiles {
 
     /** The report folder's sub-folder holding one folder of feedback per student. */
     static final String FEEDBACK = "feedback";
 
     /** Writes a file's bytes onto a stream; the stream is closed by the caller. */
     @FunctionalInterface
-    interface Content {
+    public interface Content {
         void writeTo(OutputStream out) throws IOException;
     }
 
@@ -34,7 +34,7 @@ final class ReportFiles {
         write(target, out -> out.write(bytes));
     }
 
-    static void write(Path target, Content content) throws IOException {
+    public static void write(Path target, Content content) throws IOException {
         Path folder = target.toAbsolutePath().getParent();
         Files.createDirectories(folder);
         Path temporary = temporaryBeside(folder, target.getFileName().toString());
