@@ -16,6 +16,7 @@ import gfx.tick1.grade.sandbox.ChildOutput;
 import gfx.tick1.grade.sandbox.Sandbox;
 import gfx.tick1.grade.sandbox.WorkFolder;
 import gfx.tick1.io.IoErrors;
+import gfx.tick1.io.OnExit;
 import gfx.tick1.scene.SceneException;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -67,17 +68,16 @@ final class CohortCommand {
         }
         Path work = Files.createTempDirectory("tick1-grade");
         AtomicReference<CohortGrade> running = new AtomicReference<>();
-        // Ctrl-C or SIGTERM: stop the students' processes and delete the work folder. Finished
-        // results are in the store already; the one being stored is renamed into place whole or
-        // not at all.
-        Thread cleanUp = new Thread(() -> {
-            CohortGrade cohort = running.get();
+        // At the end, or on Ctrl-C or SIGTERM: stop the students' processes and delete the work
+        // folder. Finished results are in the store already; the one being stored is renamed into
+        // place whole or not at all.
+        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
+            CohortGrade cohort = running.getAndSet(null);
             if (cohort != null) {
                 cohort.stop();
             }
             GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
         });
-        Runtime.getRuntime().addShutdownHook(cleanUp);
         try {
             Grading grading;
             ResultStore store;
@@ -112,16 +112,7 @@ final class CohortCommand {
             }
             return report(done);
         } finally {
-            CohortGrade cohort = running.getAndSet(null);
-            if (cohort != null) {
-                cohort.stop();
-            }
-            GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
-            try {
-                Runtime.getRuntime().removeShutdownHook(cleanUp);
-            } catch (IllegalStateException e) {
-                // The JVM is shutting down: the hook runs (or ran) anyway.
-            }
+            cleanUp.now();
         }
     }
 

@@ -10,6 +10,7 @@ import gfx.tick1.grade.sandbox.Sandbox;
 import gfx.tick1.grade.sandbox.StudentProcess;
 import gfx.tick1.grade.sandbox.WorkFolder;
 import gfx.tick1.io.IoErrors;
+import gfx.tick1.io.OnExit;
 import gfx.tick1.scene.SceneException;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -159,22 +160,16 @@ public final class GradeCommand implements Callable<Integer> {
         }
         Path work = Files.createTempDirectory("tick1-grade");
         StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), memoryMegabytes);
-        // Ctrl-C or SIGTERM: stop the student's process and delete the work folder, scenes and all.
-        Thread cleanUp = new Thread(() -> {
+        // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
+        // scenes and all.
+        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
             process.stop();
             reportUndeleted(WorkFolder.delete(work), err);
         });
-        Runtime.getRuntime().addShutdownHook(cleanUp);
         try {
             return grade(work, sandbox, process, out, err);
         } finally {
-            process.stop();
-            reportUndeleted(WorkFolder.delete(work), err);
-            try {
-                Runtime.getRuntime().removeShutdownHook(cleanUp);
-            } catch (IllegalStateException e) {
-                // The JVM is shutting down: the hook runs (or ran) anyway.
-            }
+            cleanUp.now();
         }
     }
 
