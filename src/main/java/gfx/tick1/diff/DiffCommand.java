@@ -1,5 +1,6 @@
 package gfx.tick1.diff;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.diagnose.Variant;
 import gfx.tick1.io.IoErrors;
@@ -62,22 +63,18 @@ public final class DiffCommand implements Callable<Integer> {
             try {
                 JavaMembers parsed = JavaMembers.parse(file.toString(), read(file));
                 if (!StarterKit.STUDENT_CLASSES.contains(parsed.className())) {
-                    err.println("tick1 diff: " + file + ": class " + parsed.className()
+                    throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": class " + parsed.className()
                             + ": expected Sphere or Renderer, the two classes of the tick");
-                    return EXIT_CANNOT_COMPARE;
                 }
                 if (!classes.add(parsed.className())) {
-                    err.println("tick1 diff: " + file + ": a second " + parsed.className()
+                    throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": a second " + parsed.className()
                             + " class: give one Sphere.java and one Renderer.java");
-                    return EXIT_CANNOT_COMPARE;
                 }
                 theirs.add(parsed);
             } catch (JavaMembers.ParseException e) {
-                err.println("tick1 diff: " + e.getMessage());
-                return EXIT_CANNOT_COMPARE;
+                throw new CommandFailure(EXIT_CANNOT_COMPARE, e.getMessage());
             } catch (IOException e) {
-                err.println("tick1 diff: " + file + ": " + IoErrors.reason(e));
-                return EXIT_CANNOT_COMPARE;
+                throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": " + IoErrors.reason(e));
             }
         }
         Colours colours = new Colours(CommandLine.Help.Ansi.AUTO.enabled());

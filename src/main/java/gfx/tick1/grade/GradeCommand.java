@@ -1,5 +1,6 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.grade.grading.Grading;
 import gfx.tick1.grade.grading.ReferenceChoice;
@@ -149,10 +150,9 @@ public final class GradeCommand implements Callable<Integer> {
             try {
                 sandbox = Sandbox.confined();
             } catch (Sandbox.Unavailable e) {
-                err.println("tick1 grade: " + e.getMessage() + ": install the " + Sandbox.PACKAGE
+                throw new CommandFailure(EXIT_USAGE, e.getMessage() + ": install the " + Sandbox.PACKAGE
                         + " package (apt-get install " + Sandbox.PACKAGE + "), or give --no-sandbox to grade "
                         + "without a sandbox");
-                return EXIT_USAGE;
             }
         }
         if (submissions != null) {
@@ -221,11 +221,9 @@ public final class GradeCommand implements Callable<Integer> {
             submission = new Submission("", "", "", studentFile(sphere), studentFile(renderer), null);
             WorkFolder.removeEarlierReport(reportFolder);
         } catch (SceneException e) {
-            err.println("tick1 grade: " + e.getMessage());
-            return EXIT_USAGE;
+            throw new CommandFailure(EXIT_USAGE, e.getMessage());
         } catch (IOException e) {
-            err.println("tick1 grade: " + IoErrors.describe(e));
-            return EXIT_USAGE;
+            throw new CommandFailure(EXIT_USAGE, IoErrors.describe(e));
         }
         StudentProcess.writeHarness(Files.createDirectory(work.resolve("harness")));
         SubmissionGrader.Graded graded = new SubmissionGrader(grading, sandbox, process, work)
