@@ -71,7 +71,7 @@ public final class DiffCommand implements Callable<Integer> {
                             + " class: give one Sphere.java and one Renderer.java");
                     return EXIT_CANNOT_COMPARE;
                 }
-                theirs.add(parsed);
+                theirs.add(JavaMembers.parse(file.toString(), read(file), ours(parsed.className())));
             } catch (JavaMembers.ParseException e) {
                 err.println("tick1 diff: " + e.getMessage());
                 return EXIT_CANNOT_COMPARE;
@@ -83,22 +83,37 @@ public final class DiffCommand implements Callable<Integer> {
         Colours colours = new Colours(CommandLine.Help.Ansi.AUTO.enabled());
         boolean differs = false;
         for (int i = 0; i < theirs.size(); i++) {
-            List<String> report = compare(ours(theirs.get(i).className()), theirs.get(i), files.get(i), colours);
+            String className = theirs.get(i).className();
+            JavaMembers ours = ours(className);
+            List<String> report = compare(ours, starter(className, ours), theirs.get(i), files.get(i), colours);
             report.forEach(out::println);
             differs |= !report.isEmpty();
         }
         return differs ? EXIT_DIFFERENT : EXIT_SAME;
     }
 
-    /** The unified diff of one file, member by member in our order, then members only theirs has. */
-    static List<String> compare(JavaMembers ours, JavaMembers theirs, Path file, Colours colours) {
+    /**
+     * The unified diff of one file, member by member in our order, then members only theirs has.
+     * A member is left out when it means the same as ours or, for a member the starter code
+     * gives whole (one without a TODO), as the starter's ({@code starter} may be null).
+     */
+    static List<String> compare(JavaMembers ours, JavaMembers starter, JavaMembers theirs, Path file,
+            Colours colours) {
         Set<String> signatures = new LinkedHashSet<>(ours.members().keySet());
         signatures.addAll(theirs.members().keySet());
         List<String> lines = new ArrayList<>();
         for (String signature : signatures) {
-            List<String> a = linesOf(ours.members().get(signature));
-            List<String> b = linesOf(theirs.members().get(signature));
-            List<List<LineDiff.Line>> hunks = LineDiff.hunks(a, b);
+            JavaMembers.Member our = ours.members().get(signature);
+            JavaMembers.Member their = theirs.members().get(signature);
+            JavaMembers.Member given = starter == null ? null : starter.members().get(signature);
+            if (our != null && their != null && (our.key().equals(their.key())
+                    || given != null && !given.todo() && given.key().equals(their.key()))) {
+                continue;
+            }
+            List<String> a = our == null ? List.of() : our.lines();
+            List<String> b = their == null ? List.of() : their.lines();
+            List<List<LineDiff.Line>> hunks = LineDiff.hunks(a, our == null ? a : our.keyLines(), b,
+                    their == null ? b : their.keyLines());
             if (hunks.isEmpty()) {
                 continue;
             }
@@ -106,30 +121,34 @@ public final class DiffCommand implements Callable<Integer> {
                 lines.add(colours.bold("--- ours: " + ours.className() + ".java"));
                 lines.add(colours.bold("+++ yours: " + file));
             }
-            String note = a.isEmpty() ? " (only in yours)" : b.isEmpty() ? " (missing from yours)" : "";
-            List<String> removed = new ArrayList<>(), added = new ArrayList<>();
-            for (List<LineDiff.Line> hunk : hunks) {
-                lines.add(colours.cyan("@@ " + signature + note + " @@"));
-                for (LineDiff.Line line : hunk) {
-                    String text = line.kind() + line.text();
-                    lines.add(line.kind() == '-' ? colours.red(text) : line.kind() == '+' ? colours.green(text) : text);
-                    if (line.kind() == '-') {
-                        removed.add(line.text().strip());
-                    } else if (line.kind() == '+') {
-                        added.add(line.text().strip());
-                    }
-                }
-            }
-            for (Variant hint : Hints.of(new Hints.Change(signature, removed, added, b))) {
-                lines.add(colours.yellow("hint: this looks like \"" + hint.title() + "\": reread handout "
-                        + hint.reread() + "."));
-            }
+            lines.addAll(member(signature, a.isEmpty() ? " (only in yours)" : b.isEmpty() ? " (missing from yours)"
+                    : "", hunks, b, colours));
         }
         return lines;
     }
 
-    private static List<String> linesOf(String text) {
-        return text == null ? List.of() : text.lines().toList();
+    /** One member's hunks, each headed by its signature, and the hints on what changed. */
+    private static List<String> member(String signature, String note, List<List<LineDiff.Line>> hunks,
+            List<String> theirs, Colours colours) {
+        List<String> lines = new ArrayList<>();
+        List<String> removed = new ArrayList<>(), added = new ArrayList<>();
+        for (List<LineDiff.Line> hunk : hunks) {
+            lines.add(colours.cyan("@@ " + signature + note + " @@"));
+            for (LineDiff.Line line : hunk) {
+                String text = line.kind() + line.text();
+                lines.add(line.kind() == '-' ? colours.red(text) : line.kind() == '+' ? colours.green(text) : text);
+                if (line.kind() == '-') {
+                    removed.add(line.text().strip());
+                } else if (line.kind() == '+') {
+                    added.add(line.text().strip());
+                }
+            }
+        }
+        for (Variant hint : Hints.of(new Hints.Change(signature, removed, added, theirs))) {
+            lines.add(colours.yellow("hint: this looks like \"" + hint.title() + "\": reread handout "
+                    + hint.reread() + "."));
+        }
+        return lines;
     }
 
     /** Our Sphere.java or Renderer.java, as the build copies their source into the program. */
@@ -144,6 +163,16 @@ public final class DiffCommand implements Callable<Integer> {
             throw new UncheckedIOException(e);
         } catch (JavaMembers.ParseException e) {
             throw new IllegalStateException("our own " + name + " does not parse: " + e.getMessage(), e);
+        }
+    }
+
+    /** The course's starter version of Sphere.java or Renderer.java, as the kit hands it out. */
+    static JavaMembers starter(String className, JavaMembers ours) {
+        try {
+            return JavaMembers.parse(className + ".java", StarterKit.source(className), ours);
+        } catch (JavaMembers.ParseException e) {
+            throw new IllegalStateException("the starter kit's " + className + ".java does not parse: "
+                    + e.getMessage(), e);
         }
     }
 
