@@ -25,16 +25,21 @@ import picocli.CommandLine.Spec;
 /**
  * {@code tick1 diff}: a student's Sphere.java and Renderer.java against ours, by meaning. Both
  * sides are parsed; comments, layout, the package, imports and the order of members are set
- * aside, members are matched by signature, and what still differs is shown as a unified diff,
- * member by member, with a hint where a change looks like a mistake of the diagnose catalogue.
+ * aside, members are matched by signature, a member that means the same as ours (or, where the
+ * starter code gives it whole, as the starter's) is left out ({@link SameMeaning}), and what still
+ * differs is shown as a unified diff, member by member, with a hint where a change looks like a
+ * mistake of the diagnose catalogue.
  */
 @Command(name = "diff",
         description = {
             "Compares your Sphere.java and Renderer.java with ours, ignoring comments, formatting, the package, "
-                    + "imports and the order of fields and methods. Fields, constructors and methods are matched "
-                    + "by signature; each one that differs is shown as a unified diff (- ours, + yours), with a "
-                    + "one-line hint and the handout section to reread where the change looks like a common "
-                    + "mistake. A file is recognised by its class. Colour on a terminal only."})
+                    + "imports, the order of fields and methods, the names of locals and parameters, this. on a "
+                    + "field, parentheses that do not change the expression, and the order of declarations that "
+                    + "do not depend on each other. Fields, constructors and methods are matched by signature; each "
+                    + "one that still differs from ours (and, for what the starter code gives whole, from the "
+                    + "starter's) is shown as a unified diff (- ours, + yours), with a one-line hint and the "
+                    + "handout section to reread where the change looks like a common mistake. A file is "
+                    + "recognised by its class. Colour on a terminal only."})
 public final class DiffCommand implements Callable<Integer> {
 
     @ExitStatus("nothing differs in meaning (and nothing is printed)")
