@@ -16,6 +16,8 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.FutureTask;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -57,15 +59,39 @@ public final class DiffCommand implements Callable<Integer> {
     @Parameters(arity = "1..2", paramLabel = "FILE.java", description = "Your Sphere.java and/or Renderer.java.")
     private List<Path> files;
 
+    /**
+     * The stack of the thread that parses and compares: both recurse through the syntax tree, so
+     * code nested a few hundred deep (1 + 1 + ..., or ((...))) would overflow an ordinary thread's.
+     */
+    private static final long DEEP_STACK = 256L << 20;
+
     @Override
-    public Integer call() {
+    public Integer call() throws InterruptedException {
+        FutureTask<Integer> task = new FutureTask<>(this::compareFiles);
+        Thread worker = new Thread(null, task, "tick1 diff", DEEP_STACK);
+        worker.start();
+        try {
+            return task.get();
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof RuntimeException unchecked) {
+                throw unchecked;
+            }
+            if (e.getCause() instanceof Error error) {
+                throw error;
+            }
+            throw new IllegalStateException(e.getCause());
+        }
+    }
+
+    private int compareFiles() {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         List<JavaMembers> theirs = new ArrayList<>();
         Set<String> classes = new LinkedHashSet<>();
         for (Path file : files) {
             try {
-                JavaMembers parsed = JavaMembers.parse(file.toString(), read(file));
+                JavaMembers parsed = JavaMembers.parse(file.toString(), read(file),
+                        className -> StarterKit.STUDENT_CLASSES.contains(className) ? ours(className) : null);
                 if (!StarterKit.STUDENT_CLASSES.contains(parsed.className())) {
                     err.println("tick1 diff: " + file + ": class " + parsed.className()
                             + ": expected Sphere or Renderer, the two classes of the tick");
@@ -76,12 +102,16 @@ public final class DiffCommand implements Callable<Integer> {
                             + " class: give one Sphere.java and one Renderer.java");
                     return EXIT_CANNOT_COMPARE;
                 }
-                theirs.add(JavaMembers.parse(file.toString(), read(file), ours(parsed.className())));
+                theirs.add(parsed);
             } catch (JavaMembers.ParseException e) {
                 err.println("tick1 diff: " + e.getMessage());
                 return EXIT_CANNOT_COMPARE;
             } catch (IOException e) {
                 err.println("tick1 diff: " + file + ": " + IoErrors.reason(e));
+                return EXIT_CANNOT_COMPARE;
+            } catch (StackOverflowError e) {
+                err.println("tick1 diff: " + file + ": expressions or blocks nested too deeply to compare; "
+                        + "expected code nested at most a few thousand deep");
                 return EXIT_CANNOT_COMPARE;
             }
         }
@@ -174,7 +204,7 @@ public final class DiffCommand implements Callable<Integer> {
     /** The course's starter version of Sphere.java or Renderer.java, as the kit hands it out. */
     static JavaMembers starter(String className, JavaMembers ours) {
         try {
-            return JavaMembers.parse(className + ".java", StarterKit.source(className), ours);
+            return JavaMembers.parse(className + ".java", StarterKit.source(className), name -> ours);
         } catch (JavaMembers.ParseException e) {
             throw new IllegalStateException("the starter kit's " + className + ".java does not parse: "
                     + e.getMessage(), e);

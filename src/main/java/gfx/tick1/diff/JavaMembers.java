@@ -23,6 +23,7 @@ import com.github.javaparser.ast.expr.ThisExpr;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Function;
 import java.util.stream.Collectors;
 
 /**
@@ -66,7 +67,7 @@ public record JavaMembers(String className, Map<String, Member> members) {
 
     /** Parses {@code source}; {@code name} is the file's name for messages ("Sphere.java:12:5: ..."). */
     public static JavaMembers parse(String name, String source) throws ParseException {
-        return parse(name, source, null);
+        return parse(name, source, className -> null);
     }
 
     /**
@@ -74,6 +75,12 @@ public record JavaMembers(String className, Map<String, Member> members) {
      * declarations that {@code like} (ours; null for none) has in the order they have there.
      */
     public static JavaMembers parse(String name, String source, JavaMembers like) throws ParseException {
+        return parse(name, source, className -> like);
+    }
+
+    /** As {@link #parse(String, String, JavaMembers)}, with the members to be like found by the class's name. */
+    static JavaMembers parse(String name, String source, Function<String, JavaMembers> likeOf)
+            throws ParseException {
         JavaParser parser = new JavaParser(new ParserConfiguration()
                 .setLanguageLevel(ParserConfiguration.LanguageLevel.JAVA_17));
         ParseResult<CompilationUnit> result = parser.parse(source);
@@ -91,6 +98,7 @@ public record JavaMembers(String className, Map<String, Member> members) {
         dropParenthesesThatChangeNothing(type);
         dropThisBeforeMethodCalls(type);
         SameMeaning meaning = new SameMeaning(type);
+        JavaMembers like = likeOf.apply(type.getNameAsString());
         Map<String, Member> members = new LinkedHashMap<>();
         for (BodyDeclaration<?> member : type.getMembers()) {
             boolean todo = member.getAllContainedComments().stream()

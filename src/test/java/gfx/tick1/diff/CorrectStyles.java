@@ -27,6 +27,14 @@ public final class CorrectStyles {
             return new Style(name, replaceOnce(sphere, text, replacement), renderer, changedMembers);
         }
 
+        /** Every whole-word {@code name} in Sphere.java renamed {@code to}. */
+        Style sphereRenamed(String name, String to) {
+            if (!sphere.matches("(?s).*\\b" + name + "\\b.*")) {
+                throw new IllegalArgumentException(name + " is not in Sphere.java");
+            }
+            return new Style(this.name, sphere.replaceAll("\\b" + name + "\\b", to), renderer, changedMembers);
+        }
+
         Style renderer(String text, String replacement) {
             return new Style(name, sphere, replaceOnce(renderer, text, replacement), changedMembers);
         }
@@ -68,17 +76,14 @@ public final class CorrectStyles {
     /** Solutions that differ from ours only in what cannot change the meaning: diff exits 0 on them. */
     public static List<Style> layoutOnly() {
         return List.of(
-                correct("renamed locals").sphere("discriminant", "disc").sphere("double s1", "double near")
-                        .sphere("double s2", "double far").sphere("s1 > 0 ? s1 : s2", "near > 0 ? near : far")
-                        .sphere("Vector3 point", "Vector3 hitPoint")
+                correct("renamed locals").sphereRenamed("discriminant", "disc").sphereRenamed("s1", "near")
+                        .sphereRenamed("s2", "far").sphere("Vector3 point", "Vector3 hitPoint")
                         .sphere("getNormalAt(point)", "getNormalAt(hitPoint)")
                         .sphere("new RaycastHit(this, s, point, normal)", "new RaycastHit(this, s, hitPoint, normal)")
                         .renderer("Vector3 linearRGB = trace(scene, ray);", "Vector3 pixel = trace(scene, ray);")
                         .renderer("linearRGB.toRGB()", "pixel.toRGB()"),
-                correct("the two roots' names exchanged")
-                        .sphere("double s1 = (-b - ", "double t2 = (-b - ")
-                        .sphere("double s2 = (-b + ", "double t1 = (-b + ")
-                        .sphere("s1 > 0 ? s1 : s2", "t2 > 0 ? t2 : t1"),
+                correct("the two roots' names exchanged").sphereRenamed("s1", "swapped").sphereRenamed("s2", "s1")
+                        .sphereRenamed("swapped", "s2"),
                 correct("renamed parameters")
                         .renderer("illuminate(Scene scene, Sphere object, Vector3 P, Vector3 N) {",
                                 "illuminate(Scene world, Sphere object, Vector3 P, Vector3 N) {")

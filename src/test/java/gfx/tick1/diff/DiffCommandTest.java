@@ -246,6 +246,18 @@ class DiffCommandTest {
         assertThat(run.out()).isEmpty();
     }
 
+    /** Parsing and comparing recurse through the tree: code nested thousands deep must not overflow. */
+    @Test
+    void codeNestedThousandsDeepIsCompared() throws IOException {
+        String nested = "(".repeat(3000) + "2 * a" + ")".repeat(3000);
+        Path file = write("Sphere.java", ours("Sphere").replace("double a = D.dot(D);", "double a = D.dot(D);\n"
+                + "        double deep = " + nested + ";"));
+        CliRun run = CliRun.of("diff", file.toString());
+        assertThat(run.status()).as(run.err()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(run.out()).contains("+    double deep = 2 * a;");
+        assertThat(run.err()).isEmpty();
+    }
+
     @Test
     void aFileOfAnotherClassIsOneLineAndExitTwo() throws IOException {
         Path file = write("Camera.java", "package gfx.tick1; public class Camera { }");
