@@ -24,6 +24,7 @@ import com.github.javaparser.ast.stmt.ForStmt;
 import com.github.javaparser.ast.stmt.LocalClassDeclarationStmt;
 import com.github.javaparser.ast.stmt.LocalRecordDeclarationStmt;
 import com.github.javaparser.ast.stmt.Statement;
+import com.github.javaparser.ast.stmt.SwitchEntry;
 import com.github.javaparser.ast.stmt.SwitchStmt;
 import com.github.javaparser.ast.stmt.TryStmt;
 import java.util.ArrayDeque;
@@ -49,7 +50,7 @@ import java.util.Set;
  *     canonical text first.</li>
  * </ul>
  * A member with a construct whose scopes are not followed here (a local or anonymous class, a
- * pattern, try-with-resources, a nested type) is left as it is.
+ * pattern, try-with-resources, a nested type, a name as a case label) is left as it is.
  */
 final class LocalNames {
 
@@ -98,7 +99,10 @@ final class LocalNames {
                 && member.findAll(PatternExpr.class).isEmpty()
                 && member.findAll(TypeDeclaration.class).isEmpty()
                 && member.findAll(ObjectCreationExpr.class).stream().allMatch(c -> c.getAnonymousClassBody().isEmpty())
-                && member.findAll(TryStmt.class).stream().allMatch(t -> t.getResources().isEmpty());
+                && member.findAll(TryStmt.class).stream().allMatch(t -> t.getResources().isEmpty())
+                // A name as a case label may be an enum constant, which no local can shadow.
+                && member.findAll(SwitchEntry.class).stream()
+                        .allMatch(entry -> entry.getLabels().stream().noneMatch(label -> label instanceof NameExpr));
     }
 
     private void walk(Node node) {
