@@ -55,7 +55,6 @@ public final class CompareCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
         if (tolerance < 0 || tolerance > 255) {
             // Reported and answered with exit status 2 like any other usage error (the start-up's handler).
             throw new ParameterException(spec.commandLine(), "--tolerance " + tolerance + ": must be from 0 to 255");

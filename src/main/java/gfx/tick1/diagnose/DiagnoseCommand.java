@@ -68,7 +68,6 @@ public final class DiagnoseCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
         BufferedImage image;
         Map<String, Scene> scenes = new LinkedHashMap<>();
         try {

@@ -86,7 +86,6 @@ public final class DiffCommand implements Callable<Integer> {
 
     private int compareFiles() {
         PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
         List<JavaMembers> theirs = new ArrayList<>();
         Set<String> classes = new LinkedHashSet<>();
         for (Path file : files) {

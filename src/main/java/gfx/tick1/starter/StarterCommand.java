@@ -42,7 +42,6 @@ public final class StarterCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        PrintWriter err = spec.commandLine().getErr();
         List<KitFile> files = StarterKit.files();
         if (!force) {
             for (KitFile file : files) {
