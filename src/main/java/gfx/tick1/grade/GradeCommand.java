@@ -103,7 +103,7 @@ public final class GradeCommand implements Callable<Integer> {
 
         @Option(names = "--jobs", paramLabel = "N",
                 description = "With --submissions: how many submissions to grade at once, each in a sandbox of its "
-                        + "own (default: the number of cores, ${DEFAULT-VALUE} here).")
+                        + "own (default: the number of cores).")
         private int jobs = Runtime.getRuntime().availableProcessors();
 
         @Option(names = "--max-grade", paramLabel = "G",
