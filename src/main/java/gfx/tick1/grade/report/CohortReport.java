@@ -28,9 +28,6 @@ public final class CohortReport {
     /** The report folder's page of the whole cohort. */
     public static final String INDEX = "index.html";
 
-    /** The gradebook the grader writes beside the index; the index links to it when it is there. */
-    static final String GRADES = "grades.csv";
-
     private CohortReport() {
     }
 
@@ -59,8 +56,8 @@ public final class CohortReport {
         }
         ReportFiles.write(reportFolder.resolve(FeedbackZip.NAME), out -> FeedbackZip.write(reportFolder, results, out));
         List<String> beside = new ArrayList<>(List.of(FeedbackZip.NAME));
-        if (Files.isRegularFile(reportFolder.resolve(GRADES))) {
-            beside.add(GRADES);
+        if (Files.isRegularFile(reportFolder.resolve(ReportFiles.GRADES))) {
+            beside.add(ReportFiles.GRADES);
         }
         ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grades, beside));
     }

@@ -18,6 +18,9 @@ public final class ReportFiles {
     /** The report folder's sub-folder holding one folder of feedback per student. */
     static final String FEEDBACK = "feedback";
 
+    /** The gradebook in the report folder, in the form of Moodle's grading worksheet. */
+    public static final String GRADES = "grades.csv";
+
     /** Writes a file's bytes onto a stream; the stream is closed by the caller. */
     @FunctionalInterface
     public interface Content {
@@ -38,17 +41,39 @@ public final class ReportFiles {
     }
 
     /**
-     * Whether {@code name} is one plain entry of a folder: not empty, not {@code .} or {@code ..},
-     * and without a separator or NUL. Only such names are joined to the report folder, so nothing
-     * a submission is called can place a file, or a link, outside it.
+     * {@code name} as one plain entry of a folder, the one way the report makes a name safe: a
+     * separator, NUL, a C0 or C1 control character or a bidirectional formatting mark becomes
+     * {@code _} (a control would be obeyed by a terminal listing the folder, a bidi mark can make
+     * one name read as another), and an empty name, {@code .} or {@code ..} gains a leading
+     * {@code _}. Moodle's own folder names pass unchanged.
+     */
+    public static String plainName(String name) {
+        StringBuilder out = new StringBuilder(name.length());
+        for (int i = 0; i < name.length(); i++) {
+            char c = name.charAt(i);
+            out.append(c == '/' || c == '\\' || c < 0x20 || c >= 0x7F && c <= 0x9F || isBidiMark(c) ? '_' : c);
+        }
+        String plain = out.toString();
+        return plain.isEmpty() || plain.equals(".") || plain.equals("..") ? "_" + plain : plain;
+    }
+
+    /** The marks that change the direction of text: LRM, RLM, ALM and the embeddings, overrides and isolates. */
+    private static boolean isBidiMark(char c) {
+        return c == '\u200E' || c == '\u200F' || c == '\u061C' || c >= '\u202A' && c <= '\u202E'
+                || c >= '\u2066' && c <= '\u2069';
+    }
+
+    /**
+     * Whether {@code name} is one plain entry of a folder, as {@link #plainName} makes it. Only such
+     * names are joined to the report folder, so nothing a submission is called can place a file,
+     * or a link, outside it.
      */
     static boolean isPlainName(String name) {
-        return name != null && !name.isEmpty() && !name.equals(".") && !name.equals("..")
-                && name.indexOf('/') < 0 && name.indexOf('\\') < 0 && name.indexOf('\0') < 0;
+        return name != null && plainName(name).equals(name);
     }
 
     /** {@code report/feedback/<folder>}; the folder's name must be plain (see {@link #isPlainName}). */
-    static Path feedbackFolder(Path report, String folder) {
+    public static Path feedbackFolder(Path report, String folder) {
         if (!isPlainName(folder)) {
             throw new IllegalArgumentException("a submission folder named \"" + folder
                     + "\" cannot be a folder of the report: it must be one plain name");
