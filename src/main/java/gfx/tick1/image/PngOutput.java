@@ -2,6 +2,7 @@ package gfx.tick1.image;
 
 import gfx.tick1.io.IoErrors;
 import java.awt.image.BufferedImage;
+import java.awt.image.RenderedImage;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.AccessDeniedException;
@@ -56,6 +57,24 @@ public final class PngOutput {
     }
 
     static void write(BufferedImage image, Path target, Encoder encoder) throws IOException {
+        write(target, out -> encoder.encode(image, out));
+    }
+
+    /**
+     * Writes a PNG already encoded ({@link #write(RenderedImage, OutputStream)} into memory) to
+     * {@code target}, as whole as {@link #write(BufferedImage, Path)} writes one.
+     */
+    public static void write(byte[] png, Path target) throws IOException {
+        write(target, out -> out.write(png));
+    }
+
+    /** What goes into the file. */
+    @FunctionalInterface
+    private interface Contents {
+        void writeTo(OutputStream out) throws IOException;
+    }
+
+    private static void write(Path target, Contents contents) throws IOException {
         Path given = target.toAbsolutePath();
         if (Files.isDirectory(given)) {
             throw new IOException("is a directory, expected a file name for the PNG");
@@ -67,7 +86,7 @@ public final class PngOutput {
             // /dev/stdout lead to /proc/self/fd/1 and on to a name such as "pipe:[1234]", which is
             // no path at all.
             try (OutputStream out = Files.newOutputStream(given)) {
-                encoder.encode(image, out);
+                contents.writeTo(out);
             }
             return;
         }
@@ -84,7 +103,7 @@ public final class PngOutput {
         Runtime.getRuntime().addShutdownHook(deleteOnShutdown);
         try {
             try (OutputStream out = Files.newOutputStream(temporary)) {
-                encoder.encode(image, out);
+                contents.writeTo(out);
             }
             try {
                 Files.move(temporary, absolute, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
@@ -145,12 +164,20 @@ public final class PngOutput {
      * Encodes {@code image} as PNG onto a stream (standard output, for {@code --output -}) through
      * ImageIO's own PNG writer. The stream is flushed, not closed.
      */
-    public static void write(BufferedImage image, OutputStream out) throws IOException {
+    public static void write(RenderedImage image, OutputStream out) throws IOException {
         write(image, out, DEFLATE_LEVEL);
     }
 
+    /**
+     * Loads ImageIO's registry and its PNG writer, so that a write started later (on another
+     * thread, say, while the image is still being drawn) does not wait for them.
+     */
+    public static void load() {
+        ImageIO.getImageWritersByFormatName("png").next().dispose();
+    }
+
     /** As {@link #write(BufferedImage, OutputStream)}, at a deflate level from 0 (none) to 9 (best). */
-    public static void write(BufferedImage image, OutputStream out, int deflateLevel) throws IOException {
+    public static void write(RenderedImage image, OutputStream out, int deflateLevel) throws IOException {
         ImageWriter writer = ImageIO.getImageWritersByFormatName("png").next();
         ImageWriteParam param = writer.getDefaultWriteParam();
         param.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
