@@ -148,11 +148,16 @@ public final class RenderCommand implements Callable<Integer> {
         return !spec.commandLine().getParseResult().hasMatchedOption("--input");
     }
 
+    /** What picocli read: the options the render depends on. */
+    RenderOptions options() {
+        return new RenderOptions(input, strict, width, height, samples, intersection, threads);
+    }
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         timings.end("command line");
-        RenderOptions options = new RenderOptions(input, strict, width, height, samples, intersection, threads);
+        RenderOptions options = options();
         String usage = options.problem();
         RenderJob job = ahead != null && ahead.options().equals(options) ? ahead : null;
         if (ahead != null && job == null) {

@@ -19,6 +19,22 @@ record RenderOptions(String input, boolean strict, int width, int height, int sa
     /** The largest --threads accepted. */
     static final int MAX_THREADS = 256;
 
+    /**
+     * Written out: a record's own equals is linked on its first call through method handles
+     * (ObjectMethods), which costs a one-off render several milliseconds on its critical path.
+     */
+    @Override
+    public boolean equals(Object other) {
+        return other instanceof RenderOptions o && input.equals(o.input) && strict == o.strict && width == o.width
+                && height == o.height && samples == o.samples && intersection == o.intersection
+                && (threads == null ? o.threads == null : threads.equals(o.threads));
+    }
+
+    @Override
+    public int hashCode() {
+        return ((input.hashCode() * 31 + width) * 31 + height) * 31 + samples;
+    }
+
     /** What is wrong with these options that picocli's types cannot say (ranges, memory), or null. */
     String problem() {
         if (width < 1 || width > MAX_DIMENSION) {

@@ -13,6 +13,7 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.FileAttribute;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.security.SecureRandom;
 import javax.imageio.IIOException;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
@@ -170,10 +171,14 @@ public final class PngOutput {
 
     /**
      * Loads ImageIO's registry and its PNG writer, so that a write started later (on another
-     * thread, say, while the image is still being drawn) does not wait for them.
+     * thread, say, while the image is still being drawn) does not wait for them; and what the
+     * temporary file beside the target needs (its name's random part, its permissions), which
+     * is most of the time a small PNG takes to be written.
      */
     public static void load() {
         ImageIO.getImageWritersByFormatName("png").next().dispose();
+        new SecureRandom().nextLong();
+        PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-rw-rw-"));
     }
 
     /** As {@link #write(BufferedImage, OutputStream)}, at a deflate level from 0 (none) to 9 (best). */

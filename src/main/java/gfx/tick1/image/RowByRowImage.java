@@ -15,6 +15,9 @@ import java.util.Vector;
  * bottom ({@link #getData(Rectangle)}), and each request waits here until every row down to the
  * one asked for is {@linkplain #rowDone done}. The pixels are those of the image it wraps, which
  * only the renderer writes, each row once and before it is declared done.
+ *
+ * <p>It is tiled a row a tile, so that a writer that reads whole tiles (newer JDKs' PNG writer
+ * reads a one-tile image's tile at once) also gets the rows one at a time.
  */
 public final class RowByRowImage implements RenderedImage {
 
@@ -79,8 +82,8 @@ public final class RowByRowImage implements RenderedImage {
 
     @Override
     public Raster getTile(int tileX, int tileY) {
-        awaitRows(done.length);
-        return image.getTile(tileX, tileY);
+        awaitRows(tileY + 1);
+        return image.getData(new Rectangle(0, tileY, image.getWidth(), 1));
     }
 
     @Override
@@ -111,7 +114,7 @@ public final class RowByRowImage implements RenderedImage {
 
     @Override
     public SampleModel getSampleModel() {
-        return image.getSampleModel();
+        return image.getSampleModel().createCompatibleSampleModel(image.getWidth(), 1);
     }
 
     @Override
@@ -126,51 +129,51 @@ public final class RowByRowImage implements RenderedImage {
 
     @Override
     public int getMinX() {
-        return image.getMinX();
+        return 0;
     }
 
     @Override
     public int getMinY() {
-        return image.getMinY();
+        return 0;
     }
 
     @Override
     public int getNumXTiles() {
-        return image.getNumXTiles();
+        return 1;
     }
 
     @Override
     public int getNumYTiles() {
-        return image.getNumYTiles();
+        return image.getHeight();
     }
 
     @Override
     public int getMinTileX() {
-        return image.getMinTileX();
+        return 0;
     }
 
     @Override
     public int getMinTileY() {
-        return image.getMinTileY();
+        return 0;
     }
 
     @Override
     public int getTileWidth() {
-        return image.getTileWidth();
+        return image.getWidth();
     }
 
     @Override
     public int getTileHeight() {
-        return image.getTileHeight();
+        return 1;
     }
 
     @Override
     public int getTileGridXOffset() {
-        return image.getTileGridXOffset();
+        return 0;
     }
 
     @Override
     public int getTileGridYOffset() {
-        return image.getTileGridYOffset();
+        return 0;
     }
 }
