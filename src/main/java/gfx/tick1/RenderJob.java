@@ -9,6 +9,7 @@ import gfx.tick1.scene.SceneLoader;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -68,6 +69,9 @@ final class RenderJob {
         if (current != null) {
             current.cancel();
         }
+        // The PNG thread is waiting for the image or its rows: neither will come.
+        started.completeExceptionally(new CancellationException("not the render asked for"));
+        started.thenAccept(image -> image.abandon("not the render asked for"));
     }
 
     private void loadAndRender() {
