@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.diagnose.Variant;
+import gfx.tick1.grade.grading.SubmissionGrader;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -45,7 +46,7 @@ class GradeCommandTest {
         CliRun run = grade(StudentSolution.correct());
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
         assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS")
-                .endsWith(GradeCommand.CONGRATULATIONS + System.lineSeparator());
+                .endsWith(SubmissionGrader.CONGRATULATIONS + System.lineSeparator());
         assertThat(run.err()).isEmpty();
     }
 
@@ -143,7 +144,7 @@ class GradeCommandTest {
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
         assertThat(run.out()).as(run.transcript())
                 .contains("tick1.xml: FAIL", "hidden.xml: FAIL", "FAILED: 2 of 2 scenes wrong.")
-                .doesNotContain(GradeCommand.CONGRATULATIONS);
+                .doesNotContain(SubmissionGrader.CONGRATULATIONS);
         assertThat(run.out().lines().filter(line -> line.startsWith("  closest: ")))
                 .as(run.transcript()).hasSize(2)
                 .allMatch(line -> line.startsWith("  closest: " + mistake.title() + " (100.000% of pixels exact"));
@@ -177,7 +178,7 @@ class GradeCommandTest {
         assertThat(run.out()).startsWith("FAILED: the code does not compile (1 error):")
                 .contains(sphere + ":" + StudentSolution.sphereLineOf(NEAR_ROOT) + ":")
                 .contains("error: ';' expected")
-                .doesNotContain("PASS", GradeCommand.CONGRATULATIONS);
+                .doesNotContain("PASS", SubmissionGrader.CONGRATULATIONS);
     }
 
     @Test
@@ -194,7 +195,7 @@ class GradeCommandTest {
                 "--time-limit", "3");
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
         assertThat(run.out()).contains("tick1.xml: FAIL: no image within the time limit of 3 s (an infinite loop?)",
-                "hidden.xml: FAIL: not rendered").doesNotContain(GradeCommand.CONGRATULATIONS);
+                "hidden.xml: FAIL: not rendered").doesNotContain(SubmissionGrader.CONGRATULATIONS);
     }
 
     @Test
