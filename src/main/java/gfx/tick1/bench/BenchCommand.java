@@ -2,7 +2,7 @@ package gfx.tick1.bench;
 
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.fast.FastRenderer;
-import gfx.tick1.grade.CohortTiming;
+import gfx.tick1.grade.cohort.CohortTiming;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.io.IoErrors;

@@ -1,6 +1,6 @@
 package gfx.tick1.bench;
 
-import gfx.tick1.grade.CohortTiming;
+import gfx.tick1.grade.cohort.CohortTiming;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
