@@ -16,6 +16,7 @@ import java.io.OutputStream;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
@@ -47,6 +48,7 @@ public final class RenderCommand implements Callable<Integer> {
     public static final int EXIT_OK = 0;
     @ExitStatus("the scene file is missing, unreadable or invalid")
     public static final int EXIT_BAD_SCENE = 1;
+    @ExitStatus("the command line is wrong, or output.png exists and no -o was given")
     public static final int EXIT_USAGE = ExitStatuses.EXIT_USAGE;
     @ExitStatus("the image could not be written (any existing file is left as it was)")
     public static final int EXIT_CANNOT_WRITE = 3;
@@ -66,8 +68,8 @@ public final class RenderCommand implements Callable<Integer> {
     private String input;
 
     @Option(names = {"-o", "--output"}, paramLabel = "IMAGE.png", defaultValue = "output.png",
-            description = "The PNG file to write, or - for standard output (default: ${DEFAULT-VALUE}). "
-                    + "It is replaced only by a complete image.")
+            description = "The PNG file to write, or - for standard output (default: ${DEFAULT-VALUE}, "
+                    + "never replaced unless named). It is replaced only by a complete image.")
     private String output;
 
     @Option(names = "--width", paramLabel = "PIXELS", defaultValue = "640",
@@ -143,6 +145,15 @@ public final class RenderCommand implements Callable<Integer> {
         return !spec.commandLine().getParseResult().hasMatchedOption("--input");
     }
 
+    /**
+     * Whether the image would replace a file the user did not name: the default output.png is
+     * the name the handout's own program writes, so in a student's folder it is often their render.
+     */
+    private boolean wouldReplaceAnUnnamedFile() {
+        return !spec.commandLine().getParseResult().hasMatchedOption("--output")
+                && Files.exists(Path.of(output), LinkOption.NOFOLLOW_LINKS);
+    }
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
@@ -150,6 +161,12 @@ public final class RenderCommand implements Callable<Integer> {
         String usage = checkOptions();
         if (usage != null) {
             throw new ParameterException(spec.commandLine(), usage);
+        }
+
+        if (wouldReplaceAnUnnamedFile()) {
+            err.println("tick1: " + output + " already exists (it may be your own render) and -o was not given; "
+                    + "-o " + output + " replaces it, -o OTHER.png writes another");
+            return EXIT_USAGE;
         }
 
         Scene scene;

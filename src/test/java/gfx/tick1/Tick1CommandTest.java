@@ -83,6 +83,30 @@ class Tick1CommandTest {
     }
 
     @Test
+    void withoutOutputItWritesOutputPngInTheCurrentFolder() throws IOException, InterruptedException {
+        Files.copy(Path.of("scenes/basic_scene.xml"), dir.resolve("basic_scene.xml"));
+        CliRun run = CliRun.inFolder(dir, "--width", "16", "--height", "12");
+        assertThat(run.status()).as(run.transcript()).isZero();
+        assertThat(ImageIO.read(dir.resolve("output.png").toFile()).getWidth()).isEqualTo(16);
+    }
+
+    @Test
+    void withoutOutputAnExistingOutputPngIsNeverReplaced() throws IOException, InterruptedException {
+        // output.png is what the handout's own program writes: in a student's folder, their render.
+        Files.copy(Path.of("scenes/basic_scene.xml"), dir.resolve("basic_scene.xml"));
+        Path theirs = EarlierImage.writeTo(dir.resolve("output.png"));
+        CliRun run = CliRun.inFolder(dir, "--width", "16", "--height", "12");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(RenderCommand.EXIT_USAGE);
+        assertThat(run.err()).as("one line with the way out").isEqualTo("tick1: output.png already exists (it may "
+                + "be your own render) and -o was not given; -o output.png replaces it, -o OTHER.png writes another"
+                + System.lineSeparator());
+        assertThat(theirs).as("the student's image").hasBinaryContent(EarlierImage.bytes());
+        assertThat(CliRun.inFolder(dir, "-o", "output.png", "--width", "16", "--height", "12").status())
+                .as("named, it is replaced").isZero();
+        assertThat(ImageIO.read(theirs.toFile()).getWidth()).isEqualTo(16);
+    }
+
+    @Test
     void aMissingInputIsNamed() throws IOException {
         Path output = existingOutput();
         CliRun run = CliRun.of("-i", dir.resolve("missing.xml").toString(), "-o", output.toString());
