@@ -73,10 +73,10 @@ public final class DiffCommand implements Callable<Integer> {
                 }
                 theirs.add(parsed);
             } catch (JavaMembers.ParseException e) {
-                err.println("tick1 diff: " + e.getMessage());
+                err.println("tick1 diff: " + parseError(file, e));
                 return EXIT_CANNOT_COMPARE;
             } catch (IOException e) {
-                err.println("tick1 diff: " + file + ": " + IoErrors.reason(e));
+                err.println("tick1 diff: " + file + ": " + unreadable(file, e));
                 return EXIT_CANNOT_COMPARE;
             }
         }
@@ -149,6 +149,31 @@ public final class DiffCommand implements Callable<Integer> {
 
     private static String read(Path file) throws IOException {
         return Files.readString(file, StandardCharsets.UTF_8);
+    }
+
+    /**
+     * Why a file cannot be read, with the files meant where they can be seen: those of a folder
+     * given, or the file of that name in the starter kit's src/gfx/tick1/.
+     */
+    private static String unreadable(Path file, IOException e) {
+        if (Files.isDirectory(file)) {
+            List<String> inside = StarterKit.STUDENT_CLASSES.stream().map(name -> file.resolve(name + ".java"))
+                    .filter(Files::isRegularFile).map(Path::toString).toList();
+            return "a folder, not a file" + (inside.isEmpty() ? "; give your Sphere.java and Renderer.java"
+                    : "; did you mean tick1 diff " + String.join(" ", inside) + "?");
+        }
+        Path name = file.getFileName();
+        Path inTheKit = name == null ? null : Path.of(StarterKit.SOURCE_FOLDER).resolve(name);
+        boolean there = inTheKit != null && !Files.exists(file) && Files.isRegularFile(inTheKit);
+        return IoErrors.reason(e) + (there ? "; did you mean " + inTheKit + "?" : "");
+    }
+
+    /** A parse error in one line: JavaParser's list of the tokens it expected says nothing to a student. */
+    private static String parseError(Path file, JavaMembers.ParseException e) {
+        if (!file.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".java")) {
+            return file + ": not Java source; give your Sphere.java and Renderer.java";
+        }
+        return e.getMessage().replaceFirst(", expected one of .*$", "");
     }
 
 
