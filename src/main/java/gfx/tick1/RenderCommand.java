@@ -3,6 +3,7 @@ package gfx.tick1;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.cli.ExitStatuses;
 import gfx.tick1.fast.FastRenderer;
+import gfx.tick1.image.ImageFormat;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.io.IoErrors;
 import gfx.tick1.render.SamplePattern;
@@ -210,6 +211,10 @@ public final class RenderCommand implements Callable<Integer> {
         }
         if (threads != null && (threads < 1 || threads > MAX_THREADS)) {
             return "--threads " + threads + ": must be from 1 to " + MAX_THREADS;
+        }
+        if (ImageFormat.ofName(output).filter(format -> format != ImageFormat.PNG).isPresent()) {
+            return "--output " + output + ": tick1 writes PNG images only (every pixel exact); name it "
+                    + ImageFormat.asPng(output);
         }
         // The renderer holds the frame twice (its pixel array and the image), 4 bytes a pixel each,
         // and the PNG encoder needs room of its own: half the heap is a safe ceiling.

@@ -107,6 +107,18 @@ class Tick1CommandTest {
     }
 
     @Test
+    void anOutputNamedAsAnotherImageFormatIsRefusedWithThePngName() throws IOException {
+        Path jpeg = dir.resolve("out.JPG");
+        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", jpeg.toString(), "--width", "8", "--height", "6");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(RenderCommand.EXIT_USAGE);
+        assertThat(run.err()).isEqualTo("tick1: --output " + jpeg + ": tick1 writes PNG images only (every pixel "
+                + "exact); name it " + dir.resolve("out.png") + " (see tick1 --help)" + System.lineSeparator());
+        assertThat(jpeg).doesNotExist();
+        assertThat(CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.resolve("out.tmp").toString(), "--width", "8",
+                "--height", "6").status()).as("a name of no image format is the user's choice").isZero();
+    }
+
+    @Test
     void aMissingInputIsNamed() throws IOException {
         Path output = existingOutput();
         CliRun run = CliRun.of("-i", dir.resolve("missing.xml").toString(), "-o", output.toString());

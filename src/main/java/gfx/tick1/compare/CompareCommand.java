@@ -2,6 +2,7 @@ package gfx.tick1.compare;
 
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.image.ImageDifference;
+import gfx.tick1.image.ImageFormat;
 import gfx.tick1.image.PngInput;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.io.IoErrors;
@@ -58,6 +59,11 @@ public final class CompareCommand implements Callable<Integer> {
         if (tolerance < 0 || tolerance > 255) {
             // Reported and answered with exit status 2 like any other usage error (the start-up's handler).
             throw new ParameterException(spec.commandLine(), "--tolerance " + tolerance + ": must be from 0 to 255");
+        }
+        if (heatMapFile != null && ImageFormat.ofName(heatMapFile.toString()).filter(f -> f != ImageFormat.PNG)
+                .isPresent()) {
+            throw new ParameterException(spec.commandLine(), "--diff " + heatMapFile + ": the heat map is a PNG; "
+                    + "name it " + ImageFormat.asPng(heatMapFile.toString()));
         }
         ImageDifference difference;
         try {
