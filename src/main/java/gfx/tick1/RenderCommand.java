@@ -178,12 +178,12 @@ public final class RenderCommand implements Callable<Integer> {
                 loader.getWarnings().forEach(err::println);
             }
         } catch (InvalidPathException e) {
-            err.println(input + ": not a valid file name");
+            err.println("tick1: " + input + ": not a valid file name");
             return EXIT_BAD_SCENE;
         } catch (SceneException e) {
             boolean defaultSceneMissing = inputIsTheDefault() && !Files.exists(Path.of(input));
             String hint = defaultSceneMissing ? " (give a scene with -i SCENE.xml; see tick1 --help)" : "";
-            err.println(e.getMessage() + hint);
+            err.println("tick1: " + e.getMessage() + hint);
             return EXIT_BAD_SCENE;
         }
 
@@ -264,10 +264,10 @@ public final class RenderCommand implements Callable<Integer> {
                 PngOutput.write(image, Path.of(output));
             }
         } catch (InvalidPathException e) {
-            err.println(output + ": cannot write the image: not a valid file name");
+            err.println("tick1: " + output + ": cannot write the image: not a valid file name");
             return EXIT_CANNOT_WRITE;
         } catch (IOException e) {
-            err.println(output + ": cannot write the image: " + IoErrors.reason(e));
+            err.println("tick1: " + output + ": cannot write the image: " + IoErrors.reason(e));
             return EXIT_CANNOT_WRITE;
         }
         // Only a file is worth naming; and behind -o /dev/stdout the line would land in the PNG.

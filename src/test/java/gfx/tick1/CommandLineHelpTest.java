@@ -107,6 +107,10 @@ class CommandLineHelpTest {
         assertThat(command.err()).contains("did you mean compare?").doesNotContain("preview");
         assertThat(command.err().lines()).hasSize(1);
 
+        assertThat(command.err()).as("the word is a command, not 'arguments from index 0'")
+                .isEqualTo("tick1: unknown command 'compre'; did you mean compare? (see tick1 --help)"
+                        + System.lineSeparator());
+
         CliRun option = CliRun.of("--inp", "scene.xml");
         assertThat(option.err()).contains("did you mean --input?").doesNotContain("--intersection");
         assertThat(option.err().lines()).hasSize(1);
@@ -145,7 +149,7 @@ class CommandLineHelpTest {
     void aMissingDefaultSceneSaysHowToNameOne() {
         CliRun run = CliRun.of("-q", "-o", "-");
         assertThat(run.status()).as(run.transcript()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
-        assertThat(run.err()).isEqualTo("basic_scene.xml: no such file (give a scene with -i SCENE.xml; see "
+        assertThat(run.err()).isEqualTo("tick1: basic_scene.xml: no such file (give a scene with -i SCENE.xml; see "
                 + "tick1 --help)" + System.lineSeparator());
     }
 

@@ -61,7 +61,7 @@ class PreviewCommandTest {
     void aMissingSceneFileStopsItWithOneLine() {
         CliRun run = CliRun.of("preview", "no/such/scene.xml", "--no-open");
         assertThat(run.status()).isEqualTo(PreviewCommand.EXIT_NO_SCENE);
-        assertThat(run.err()).isEqualTo("no/such/scene.xml: no such file" + System.lineSeparator());
+        assertThat(run.err()).isEqualTo("tick1 preview: no/such/scene.xml: no such file" + System.lineSeparator());
         assertThat(run.out()).isEmpty();
     }
 

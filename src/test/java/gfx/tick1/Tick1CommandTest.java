@@ -123,7 +123,7 @@ class Tick1CommandTest {
         Path output = existingOutput();
         CliRun run = CliRun.of("-i", dir.resolve("missing.xml").toString(), "-o", output.toString());
         assertThat(run.status()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
-        assertThat(run.err().strip()).isEqualTo(dir.resolve("missing.xml") + ": no such file");
+        assertThat(run.err().strip()).isEqualTo("tick1: " + dir.resolve("missing.xml") + ": no such file");
         assertThat(output).hasBinaryContent(EarlierImage.bytes());
     }
 
@@ -133,7 +133,7 @@ class Tick1CommandTest {
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(),
                 "--width", "8", "--height", "8");
         assertThat(run.status()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
-        assertThat(run.err()).startsWith(output + ": cannot write the image: ").doesNotContain("\tat ");
+        assertThat(run.err()).startsWith("tick1: " + output + ": cannot write the image: ").doesNotContain("\tat ");
         assertThat(run.err().lines()).hasSize(1);
     }
 
@@ -151,8 +151,8 @@ class Tick1CommandTest {
     void outputThatIsADirectoryIsRefused() throws IOException {
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.toString(), "--width", "8", "--height", "8");
         assertThat(run.status()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
-        assertThat(run.err().strip())
-                .isEqualTo(dir + ": cannot write the image: is a directory, expected a file name for the PNG");
+        assertThat(run.err().strip()).isEqualTo("tick1: " + dir
+                + ": cannot write the image: is a directory, expected a file name for the PNG");
     }
 
     @Test

@@ -75,13 +75,13 @@ public final class PreviewCommand implements Callable<Integer> {
             try {
                 scenePath = Path.of(scene);
             } catch (InvalidPathException e) {
-                err.println(scene + ": not a valid file name");
+                err.println("tick1 preview: " + scene + ": not a valid file name");
                 return EXIT_NO_SCENE;
             }
             // Only a missing file stops the previewer: anything wrong inside it is shown on the page,
             // where a corrected file can be dropped.
             if (!Files.exists(scenePath)) {
-                err.println(scene + ": no such file");
+                err.println("tick1 preview: " + scene + ": no such file");
                 return EXIT_NO_SCENE;
             }
         }
