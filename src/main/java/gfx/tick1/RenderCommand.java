@@ -109,7 +109,8 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
     private boolean quiet;
 
-    @Option(names = "--timings", hidden = true, description = "Print where the run's time went.")
+    @Option(names = "--timings", description = "Print where the run's time went (start-up, scene, render, PNG) "
+            + "on standard error.")
     private boolean showTimings;
 
     private final Timings timings = new Timings();

@@ -160,6 +160,35 @@ class CommandLineHelpTest {
     }
 
     /** What {@code tick1 COMMAND --help} prints. */
+    /**
+     * Each command's summary in the top-level help's list fits in two lines at 80 columns, so that
+     * the list can be read at a glance. grade's summary is worded in its own package and not yet
+     * held to this.
+     */
+    @Test
+    void theTopLevelListGivesEachCommandAtMostTwoLines() {
+        String help = help("");
+        String list = help.substring(help.indexOf("Commands:"), help.indexOf("Exit status:"));
+        java.util.Map<String, Integer> lines = new java.util.LinkedHashMap<>();
+        String current = null;
+        for (String line : list.lines().skip(1).toList()) {
+            if (line.matches("  \\S.*")) {
+                current = line.strip().split("\\s+")[0];
+                lines.put(current, 1);
+            } else if (current != null && !line.isBlank()) {
+                lines.merge(current, 1, Integer::sum);
+            }
+        }
+        lines.remove("grade");
+        assertThat(lines).as("lines per command").isNotEmpty().allSatisfy((name, count) ->
+                assertThat(count).as(name).isLessThanOrEqualTo(2));
+    }
+
+    @Test
+    void timingsIsInTheRenderHelp() {
+        assertThat(help("")).contains("--timings");
+    }
+
     private static String help(String command) {
         CliRun run = command.isEmpty() ? CliRun.of("--help") : CliRun.of(command, "--help");
         assertThat(run.status()).as(run.transcript()).isZero();

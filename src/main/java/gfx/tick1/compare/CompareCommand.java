@@ -20,8 +20,9 @@ import picocli.CommandLine.Spec;
 
 /** {@code tick1 compare}: how far one image is from another, in figures and as a heat map. */
 @Command(name = "compare",
-        description = "Compares two images pixel by pixel: how many pixels differ, the largest and mean "
-                + "difference per channel (in levels of 0 to 255), PSNR and the bounding box of the differences.")
+        description = {"Compares two PNG images pixel by pixel.",
+            "It prints how many pixels differ, the largest and mean difference per channel (in levels of 0 to "
+                    + "255), PSNR and the bounding box of the differences."})
 public final class CompareCommand implements Callable<Integer> {
 
     @ExitStatus("every pixel is within the tolerance")

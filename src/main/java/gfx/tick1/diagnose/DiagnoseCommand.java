@@ -22,7 +22,7 @@ import picocli.CommandLine.Spec;
 
 /** {@code tick1 diagnose}: which stage of the handout, or which common mistake, an image shows. */
 @Command(name = "diagnose",
-        description = {
+        description = {"Says which stage of the handout or common mistake an image shows.",
             "Renders the scene as each entry of a catalogue (the handout's stages, the correct image and the "
                     + "mistakes students make) and ranks them by the share of pixels that match exactly and within "
                     + "one level. An entry is named as the answer only when its render matches every pixel (the "

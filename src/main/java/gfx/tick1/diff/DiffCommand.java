@@ -29,7 +29,7 @@ import picocli.CommandLine.Spec;
  * member by member, with a hint where a change looks like a mistake of the diagnose catalogue.
  */
 @Command(name = "diff",
-        description = {
+        description = {"Shows where your Sphere.java and Renderer.java differ from ours in meaning.",
             "Compares your Sphere.java and Renderer.java with ours, ignoring comments, formatting, the package, "
                     + "imports and the order of fields and methods. Fields, constructors and methods are matched "
                     + "by signature; each one that differs is shown as a unified diff (- ours, + yours), with a "
