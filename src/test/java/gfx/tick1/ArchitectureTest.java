@@ -1,12 +1,17 @@
 package gfx.tick1;
 
+import static com.tngtech.archunit.base.DescribedPredicate.not;
 import static com.tngtech.archunit.core.domain.JavaClass.Predicates.resideInAPackage;
+import static com.tngtech.archunit.core.domain.JavaClass.Predicates.resideInAnyPackage;
 import static com.tngtech.archunit.core.domain.JavaClass.Predicates.simpleNameEndingWith;
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import com.tngtech.archunit.base.DescribedPredicate;
+import com.tngtech.archunit.core.domain.JavaClass;
 import com.tngtech.archunit.core.domain.JavaClasses;
 import com.tngtech.archunit.core.importer.ClassFileImporter;
 import com.tngtech.archunit.core.importer.ImportOption;
@@ -17,10 +22,14 @@ import org.junit.jupiter.api.Test;
 /**
  * How the packages may depend on one another. The engine is layered, maths at the bottom:
  * {@code math <- scene <- render <- fast}; images, file-error wording and the commands' shared
- * help sit beside it; the commands use all of them, and the start-up ({@code gfx.tick1}: Tick1,
- * the render command) uses the commands. Nothing depends on the start-up.
+ * help sit beside it; the diagnosis of an image (which known mistake it shows) stands on them; the
+ * commands use all of them, and the start-up ({@code gfx.tick1}: Tick1, the render command) uses
+ * the commands. Nothing depends on the start-up.
  */
 class ArchitectureTest {
+
+    /** A subcommand's class: {@code DiagnoseCommand} lives beside the diagnosis it runs, but is a command. */
+    private static final DescribedPredicate<JavaClass> COMMAND = simpleNameEndingWith("Command");
 
     private static JavaClasses program;
 
@@ -45,23 +54,29 @@ class ArchitectureTest {
                 .layer("Images").definedBy("gfx.tick1.image..")
                 .layer("File errors").definedBy("gfx.tick1.io..")
                 .layer("Command help").definedBy("gfx.tick1.cli..")
-                .layer("Commands").definedBy("gfx.tick1.compare..", "gfx.tick1.diagnose..", "gfx.tick1.diff..",
+                .layer("Diagnosis").definedBy(resideInAPackage("gfx.tick1.diagnose..").and(not(COMMAND)))
+                .layer("Commands").definedBy(resideInAnyPackage("gfx.tick1.compare..", "gfx.tick1.diff..",
                         "gfx.tick1.grade..", "gfx.tick1.preview..", "gfx.tick1.bench..", "gfx.tick1.starter..")
+                        .or(resideInAPackage("gfx.tick1.diagnose..").and(COMMAND)))
                 .layer("Tools").definedBy("gfx.tick1.tools..")
                 .layer("Start-up").definedBy("gfx.tick1")
 
                 .whereLayer("Start-up").mayNotBeAccessedByAnyLayer()
                 .whereLayer("Tools").mayNotBeAccessedByAnyLayer()
                 .whereLayer("Commands").mayOnlyBeAccessedByLayers("Start-up")
-                .whereLayer("Command help").mayOnlyBeAccessedByLayers("Commands", "Start-up")
-                .whereLayer("Fast rendering").mayOnlyBeAccessedByLayers("Commands", "Start-up")
-                .whereLayer("Rendering").mayOnlyBeAccessedByLayers("Fast rendering", "Commands", "Tools", "Start-up")
-                .whereLayer("Scenes").mayOnlyBeAccessedByLayers("Rendering", "Fast rendering", "Commands", "Tools",
+                .whereLayer("Diagnosis").mayOnlyBeAccessedByLayers("Commands", "Start-up")
+                .whereLayer("Command help").mayOnlyBeAccessedByLayers("Diagnosis", "Commands", "Start-up")
+                .whereLayer("Fast rendering").mayOnlyBeAccessedByLayers("Diagnosis", "Commands",
                         "Start-up")
-                .whereLayer("Maths").mayOnlyBeAccessedByLayers("Scenes", "Rendering", "Fast rendering", "Commands",
+                .whereLayer("Rendering").mayOnlyBeAccessedByLayers("Fast rendering", "Diagnosis", "Commands", "Tools",
+                        "Start-up")
+                .whereLayer("Scenes").mayOnlyBeAccessedByLayers("Rendering", "Fast rendering", "Diagnosis", "Commands",
                         "Tools", "Start-up")
-                .whereLayer("Images").mayOnlyBeAccessedByLayers("Commands", "Tools", "Start-up")
-                .whereLayer("File errors").mayOnlyBeAccessedByLayers("Scenes", "Images", "Commands", "Start-up")
+                .whereLayer("Maths").mayOnlyBeAccessedByLayers("Scenes", "Rendering", "Fast rendering", "Diagnosis",
+                        "Commands", "Tools", "Start-up")
+                .whereLayer("Images").mayOnlyBeAccessedByLayers("Diagnosis", "Commands", "Tools", "Start-up")
+                .whereLayer("File errors").mayOnlyBeAccessedByLayers("Scenes", "Images", "Diagnosis", "Commands",
+                        "Start-up")
                 .check(program);
     }
 
@@ -75,9 +90,37 @@ class ArchitectureTest {
     }
 
     @Test
-    void aCohortsRecordsDoNotDependOnTheGradeCommand() {
-        noClasses().that().resideInAPackage("gfx.tick1.grade.cohort..")
-                .should().dependOnClassesThat().resideInAPackage("gfx.tick1.grade")
+    void theGradingHouseIsLayeredUnderItsCommands() {
+        layeredArchitecture().consideringOnlyDependenciesInLayers()
+                .layer("Grade commands").definedBy("gfx.tick1.grade")
+                .layer("Cohort").definedBy("gfx.tick1.grade.cohort..")
+                .layer("Report").definedBy("gfx.tick1.grade.report..")
+                .layer("Grading").definedBy("gfx.tick1.grade.grading..")
+                .layer("Intake").definedBy("gfx.tick1.grade.intake..")
+                .layer("Sandbox").definedBy("gfx.tick1.grade.sandbox..")
+                .layer("Harness").definedBy("gfx.tick1.grade.harness..")
+                .layer("Records").definedBy("gfx.tick1.grade.model..")
+
+                .whereLayer("Grade commands").mayNotBeAccessedByAnyLayer()
+                .whereLayer("Cohort").mayOnlyBeAccessedByLayers("Grade commands")
+                .whereLayer("Report").mayOnlyBeAccessedByLayers("Cohort", "Grade commands")
+                .whereLayer("Grading").mayOnlyBeAccessedByLayers("Report", "Cohort", "Grade commands")
+                .whereLayer("Intake").mayOnlyBeAccessedByLayers("Cohort", "Grade commands")
+                .whereLayer("Sandbox").mayOnlyBeAccessedByLayers("Grading", "Cohort", "Grade commands")
+                .whereLayer("Harness").mayOnlyBeAccessedByLayers("Sandbox", "Grading", "Cohort", "Grade commands")
+                .check(program);
+    }
+
+    /**
+     * The harness's classes are the only ones of tick1 on the class path of the student's JVM in the sandbox
+     * ({@code StudentProcess} copies them into a jar of their own), so they may use the JDK and one another, and
+     * nothing else of tick1 or of its libraries.
+     */
+    @Test
+    void theHarnessThatRunsInTheSandboxNeedsOnlyTheJdk() {
+        classes().that().resideInAPackage("gfx.tick1.grade.harness..")
+                .should().onlyDependOnClassesThat().resideInAnyPackage("java..", "javax..", "gfx.tick1.grade.harness..",
+                        "")
                 .check(program);
     }
 

@@ -1,6 +1,6 @@
 package gfx.tick1.bench;
 
-import gfx.tick1.grade.CohortTiming;
+import gfx.tick1.grade.cohort.CohortTiming;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;

@@ -1,12 +1,20 @@
 package gfx.tick1.grade;
 
-import gfx.tick1.grade.cohort.CohortInputException;
-import gfx.tick1.grade.cohort.CohortReport;
-import gfx.tick1.grade.cohort.ReportFiles;
-import gfx.tick1.grade.cohort.StudentResult;
-import gfx.tick1.grade.cohort.Submission;
-import gfx.tick1.grade.cohort.Submissions;
-import gfx.tick1.grade.cohort.Worksheet;
+import gfx.tick1.grade.cohort.CohortGrade;
+import gfx.tick1.grade.cohort.ResultStore;
+import gfx.tick1.grade.grading.Grading;
+import gfx.tick1.grade.grading.SubmissionGrader;
+import gfx.tick1.grade.intake.Submissions;
+import gfx.tick1.grade.model.CohortInputException;
+import gfx.tick1.grade.model.StudentResult;
+import gfx.tick1.grade.model.Submission;
+import gfx.tick1.grade.report.CohortOutputs;
+import gfx.tick1.grade.report.CohortReport;
+import gfx.tick1.grade.report.ReportFiles;
+import gfx.tick1.grade.report.Worksheet;
+import gfx.tick1.grade.sandbox.ChildOutput;
+import gfx.tick1.grade.sandbox.Sandbox;
+import gfx.tick1.grade.sandbox.WorkFolder;
 import gfx.tick1.io.IoErrors;
 import gfx.tick1.scene.SceneException;
 import java.io.IOException;

@@ -1,7 +1,14 @@
 package gfx.tick1.grade;
 
 import gfx.tick1.cli.ExitStatus;
-import gfx.tick1.grade.cohort.Submission;
+import gfx.tick1.grade.grading.Grading;
+import gfx.tick1.grade.grading.ReferenceChoice;
+import gfx.tick1.grade.grading.SubmissionGrader;
+import gfx.tick1.grade.harness.StudentFile;
+import gfx.tick1.grade.model.Submission;
+import gfx.tick1.grade.sandbox.Sandbox;
+import gfx.tick1.grade.sandbox.StudentProcess;
+import gfx.tick1.grade.sandbox.WorkFolder;
 import gfx.tick1.io.IoErrors;
 import gfx.tick1.scene.SceneException;
 import java.io.IOException;
@@ -12,8 +19,8 @@ import java.time.Duration;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 /**
@@ -51,9 +58,6 @@ public final class GradeCommand implements Callable<Integer> {
     @ExitStatus("with --submissions: stopped by Ctrl-C; the results finished so far are kept, and the same command "
             + "grades the rest")
     public static final int EXIT_STOPPED = 130;
-
-    /** The course tester's own words for a pass. */
-    public static final String CONGRATULATIONS = "Congratulations! Your code passed the tester.";
 
     @Spec
     private CommandSpec spec;
@@ -126,11 +130,6 @@ public final class GradeCommand implements Callable<Integer> {
             description = "Run the student's code without the sandbox, with your permissions, your files and the "
                     + "network: only for code you trust, or where bubblewrap cannot run.")
     private boolean noSandbox;
-
-    /** The references a scene may match: {@code --reference}. */
-    enum ReferenceChoice {
-        handout, robust, either
-    }
 
     @Override
     public Integer call() throws IOException, InterruptedException {

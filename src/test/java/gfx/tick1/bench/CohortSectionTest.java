@@ -2,7 +2,7 @@ package gfx.tick1.bench;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.grade.CohortTiming;
+import gfx.tick1.grade.cohort.CohortTiming;
 import org.junit.jupiter.api.Test;
 
 /** The benchmark's cohort section says what was measured, with every phase, and sets no target. */

@@ -1,5 +1,7 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.grade.grading.SubmissionGrader;
+import gfx.tick1.grade.sandbox.Sandbox;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
 
@@ -141,7 +143,7 @@ class GradeAttackTest {
         assertThat(grade.ended()).as("the grade ended:\n" + grade.output()).isTrue();
         assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_FAIL);
         assertThat(grade.output()).as("the verdict").contains("FAILED")
-                .doesNotContain("\n" + GradeCommand.CONGRATULATIONS);
+                .doesNotContain("\n" + SubmissionGrader.CONGRATULATIONS);
         assertThat(grade.output()).as("the secret in the grader's output").doesNotContain(secret);
         assertThat(Files.readString(VICTIM)).as("a file outside the work folder").isEqualTo(VICTIM_TEXT);
         assertThat(leaks()).as("files the attack left behind").isEmpty();

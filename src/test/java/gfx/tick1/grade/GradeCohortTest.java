@@ -5,7 +5,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
 import gfx.tick1.diagnose.Variant;
-import gfx.tick1.grade.cohort.Worksheet;
+import gfx.tick1.grade.grading.SubmissionGrader;
+import gfx.tick1.grade.report.Worksheet;
 import gfx.tick1.preview.HeadlessChromium;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -212,7 +213,7 @@ class GradeCohortTest {
         Map<String, List<String>> rows = rows(shared.resolve("report"));
         Map<String, String> reasons = new LinkedHashMap<>();
         cohort.forEach(student -> reasons.put(student.name(), rows.get("Participant " + student.id()).get(9)));
-        assertThat(reasons.get("Correct Student 0")).isEqualTo(GradeCommand.CONGRATULATIONS);
+        assertThat(reasons.get("Correct Student 0")).isEqualTo(SubmissionGrader.CONGRATULATIONS);
         assertThat(reasons.get("Missing Renderer")).contains("Renderer.java");
         assertThat(reasons.get("Does Not Compile")).contains("does not compile", "Sphere.java:");
         assertThat(reasons.get("Loops Forever")).contains("time limit");

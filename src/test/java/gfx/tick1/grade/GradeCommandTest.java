@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.diagnose.Variant;
+import gfx.tick1.grade.grading.SubmissionGrader;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -27,6 +28,7 @@ class GradeCommandTest {
     private static final String DIFFUSE = "k_d * Math.max(0, NdotL)";
     private static final String RGB = "image.setRGB(x, y, linearRGB.toRGB());";
     private static final String NEAR_ROOT = "double s = s1 > 0 ? s1 : s2;";
+    private static final String SUM = "return ambient.add(diffuse).add(specular);";
 
     @TempDir
     Path dir;
@@ -45,7 +47,7 @@ class GradeCommandTest {
         CliRun run = grade(StudentSolution.correct());
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
         assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS")
-                .endsWith(GradeCommand.CONGRATULATIONS + System.lineSeparator());
+                .endsWith(SubmissionGrader.CONGRATULATIONS + System.lineSeparator());
         assertThat(run.err()).isEmpty();
     }
 
@@ -87,6 +89,11 @@ class GradeCommandTest {
                         "return ambient.add(diffuse).add(specular);", "return ambient.add(diffuse);")),
                 Arguments.of(Variant.AMBIENT_WITHOUT_C_DIFF, correct.editRenderer(
                         "Vector3 ambient = C_diff.scale(I_a);", "Vector3 ambient = I_a;")),
+                Arguments.of(Variant.NO_AMBIENT, correct.editRenderer(
+                        "return ambient.add(diffuse).add(specular);", "return diffuse.add(specular);")),
+                Arguments.of(Variant.COLOUR_TIMES_255, correct.editRenderer(SUM, SUM.replace(";", ".scale(255);"))),
+                Arguments.of(Variant.COLOUR_OVER_255,
+                        correct.editRenderer(SUM, SUM.replace(";", ".scale(1.0 / 255);"))),
                 Arguments.of(Variant.SPECULAR_WITHOUT_I,
                         correct.editRenderer("C_spec.scale(I).scale(k_s", "C_spec.scale(k_s")),
                 Arguments.of(Variant.UNNORMALISED_L_V, correct
@@ -118,10 +125,14 @@ class GradeCommandTest {
     static final StudentSolution HIT_REJECTED_ON_A_NEGATIVE_ROOT = StudentSolution.correct().editSphere(NEAR_ROOT,
             "if (s1 < 0 || s2 < 0) {\n            return new RaycastHit();\n        }\n        " + NEAR_ROOT);
 
+    /** A mistake that shows only where a sphere's surface passes exactly through the camera. */
+    static final StudentSolution ROOTS_ACCEPTED_AT_ZERO = StudentSolution.correct()
+            .editSphere(NEAR_ROOT, "double s = s1 >= 0 ? s1 : s2;").editSphere("if (s > 0) {", "if (s >= 0) {");
+
     @Test
     void everyMistakeOfTheCatalogueHasAStudentSolution() {
         assertThat(Stream.concat(mistakes().map(arguments -> arguments.get()[0]),
-                Stream.of(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT)))
+                Stream.of(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT, Variant.ROOTS_ACCEPTED_AT_ZERO)))
                 .containsExactlyInAnyOrder(Variant.seenInImages().stream().filter(v -> !v.isCorrect()).toArray());
     }
 
@@ -136,6 +147,18 @@ class GradeCommandTest {
                 "  closest: " + mistake.title() + " (100.000% of pixels exact", "reread: handout " + mistake.reread());
     }
 
+    @Test
+    void rootsAcceptedAtZeroPassTick1ButFailWhereASpherePassesThroughTheCamera() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("through"));
+        Files.copy(Path.of("src/test/resources/scenes/sphere-through-camera.xml"),
+                scenes.resolve("sphere-through-camera.xml"));
+        CliRun run = grade(ROOTS_ACCEPTED_AT_ZERO, "--scenes", scenes.toString());
+        Variant mistake = Variant.ROOTS_ACCEPTED_AT_ZERO;
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).as(run.transcript()).contains("tick1.xml: PASS", "sphere-through-camera.xml: FAIL",
+                "  closest: " + mistake.title() + " (100.000% of pixels exact", "reread: handout " + mistake.reread());
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("mistakes")
     void aMistakeFailsWithItsDiagnosisOnEveryScene(Variant mistake, StudentSolution solution) throws IOException {
@@ -143,7 +166,7 @@ class GradeCommandTest {
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
         assertThat(run.out()).as(run.transcript())
                 .contains("tick1.xml: FAIL", "hidden.xml: FAIL", "FAILED: 2 of 2 scenes wrong.")
-                .doesNotContain(GradeCommand.CONGRATULATIONS);
+                .doesNotContain(SubmissionGrader.CONGRATULATIONS);
         assertThat(run.out().lines().filter(line -> line.startsWith("  closest: ")))
                 .as(run.transcript()).hasSize(2)
                 .allMatch(line -> line.startsWith("  closest: " + mistake.title() + " (100.000% of pixels exact"));
@@ -177,7 +200,7 @@ class GradeCommandTest {
         assertThat(run.out()).startsWith("FAILED: the code does not compile (1 error):")
                 .contains(sphere + ":" + StudentSolution.sphereLineOf(NEAR_ROOT) + ":")
                 .contains("error: ';' expected")
-                .doesNotContain("PASS", GradeCommand.CONGRATULATIONS);
+                .doesNotContain("PASS", SubmissionGrader.CONGRATULATIONS);
     }
 
     @Test
@@ -194,7 +217,7 @@ class GradeCommandTest {
                 "--time-limit", "3");
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
         assertThat(run.out()).contains("tick1.xml: FAIL: no image within the time limit of 3 s (an infinite loop?)",
-                "hidden.xml: FAIL: not rendered").doesNotContain(GradeCommand.CONGRATULATIONS);
+                "hidden.xml: FAIL: not rendered").doesNotContain(SubmissionGrader.CONGRATULATIONS);
     }
 
     @Test

@@ -3,10 +3,14 @@ package gfx.tick1.starter;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
-import gfx.tick1.grade.StudentCompiler;
+import gfx.tick1.grade.harness.StudentCompiler;
+import gfx.tick1.grade.harness.StudentFile;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -33,8 +37,14 @@ class StarterCommandTest {
     @Test
     void theKitAsHandedOutCompiles() throws Exception {
         CliRun.of("starter", "--out", dir.toString());
-        StudentCompiler.Result result = new StudentCompiler().compile(dir.resolve("src/gfx/tick1/Sphere.java"),
-                dir.resolve("src/gfx/tick1/Renderer.java"));
+        List<StudentCompiler.Source> sources = new ArrayList<>();
+        try (Stream<Path> files = Files.list(dir.resolve("src/gfx/tick1"))) {
+            for (Path file : files.filter(f -> f.toString().endsWith(".java")).sorted().toList()) {
+                String name = file.getFileName().toString().replace(".java", "");
+                sources.add(new StudentCompiler.Source(name, file.toString(), StudentFile.read(file)));
+            }
+        }
+        StudentCompiler.Result result = new StudentCompiler().compile(sources);
         assertThat(result.errors()).isEmpty();
         assertThat(result.classes()).containsKeys("gfx.tick1.Sphere", "gfx.tick1.Renderer", "gfx.tick1.Vector3",
                 "gfx.tick1.SceneLoader", "gfx.tick1.Tick1");

@@ -1,0 +1,169 @@
+package gfx.tick1.grade.harness;
+
+import gfx.tick1.grade.sandbox.ChildOutput;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.lang.reflect.InvocationTargetException;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
+import java.util.List;
+import javax.imageio.ImageIO;
+
+/**
+ * The program {@code grade} runs in a JVM of its own, inside the sandbox, to compile and to run a
+ * student's code. It needs only the JDK and {@link StudentCompiler}: its class path holds these
+ * classes and nothing else of this program. Two commands:
+ *
+ * <ul>
+ *   <li>{@code compile SOURCES OUTPUT SPHERE-NAME RENDERER-NAME}: compiles every {@code *.java}
+ *       in SOURCES ({@code Sphere.java} and {@code Renderer.java} reported under the names given,
+ *       the others as starter code) into {@code OUTPUT/classes}; exits 0, or writes the errors,
+ *       separated by NUL characters, to {@code OUTPUT/errors} and exits 1.
+ *   <li>{@code render --compile SOURCES SPHERE-NAME RENDERER-NAME OUTPUT WIDTH HEIGHT SCENE...}:
+ *       compiles as {@code compile} does, logs "compiled" in {@code OUTPUT/progress} before any
+ *       code of the student's is loaded, and renders as {@code render} does with
+ *       {@code OUTPUT/classes}: one JVM start for both.
+ *   <li>{@code render CLASSES OUTPUT WIDTH HEIGHT SCENE...}: for each scene, loads it with the
+ *       starter code's {@code SceneLoader}, renders it with the student's {@code Renderer} and
+ *       writes {@code OUTPUT/<index>.png}, or {@code OUTPUT/<index>.error} with what went wrong.
+ *       {@code OUTPUT/progress} logs "start i" and "end i" lines, so that whoever stops this
+ *       process (on a time limit) or sees it die (System.exit, a crash) knows which scene it was on.
+ * </ul>
+ *
+ * <p>Everything this process writes is written while the student's code runs in it, so
+ * {@code grade} trusts none of it (see {@link ChildOutput}).
+ */
+public final class StudentHarness {
+
+    public static final String PROGRESS_FILE = "progress";
+    public static final String ERRORS_FILE = "errors";
+    public static final String CLASSES_FOLDER = "classes";
+    /** Exit status of {@code compile} when the code does not compile. */
+    public static final int DOES_NOT_COMPILE = 3;
+    /** The option of {@code render} that compiles first. */
+    public static final String COMPILE_FIRST = "--compile";
+    /** The line of the progress log that says compiling is over and the student's code may run. */
+    public static final String COMPILED = "compiled";
+
+    private StudentHarness() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        if (args[0].equals("compile")) {
+            System.exit(compile(Path.of(args[1]), Path.of(args[2]), args[3], args[4]));
+        }
+        if (args[1].equals(COMPILE_FIRST)) {
+            Path output = Path.of(args[5]);
+            int status = compile(Path.of(args[2]), output, args[3], args[4]);
+            if (status != 0) {
+                System.exit(status);
+            }
+            log(output.resolve(PROGRESS_FILE), COMPILED);
+            render(output.resolve(CLASSES_FOLDER), output, Integer.parseInt(args[6]), Integer.parseInt(args[7]),
+                    List.of(args).subList(8, args.length));
+            return;
+        }
+        render(Path.of(args[1]), Path.of(args[2]), Integer.parseInt(args[3]), Integer.parseInt(args[4]),
+                List.of(args).subList(5, args.length));
+    }
+
+    private static int compile(Path sources, Path output, String sphereName, String rendererName) throws Exception {
+        List<StudentCompiler.Source> files = new ArrayList<>();
+        try (var listing = Files.list(sources)) {
+            for (Path file : listing.sorted().toList()) {
+                String className = file.getFileName().toString().replaceAll("\\.java$", "");
+                String name = switch (className) {
+                    case "Sphere" -> sphereName;
+                    case "Renderer" -> rendererName;
+                    default -> "starter code " + className + ".java";
+                };
+                files.add(new StudentCompiler.Source(className, name, Files.readString(file, StandardCharsets.UTF_8)));
+            }
+        }
+        StudentCompiler.Result result = new StudentCompiler().compile(files);
+        if (!result.compiled()) {
+            Files.writeString(output.resolve(ERRORS_FILE), String.join("\0", result.errors()), StandardCharsets.UTF_8);
+            return DOES_NOT_COMPILE;
+        }
+        result.writeClasses(output.resolve(CLASSES_FOLDER));
+        return 0;
+    }
+
+    private static void render(Path classes, Path output, int width, int height, List<String> scenes)
+            throws IOException {
+        Path progress = output.resolve(PROGRESS_FILE);
+        try (URLClassLoader student = new URLClassLoader(new URL[] {classes.toUri().toURL()},
+                ClassLoader.getPlatformClassLoader())) {
+            for (int index = 0; index < scenes.size(); index++) {
+                log(progress, "start " + index);
+                try {
+                    BufferedImage image = render(student, scenes.get(index), width, height);
+                    ImageIO.write(image, "png", output.resolve(index + ".png").toFile());
+                } catch (Throwable failure) { // the student's code may throw anything, errors included
+                    Files.writeString(output.resolve(index + ".error"), describe(failure), StandardCharsets.UTF_8);
+                }
+                log(progress, "end " + index);
+            }
+        }
+        // Student code may have left threads running; the results are written, so stop here.
+        Runtime.getRuntime().halt(0);
+    }
+
+    private static BufferedImage render(ClassLoader student, String scenePath, int width, int height)
+            throws ReflectiveOperationException {
+        try {
+            Class<?> loaderClass = student.loadClass("gfx.tick1.SceneLoader");
+            Object loader = loaderClass.getConstructor(String.class).newInstance(scenePath);
+            Object scene = loaderClass.getMethod("getScene").invoke(loader);
+            Class<?> sceneClass = student.loadClass("gfx.tick1.Scene");
+            Class<?> rendererClass = student.loadClass("gfx.tick1.Renderer");
+            Object renderer = rendererClass.getConstructor(int.class, int.class).newInstance(width, height);
+            Object image = rendererClass.getMethod("render", sceneClass).invoke(renderer, scene);
+            if (!(image instanceof BufferedImage picture)) {
+                throw new IllegalStateException("Renderer.render returned " + image + ", not an image");
+            }
+            if (picture.getWidth() != width || picture.getHeight() != height) {
+                throw new IllegalStateException("Renderer.render returned a " + picture.getWidth() + " x "
+                        + picture.getHeight() + " image, expected " + width + " x " + height);
+            }
+            return picture;
+        } catch (InvocationTargetException e) {
+            throw new StudentCodeException(e.getCause());
+        }
+    }
+
+    /**
+     * The exception, then its stack frames in the student's and the starter's code: the classes
+     * of package gfx.tick1 itself, not of this harness in gfx.tick1.grade.
+     */
+    private static String describe(Throwable failure) {
+        Throwable cause = failure instanceof StudentCodeException ? failure.getCause() : failure;
+        List<String> lines = new ArrayList<>();
+        lines.add(cause instanceof OutOfMemoryError ? cause + " (the memory limit was reached)" : cause.toString());
+        for (StackTraceElement frame : cause.getStackTrace()) {
+            if (frame.getClassName().matches("gfx\\.tick1\\.[^.]+") && lines.size() <= 8) {
+                lines.add("at " + frame);
+            }
+        }
+        return String.join("\n", lines);
+    }
+
+    private static void log(Path progress, String line) throws IOException {
+        Files.writeString(progress, line + "\n", StandardCharsets.UTF_8, StandardOpenOption.CREATE,
+                StandardOpenOption.APPEND);
+    }
+
+    /** An exception thrown by the student's (or the starter's) code, not by this harness. */
+    private static final class StudentCodeException extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        StudentCodeException(Throwable cause) {
+            super(cause);
+        }
+    }
+}

@@ -1,0 +1,34 @@
+package gfx.tick1.grade.grading;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Path;
+import java.util.Map;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * A hidden scene's failure is reported without any number the student's code chose: those could
+ * carry bytes of the scene it read (a PNG header's width and height hold eight of them).
+ */
+class HiddenScenesTest {
+
+    private final HiddenScenes hidden =
+            new HiddenScenes(Map.of("Renderer.java", "class Renderer {}"), Path.of("/nowhere"));
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "the image written for this scene is unusable: the image is 2017272368 x 774976051, expected 64 x 48"
+            + " | the image written for this scene is unusable: the image is not 64 x 48",
+        "the program ended while rendering this scene, with exit status 120 (System.exit, or the JVM crashed)"
+            + " | the program ended while rendering this scene, with an exit status of its own"
+            + " (System.exit, or the JVM crashed)",
+        "the program ended while rendering this scene, with exit status 0 (does the code call System.exit?)"
+            + " | the program ended while rendering this scene, with an exit status of its own"
+            + " (System.exit, or the JVM crashed)",
+        "no image within the time limit of 10 s (an infinite loop?); the program was stopped"
+            + " | no image within the time limit of 10 s (an infinite loop?); the program was stopped"})
+    void numbersTheCodeChoseAreLeftOutAndTheGradersOwnKept(String reason, String reported) {
+        assertThat(hidden.withoutMessages(reason)).isEqualTo(reported);
+    }
+}
