@@ -3,6 +3,8 @@ package gfx.tick1.preview;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.cli.ExitStatuses;
 import gfx.tick1.io.IoErrors;
+import gfx.tick1.scene.SceneException;
+import gfx.tick1.scene.SceneLoader;
 import java.awt.Desktop;
 import java.awt.GraphicsEnvironment;
 import java.io.IOException;
@@ -83,6 +85,14 @@ public final class PreviewCommand implements Callable<Integer> {
             if (!Files.exists(scenePath)) {
                 err.println("tick1 preview: " + scene + ": no such file");
                 return EXIT_NO_SCENE;
+            }
+            try {
+                new SceneLoader(scenePath, false);
+            } catch (SceneException e) {
+                // The page shows it too, but a terminal is where a user looks first.
+                err.println("tick1 preview: " + e.getMessage() + " (also on the page, where a corrected file can be "
+                        + "dropped)");
+                err.flush();
             }
         }
 
