@@ -29,7 +29,8 @@ class ReadmeCommandsTest {
 
     private static final List<Path> PAGES = List.of(Path.of("README.md"), Path.of("CONTRIBUTING.md"));
     /** Tasks Gradle's java and application plugins make, which build.gradle does not name. */
-    private static final Set<String> PLUGIN_TASKS = Set.of("test", "installDist", "build", "compileJava");
+    private static final Set<String> PLUGIN_TASKS = Set.of("test", "check", "installDist", "build",
+            "compileJava");
 
     /** The lines of the pages' fenced code blocks, without a trailing {@code # comment}. */
     static List<String> commandLines() throws IOException {
@@ -112,5 +113,14 @@ class ReadmeCommandsTest {
                 .findFirst().orElse("");
         assertThat(PLUGIN_TASKS.contains(task) || build.contains("registerTask('" + task + "'"))
                 .as("%s: task %s", command, task).isTrue();
+    }
+
+    @Test
+    void ciRunsTheReadmesTestCommand() throws IOException {
+        String readme = Files.readString(Path.of("README.md"));
+        String command = readme.substring(readme.indexOf("## Test")).split("```sh\n", 2)[1].split("\n", 2)[0];
+        String ci = Files.readString(Path.of(".ci/run"));
+
+        assertThat(ci).as(".ci/run's test command").contains("TEST_CMD=(" + command + ")");
     }
 }
