@@ -2,6 +2,7 @@ package gfx.tick1;
 
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.cli.ExitStatuses;
+import gfx.tick1.image.ImageFormat;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.io.IoErrors;
 import gfx.tick1.io.ProgressLine;
@@ -14,6 +15,7 @@ import java.io.OutputStream;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Arrays;
@@ -150,6 +152,15 @@ public final class RenderCommand implements Callable<Integer> {
         return !spec.commandLine().getParseResult().hasMatchedOption("--input");
     }
 
+    /**
+     * Whether the image would replace a file the user did not name: the default output.png is
+     * the name the handout's own program writes, so in a student's folder it is often their render.
+     */
+    private boolean wouldReplaceAnUnnamedFile() {
+        return !spec.commandLine().getParseResult().hasMatchedOption("--output")
+                && Files.exists(Path.of(output), LinkOption.NOFOLLOW_LINKS);
+    }
+
     /** What picocli read: the options the render depends on. */
     RenderOptions options() {
         return new RenderOptions(input, strict, width, height, samples, intersection, threads);
@@ -165,8 +176,23 @@ public final class RenderCommand implements Callable<Integer> {
         if (ahead != null && job == null) {
             ahead.cancel();
         }
+        if (usage == null && ImageFormat.ofName(output).filter(format -> format != ImageFormat.PNG).isPresent()) {
+            usage = "--output " + output + ": tick1 writes PNG images only (every pixel exact); name it "
+                    + ImageFormat.asPng(output);
+        }
         if (usage != null) {
+            if (job != null) {
+                job.cancel();
+            }
             throw new ParameterException(spec.commandLine(), usage);
+        }
+        if (wouldReplaceAnUnnamedFile()) {
+            if (job != null) {
+                job.cancel();
+            }
+            err.println("tick1: " + output + " already exists (it may be your own render) and -o was not given; "
+                    + "-o " + output + " replaces it, -o OTHER.png writes another");
+            return EXIT_USAGE;
         }
         if (job == null) {
             job = RenderJob.start(options);
@@ -178,12 +204,12 @@ public final class RenderCommand implements Callable<Integer> {
                 loader.getWarnings().forEach(err::println);
             }
         } catch (InvalidPathException e) {
-            err.println(input + ": not a valid file name");
+            err.println("tick1: " + input + ": not a valid file name");
             return EXIT_BAD_SCENE;
         } catch (SceneException e) {
             boolean defaultSceneMissing = inputIsTheDefault() && !Files.exists(Path.of(input));
             String hint = defaultSceneMissing ? " (give a scene with -i SCENE.xml; see tick1 --help)" : "";
-            err.println(e.getMessage() + hint);
+            err.println("tick1: " + e.getMessage() + hint);
             return EXIT_BAD_SCENE;
         }
 
@@ -220,10 +246,10 @@ public final class RenderCommand implements Callable<Integer> {
                 PngOutput.write(png, Path.of(output));
             }
         } catch (InvalidPathException e) {
-            err.println(output + ": cannot write the image: not a valid file name");
+            err.println("tick1: " + output + ": cannot write the image: not a valid file name");
             return EXIT_CANNOT_WRITE;
         } catch (IOException e) {
-            err.println(output + ": cannot write the image: " + IoErrors.reason(e));
+            err.println("tick1: " + output + ": cannot write the image: " + IoErrors.reason(e));
             return EXIT_CANNOT_WRITE;
         }
         // Only a file is worth naming; and behind -o /dev/stdout the line would land in the PNG.

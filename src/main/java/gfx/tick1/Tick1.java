@@ -109,7 +109,10 @@ public final class Tick1 {
             String name = e.getCommandLine().getCommandSpec().qualifiedName();
             // One sentence on one line: picocli ends some messages with a full stop of its own (but an
             // ellipsis, as in "-Xmx...", stays whole).
-            String message = e.getMessage().replaceAll("(?<!\\.)\\.$", "");
+            String message = unknownCommand(e, args);
+            if (message == null) {
+                message = e.getMessage().replaceAll("(?<!\\.)\\.$", "");
+            }
             err.println(name + ": " + message + suggestion(e) + " (see " + name + " --help)");
             err.flush();
             return ExitStatuses.EXIT_USAGE;
@@ -166,6 +169,20 @@ public final class Tick1 {
             }
         }
         return null;
+    }
+
+    /**
+     * "unknown command 'compar'" for a first word that is neither an option nor a command: picocli
+     * words it "Unmatched arguments from index 0: 'compar', 'a', 'b'". Null for any other error.
+     */
+    private static String unknownCommand(ParameterException e, String[] args) {
+        boolean atTheTop = e.getCommandLine().getParent() == null && !e.getCommandLine().getSubcommands().isEmpty();
+        if (!atTheTop || !(e instanceof UnmatchedArgumentException unmatched) || unmatched.getUnmatched().isEmpty()) {
+            return null;
+        }
+        String word = unmatched.getUnmatched().get(0);
+        return args.length > 0 && args[0].equals(word) && !word.startsWith("-") ? "unknown command '" + word + "'"
+                : null;
     }
 
     /**

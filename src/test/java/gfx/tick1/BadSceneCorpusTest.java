@@ -66,7 +66,8 @@ class BadSceneCorpusTest {
         CliRun run = CliRun.of(args.toArray(String[]::new));
 
         assertThat(run.status()).as(run.err()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
-        assertThat(run.err()).as("standard error").isEqualTo(CORPUS + "/" + c.error() + System.lineSeparator());
+        assertThat(run.err()).as("standard error").isEqualTo("tick1: " + CORPUS + "/" + c.error()
+                + System.lineSeparator());
         assertThat(run.err()).as("no stack trace").doesNotContain("\tat ", "Exception");
         assertThat(run.out()).as("standard output").isEmpty();
         assertThat(Files.readAllBytes(output)).as("the earlier image").isEqualTo(EarlierImage.bytes());

@@ -1,8 +1,15 @@
 package gfx.tick1;
 
+import gfx.tick1.cli.MainClass;
 import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import picocli.CommandLine;
 
 /**
@@ -19,6 +26,28 @@ public record CliRun(int status, String out, String err, byte[] stdout) {
         commandLine.setErr(new PrintWriter(err, true));
         int status = commandLine.execute(args);
         return new CliRun(status, out.toString(), err.toString(), binary.toByteArray());
+    }
+
+    /**
+     * One run of tick1 in a fresh process whose current folder is {@code folder}, as a user runs it
+     * there: relative names (the defaults basic_scene.xml and output.png among them) mean files of
+     * that folder. {@link #stdout} is empty; the image is never wanted on standard output here.
+     */
+    public static CliRun inFolder(Path folder, String... args) throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
+                .toString(), "-cp", System.getProperty("java.class.path"), MainClass.NAME));
+        command.addAll(List.of(args));
+        Path out = Files.createTempFile("tick1-out", ".txt"), err = Files.createTempFile("tick1-err", ".txt");
+        try {
+            Process process = new ProcessBuilder(command).directory(folder.toFile())
+                    .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")))
+                    .redirectOutput(out.toFile()).redirectError(err.toFile()).start();
+            int status = process.waitFor();
+            return new CliRun(status, Files.readString(out), Files.readString(err), new byte[0]);
+        } finally {
+            Files.delete(out);
+            Files.delete(err);
+        }
     }
 
     /** Everything printed, for assertion messages. */

@@ -107,6 +107,10 @@ class CommandLineHelpTest {
         assertThat(command.err()).contains("did you mean compare?").doesNotContain("preview");
         assertThat(command.err().lines()).hasSize(1);
 
+        assertThat(command.err()).as("the word is a command, not 'arguments from index 0'")
+                .isEqualTo("tick1: unknown command 'compre'; did you mean compare? (see tick1 --help)"
+                        + System.lineSeparator());
+
         CliRun option = CliRun.of("--inp", "scene.xml");
         assertThat(option.err()).contains("did you mean --input?").doesNotContain("--intersection");
         assertThat(option.err().lines()).hasSize(1);
@@ -145,7 +149,7 @@ class CommandLineHelpTest {
     void aMissingDefaultSceneSaysHowToNameOne() {
         CliRun run = CliRun.of("-q", "-o", "-");
         assertThat(run.status()).as(run.transcript()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
-        assertThat(run.err()).isEqualTo("basic_scene.xml: no such file (give a scene with -i SCENE.xml; see "
+        assertThat(run.err()).isEqualTo("tick1: basic_scene.xml: no such file (give a scene with -i SCENE.xml; see "
                 + "tick1 --help)" + System.lineSeparator());
     }
 
@@ -156,6 +160,35 @@ class CommandLineHelpTest {
     }
 
     /** What {@code tick1 COMMAND --help} prints. */
+    /**
+     * Each command's summary in the top-level help's list fits in two lines at 80 columns, so that
+     * the list can be read at a glance. grade's summary is worded in its own package and not yet
+     * held to this.
+     */
+    @Test
+    void theTopLevelListGivesEachCommandAtMostTwoLines() {
+        String help = help("");
+        String list = help.substring(help.indexOf("Commands:"), help.indexOf("Exit status:"));
+        java.util.Map<String, Integer> lines = new java.util.LinkedHashMap<>();
+        String current = null;
+        for (String line : list.lines().skip(1).toList()) {
+            if (line.matches("  \\S.*")) {
+                current = line.strip().split("\\s+")[0];
+                lines.put(current, 1);
+            } else if (current != null && !line.isBlank()) {
+                lines.merge(current, 1, Integer::sum);
+            }
+        }
+        lines.remove("grade");
+        assertThat(lines).as("lines per command").isNotEmpty().allSatisfy((name, count) ->
+                assertThat(count).as(name).isLessThanOrEqualTo(2));
+    }
+
+    @Test
+    void timingsIsInTheRenderHelp() {
+        assertThat(help("")).contains("--timings");
+    }
+
     private static String help(String command) {
         CliRun run = command.isEmpty() ? CliRun.of("--help") : CliRun.of(command, "--help");
         assertThat(run.status()).as(run.transcript()).isZero();

@@ -74,7 +74,7 @@ class CommandLineLimitsTest {
         commandLine.setErr(new PrintWriter(err, true));
         int status = commandLine.execute("-i", "scenes/basic_scene.xml", "-o", "-", "--width", "8", "--height", "6");
         assertThat(status).as(err.toString()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
-        assertThat(err.toString()).isEqualTo("-: cannot write the image: standard output was closed or could not "
-                + "be written" + System.lineSeparator());
+        assertThat(err.toString()).isEqualTo("tick1: -: cannot write the image: standard output was closed or "
+                + "could not be written" + System.lineSeparator());
     }
 }

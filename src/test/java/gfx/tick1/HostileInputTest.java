@@ -54,7 +54,7 @@ class HostileInputTest {
     /** The run was refused with exactly this one line, and the earlier image is untouched. */
     private void assertRefused(CliRun run, String line) throws IOException {
         assertThat(run.status()).as(run.err()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
-        assertThat(run.err()).isEqualTo(line + System.lineSeparator());
+        assertThat(run.err()).isEqualTo("tick1: " + line + System.lineSeparator());
         assertThat(Files.readAllBytes(output)).isEqualTo(EarlierImage.bytes());
     }
 

@@ -58,10 +58,37 @@ class PreviewCommandTest {
     }
 
     @Test
+    void aBrokenSceneFileIsServedAndItsErrorAlsoPrintedInTheTerminal(@org.junit.jupiter.api.io.TempDir
+            java.nio.file.Path dir) throws Exception {
+        java.nio.file.Path broken = java.nio.file.Files.writeString(dir.resolve("broken.xml"), "<scene><sphere/>");
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        CommandLine commandLine = Tick1.commandLine(new RenderCommand(new ByteArrayOutputStream()));
+        commandLine.setOut(new PrintWriter(out, true));
+        commandLine.setErr(new PrintWriter(err, true));
+        CompletableFuture<Thread> runner = new CompletableFuture<>();
+        CompletableFuture<Integer> status = CompletableFuture.supplyAsync(() -> {
+            runner.complete(Thread.currentThread());
+            return commandLine.execute("preview", broken.toString(), "--port", "0", "--no-open");
+        });
+        try {
+            for (int i = 0; i < 600 && !ADDRESS.matcher(out.toString()).find(); i++) {
+                Thread.sleep(50);
+            }
+            assertThat(out.toString()).as("still served").containsPattern(ADDRESS);
+            assertThat(err.toString()).startsWith("tick1 preview: " + broken + ":").endsWith("(also on the page, "
+                    + "where a corrected file can be dropped)" + System.lineSeparator());
+            assertThat(err.toString().lines()).hasSize(1);
+        } finally {
+            runner.get(10, TimeUnit.SECONDS).interrupt();
+        }
+        assertThat(status.get(10, TimeUnit.SECONDS)).isEqualTo(PreviewCommand.EXIT_STOPPED);
+    }
+
+    @Test
     void aMissingSceneFileStopsItWithOneLine() {
         CliRun run = CliRun.of("preview", "no/such/scene.xml", "--no-open");
         assertThat(run.status()).isEqualTo(PreviewCommand.EXIT_NO_SCENE);
-        assertThat(run.err()).isEqualTo("no/such/scene.xml: no such file" + System.lineSeparator());
+        assertThat(run.err()).isEqualTo("tick1 preview: no/such/scene.xml: no such file" + System.lineSeparator());
         assertThat(run.out()).isEmpty();
     }
 

@@ -83,11 +83,47 @@ class Tick1CommandTest {
     }
 
     @Test
+    void withoutOutputItWritesOutputPngInTheCurrentFolder() throws IOException, InterruptedException {
+        Files.copy(Path.of("scenes/basic_scene.xml"), dir.resolve("basic_scene.xml"));
+        CliRun run = CliRun.inFolder(dir, "--width", "16", "--height", "12");
+        assertThat(run.status()).as(run.transcript()).isZero();
+        assertThat(ImageIO.read(dir.resolve("output.png").toFile()).getWidth()).isEqualTo(16);
+    }
+
+    @Test
+    void withoutOutputAnExistingOutputPngIsNeverReplaced() throws IOException, InterruptedException {
+        // output.png is what the handout's own program writes: in a student's folder, their render.
+        Files.copy(Path.of("scenes/basic_scene.xml"), dir.resolve("basic_scene.xml"));
+        Path theirs = EarlierImage.writeTo(dir.resolve("output.png"));
+        CliRun run = CliRun.inFolder(dir, "--width", "16", "--height", "12");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(RenderCommand.EXIT_USAGE);
+        assertThat(run.err()).as("one line with the way out").isEqualTo("tick1: output.png already exists (it may "
+                + "be your own render) and -o was not given; -o output.png replaces it, -o OTHER.png writes another"
+                + System.lineSeparator());
+        assertThat(theirs).as("the student's image").hasBinaryContent(EarlierImage.bytes());
+        assertThat(CliRun.inFolder(dir, "-o", "output.png", "--width", "16", "--height", "12").status())
+                .as("named, it is replaced").isZero();
+        assertThat(ImageIO.read(theirs.toFile()).getWidth()).isEqualTo(16);
+    }
+
+    @Test
+    void anOutputNamedAsAnotherImageFormatIsRefusedWithThePngName() throws IOException {
+        Path jpeg = dir.resolve("out.JPG");
+        CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", jpeg.toString(), "--width", "8", "--height", "6");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(RenderCommand.EXIT_USAGE);
+        assertThat(run.err()).isEqualTo("tick1: --output " + jpeg + ": tick1 writes PNG images only (every pixel "
+                + "exact); name it " + dir.resolve("out.png") + " (see tick1 --help)" + System.lineSeparator());
+        assertThat(jpeg).doesNotExist();
+        assertThat(CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.resolve("out.tmp").toString(), "--width", "8",
+                "--height", "6").status()).as("a name of no image format is the user's choice").isZero();
+    }
+
+    @Test
     void aMissingInputIsNamed() throws IOException {
         Path output = existingOutput();
         CliRun run = CliRun.of("-i", dir.resolve("missing.xml").toString(), "-o", output.toString());
         assertThat(run.status()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
-        assertThat(run.err().strip()).isEqualTo(dir.resolve("missing.xml") + ": no such file");
+        assertThat(run.err().strip()).isEqualTo("tick1: " + dir.resolve("missing.xml") + ": no such file");
         assertThat(output).hasBinaryContent(EarlierImage.bytes());
     }
 
@@ -97,7 +133,7 @@ class Tick1CommandTest {
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(),
                 "--width", "8", "--height", "8");
         assertThat(run.status()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
-        assertThat(run.err()).startsWith(output + ": cannot write the image: ").doesNotContain("\tat ");
+        assertThat(run.err()).startsWith("tick1: " + output + ": cannot write the image: ").doesNotContain("\tat ");
         assertThat(run.err().lines()).hasSize(1);
     }
 
@@ -115,8 +151,8 @@ class Tick1CommandTest {
     void outputThatIsADirectoryIsRefused() throws IOException {
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", dir.toString(), "--width", "8", "--height", "8");
         assertThat(run.status()).isEqualTo(RenderCommand.EXIT_CANNOT_WRITE);
-        assertThat(run.err().strip())
-                .isEqualTo(dir + ": cannot write the image: is a directory, expected a file name for the PNG");
+        assertThat(run.err().strip()).isEqualTo("tick1: " + dir
+                + ": cannot write the image: is a directory, expected a file name for the PNG");
     }
 
     @Test

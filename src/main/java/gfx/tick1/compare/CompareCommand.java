@@ -3,6 +3,7 @@ package gfx.tick1.compare;
 import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.image.ImageDifference;
+import gfx.tick1.image.ImageFormat;
 import gfx.tick1.image.PngInput;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.io.IoErrors;
@@ -20,8 +21,9 @@ import picocli.CommandLine.Spec;
 
 /** {@code tick1 compare}: how far one image is from another, in figures and as a heat map. */
 @Command(name = "compare",
-        description = "Compares two images pixel by pixel: how many pixels differ, the largest and mean "
-                + "difference per channel (in levels of 0 to 255), PSNR and the bounding box of the differences.")
+        description = {"Compares two PNG images pixel by pixel.",
+            "It prints how many pixels differ, the largest and mean difference per channel (in levels of 0 to "
+                    + "255), PSNR and the bounding box of the differences."})
 public final class CompareCommand implements Callable<Integer> {
 
     @ExitStatus("every pixel is within the tolerance")
@@ -58,6 +60,11 @@ public final class CompareCommand implements Callable<Integer> {
         if (tolerance < 0 || tolerance > 255) {
             // Reported and answered with exit status 2 like any other usage error (the start-up's handler).
             throw new ParameterException(spec.commandLine(), "--tolerance " + tolerance + ": must be from 0 to 255");
+        }
+        if (heatMapFile != null && ImageFormat.ofName(heatMapFile.toString()).filter(f -> f != ImageFormat.PNG)
+                .isPresent()) {
+            throw new ParameterException(spec.commandLine(), "--diff " + heatMapFile + ": the heat map is a PNG; "
+                    + "name it " + ImageFormat.asPng(heatMapFile.toString()));
         }
         ImageDifference difference;
         try {

@@ -23,7 +23,7 @@ import picocli.CommandLine.Spec;
 
 /** {@code tick1 diagnose}: which stage of the handout, or which common mistake, an image shows. */
 @Command(name = "diagnose",
-        description = {
+        description = {"Says which stage of the handout or common mistake an image shows.",
             "Renders the scene as each entry of a catalogue (the handout's stages, the correct image and the "
                     + "mistakes students make) and ranks them on the pixels where some entry draws a sphere, by the "
                     + "share that match exactly and within one level. An entry is named as the answer only when its "

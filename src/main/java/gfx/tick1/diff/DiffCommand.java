@@ -34,7 +34,7 @@ import picocli.CommandLine.Spec;
  * mistake of the diagnose catalogue.
  */
 @Command(name = "diff",
-        description = {
+        description = {"Shows where your Sphere.java and Renderer.java differ from ours in meaning.",
             "Compares your Sphere.java and Renderer.java with ours, ignoring comments, formatting, the package, "
                     + "imports, the order of fields and methods, the names of locals and parameters, this. on a "
                     + "field, parentheses that do not change the expression, and the order of declarations that "
@@ -102,9 +102,9 @@ public final class DiffCommand implements Callable<Integer> {
                 }
                 theirs.add(parsed);
             } catch (JavaMembers.ParseException e) {
-                throw new CommandFailure(EXIT_CANNOT_COMPARE, e.getMessage());
+                throw new CommandFailure(EXIT_CANNOT_COMPARE, parseError(file, e));
             } catch (IOException e) {
-                throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": " + IoErrors.reason(e));
+                throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": " + unreadable(file, e));
             } catch (StackOverflowError e) {
                 throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": expressions or blocks nested too deeply to "
                         + "compare; expected code nested at most a few thousand deep");
@@ -208,6 +208,31 @@ public final class DiffCommand implements Callable<Integer> {
 
     private static String read(Path file) throws IOException {
         return Files.readString(file, StandardCharsets.UTF_8);
+    }
+
+    /**
+     * Why a file cannot be read, with the files meant where they can be seen: those of a folder
+     * given, or the file of that name in the starter kit's src/gfx/tick1/.
+     */
+    private static String unreadable(Path file, IOException e) {
+        if (Files.isDirectory(file)) {
+            List<String> inside = StarterKit.STUDENT_CLASSES.stream().map(name -> file.resolve(name + ".java"))
+                    .filter(Files::isRegularFile).map(Path::toString).toList();
+            return "a folder, not a file" + (inside.isEmpty() ? "; give your Sphere.java and Renderer.java"
+                    : "; did you mean tick1 diff " + String.join(" ", inside) + "?");
+        }
+        Path name = file.getFileName();
+        Path inTheKit = name == null ? null : Path.of(StarterKit.SOURCE_FOLDER).resolve(name);
+        boolean there = inTheKit != null && !Files.exists(file) && Files.isRegularFile(inTheKit);
+        return IoErrors.reason(e) + (there ? "; did you mean " + inTheKit + "?" : "");
+    }
+
+    /** A parse error in one line: JavaParser's list of the tokens it expected says nothing to a student. */
+    private static String parseError(Path file, JavaMembers.ParseException e) {
+        if (!file.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".java")) {
+            return file + ": not Java source; give your Sphere.java and Renderer.java";
+        }
+        return e.getMessage().replaceFirst(", expected one of .*$", "");
     }
 
 

@@ -5,7 +5,8 @@ import java.util.Map;
 
 /**
  * The key to a heat map's colours, drawn in a strip below the image: a bar running through the
- * colours from 1 level to 64 levels or more, with ticks at 1, 2, 4 ... 64 and the word LEVELS.
+ * colours from 1 level to 64 levels or more, with ticks at 1, 2, 4 ... 64 and the word LEVELS;
+ * or, where no pixel differs, the words NO DIFFERENCES.
  *
  * <p>The strip goes below, never over, the image, so a pixel's position in the file is its
  * position in the images compared. The labels are drawn from a small pixel font of our own rather
@@ -31,21 +32,29 @@ public final class HeatMapLegend {
     private static final String UNIT = "LEVELS";
     private static final int OCTAVES = 6; // 64 = 2^6
     private static final Map<Character, String> GLYPHS = Map.ofEntries(
-            Map.entry('1', "010110010010111"),
+            // The 1's flag is on its top row, which the other digits fill: lower, the top looked cut off.
+            Map.entry('1', "110010010010111"),
             Map.entry('2', "111001111100111"), Map.entry('3', "111001111001111"),
             Map.entry('4', "101101111001001"), Map.entry('6', "111100111101111"),
             Map.entry('8', "111101111101111"), Map.entry('+', "000010111010000"),
             Map.entry('L', "100100100100111"), Map.entry('E', "111100110100111"),
-            Map.entry('V', "101101101101010"), Map.entry('S', "011100010001110"));
+            Map.entry('V', "101101101101010"), Map.entry('S', "011100010001110"),
+            Map.entry('N', "110101101101101"), Map.entry('O', "111101101101111"),
+            Map.entry('D', "110101101101110"), Map.entry('I', "111010010010111"),
+            Map.entry('F', "111100110100100"), Map.entry('R', "110101110101101"),
+            Map.entry('C', "011100100100011"));
+    /** What the strip says in place of the key when no pixel differs: a dimmed copy alone reads as a failure. */
+    static final String NO_DIFFERENCES = "NO DIFFERENCES";
 
     private HeatMapLegend() {
     }
 
     /**
      * The heat map with the legend strip below it, or the heat map itself when it is narrower
-     * than {@link #MIN_WIDTH}.
+     * than {@link #MIN_WIDTH}. Where no pixel differs, the strip says so instead of showing a key
+     * to colours the map does not have.
      */
-    public static BufferedImage below(BufferedImage heatMap) {
+    public static BufferedImage below(BufferedImage heatMap, boolean anyDifference) {
         int width = heatMap.getWidth(), height = heatMap.getHeight();
         if (width < MIN_WIDTH) {
             return heatMap;
@@ -54,6 +63,10 @@ public final class HeatMapLegend {
         int[] pixels = heatMap.getRGB(0, 0, width, height, null, 0, width);
         image.setRGB(0, 0, width, height, pixels, 0, width);
         fill(image, 0, height, width, HEIGHT, BACKGROUND);
+        if (!anyDifference) {
+            draw(image, NO_DIFFERENCES, (width - textWidth(NO_DIFFERENCES)) / 2, height + (HEIGHT - 5 * SCALE) / 2);
+            return image;
+        }
 
         int barStart = MARGIN;
         String lastLabel = (1 << OCTAVES) + "+";
@@ -81,7 +94,7 @@ public final class HeatMapLegend {
 
     private static void draw(BufferedImage image, String text, int left, int top) {
         for (int i = 0; i < text.length(); i++) {
-            String glyph = GLYPHS.get(text.charAt(i));
+            String glyph = GLYPHS.getOrDefault(text.charAt(i), ""); // a space, for one
             for (int cell = 0; cell < glyph.length(); cell++) {
                 if (glyph.charAt(cell) == '1') {
                     fill(image, left + i * ADVANCE + cell % 3 * SCALE, top + cell / 3 * SCALE, SCALE, SCALE, TEXT);

@@ -163,7 +163,7 @@ public final class ImageDifference {
      * pixel (x, y) of the file.
      */
     public BufferedImage heatMapWithLegend() {
-        return HeatMapLegend.below(heatMap());
+        return HeatMapLegend.below(heatMap(), differingPixels() > 0);
     }
 
     /**

@@ -2,6 +2,7 @@ package gfx.tick1.image;
 
 import gfx.tick1.io.IoErrors;
 import java.awt.image.BufferedImage;
+import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.AccessDeniedException;
@@ -16,14 +17,35 @@ public final class PngInput {
     private PngInput() {
     }
 
-    /** The image in {@code file}; any failure is an IOException whose message names the file. */
+    /** A file that is not a PNG, known by its first bytes: its message is already complete. */
+    private static final class NotAPng extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        NotAPng(String message) {
+            super(message);
+        }
+    }
+
+    /**
+     * The image in {@code file}; any failure is an IOException whose message names the file. The
+     * file must be a PNG by its bytes, whatever its name: another format (a JPEG above all, whose
+     * pixels its compression has changed) is refused, never compared as if it were a render.
+     */
     public static BufferedImage read(Path file) throws IOException {
         if (Files.isDirectory(file)) {
             throw new IOException(file + ": is a directory, expected a PNG file");
         }
         BufferedImage image;
-        try (InputStream in = Files.newInputStream(file)) {
+        try (InputStream in = new BufferedInputStream(Files.newInputStream(file))) {
+            in.mark(ImageFormat.SIGNATURE_LENGTH);
+            ImageFormat format = ImageFormat.of(in.readNBytes(ImageFormat.SIGNATURE_LENGTH)).orElse(null);
+            in.reset();
+            if (format != ImageFormat.PNG) {
+                throw new NotAPng(file + ": " + (format == null ? "not a PNG image" : format.notPng()));
+            }
             image = ImageIO.read(in);
+        } catch (NotAPng e) {
+            throw e;
         } catch (NoSuchFileException | AccessDeniedException e) {
             throw new IOException(file + ": " + IoErrors.reason(e));
         } catch (IOException | RuntimeException e) {
@@ -31,7 +53,7 @@ public final class PngInput {
             throw new IOException(file + ": not a readable PNG image (" + e.getMessage() + ")");
         }
         if (image == null) {
-            throw new IOException(file + ": not a PNG image (or another format Java can read)");
+            throw new IOException(file + ": not a readable PNG image");
         }
         return image;
     }

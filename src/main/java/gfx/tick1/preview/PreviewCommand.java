@@ -4,6 +4,8 @@ import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.cli.ExitStatuses;
 import gfx.tick1.io.IoErrors;
+import gfx.tick1.scene.SceneException;
+import gfx.tick1.scene.SceneLoader;
 import java.awt.Desktop;
 import java.awt.GraphicsEnvironment;
 import java.io.IOException;
@@ -76,14 +78,22 @@ public final class PreviewCommand implements Callable<Integer> {
             try {
                 scenePath = Path.of(scene);
             } catch (InvalidPathException e) {
-                err.println(scene + ": not a valid file name");
+                err.println("tick1 preview: " + scene + ": not a valid file name");
                 return EXIT_NO_SCENE;
             }
             // Only a missing file stops the previewer: anything wrong inside it is shown on the page,
             // where a corrected file can be dropped.
             if (!Files.exists(scenePath)) {
-                err.println(scene + ": no such file");
+                err.println("tick1 preview: " + scene + ": no such file");
                 return EXIT_NO_SCENE;
+            }
+            try {
+                new SceneLoader(scenePath, false);
+            } catch (SceneException e) {
+                // The page shows it too, but a terminal is where a user looks first.
+                err.println("tick1 preview: " + e.getMessage() + " (also on the page, where a corrected file can be "
+                        + "dropped)");
+                err.flush();
             }
         }
 

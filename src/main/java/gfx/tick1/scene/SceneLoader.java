@@ -61,6 +61,8 @@ public final class SceneLoader {
             "sphere", Set.of("x", "y", "z", "radius", "colour"),
             "point-light", Set.of("x", "y", "z", "colour", "intensity"),
             "ambient-light", Set.of("colour"));
+    /** The value an attribute left out takes (colour has none: it must be given). */
+    static final Map<String, Double> DEFAULTS = Map.of("x", 0.0, "y", 0.0, "z", 0.0, "radius", 1.0, "intensity", 100.0);
 
     // A plain decimal number as people write it in a scene file. Java's own parser would also
     // take "NaN", "0x1p3", "1d" and "Infinity", none of which belongs in a scene. The quantifiers
@@ -236,7 +238,7 @@ public final class SceneLoader {
             checkAttributes(at, element, ATTRIBUTES.get(name));
             switch (name) {
                 case "sphere" -> scene.addObject(new Sphere(position(at, element),
-                        positiveNumber(at, element, "radius", 1), colour(at, element)));
+                        positiveNumber(at, element, "radius", DEFAULTS.get("radius")), colour(at, element)));
                 case "ambient-light" -> scene.setAmbientLight(colour(at, element));
                 case "point-light" -> {
                     if (seenPointLight) {
@@ -244,7 +246,7 @@ public final class SceneLoader {
                     }
                     seenPointLight = true;
                     scene.setPointLight(new PointLight(position(at, element), colour(at, element),
-                            nonNegativeNumber(at, element, "intensity", 100)));
+                            nonNegativeNumber(at, element, "intensity", DEFAULTS.get("intensity"))));
                 }
                 default -> throw new IllegalStateException(name);
             }
@@ -276,12 +278,29 @@ public final class SceneLoader {
                 }
                 warn(positions.attribute(at, attribute), element.getTagName() + " attribute \"" + attribute
                         + "\": not part of Tick 1 scenes, ignored"
-                        + (known.isEmpty() ? "" : " (expected " + String.join(", ", sorted(known)) + ")"));
+                        + (known.isEmpty() ? "" : " (expected " + String.join(", ", sorted(known)) + ")")
+                        + meant(element, attribute, known));
             }
         }
 
+        /**
+         * "; did you mean radius? ..." for a misspelling of an attribute the element leaves out, and
+         * the default used instead (none is: under --strict the scene is not rendered).
+         */
+        private String meant(Element element, String attribute, Set<String> known) {
+            return Misspelling.meant(attribute, known).filter(name -> !element.hasAttribute(name))
+                    .map(name -> "; did you mean " + name + "?" + (DEFAULTS.containsKey(name) && !strict
+                            ? " " + name + " is not given, so the default " + plain(DEFAULTS.get(name)) + " is used"
+                            : "")).orElse("");
+        }
+
+        private static String plain(double value) {
+            return value == Math.rint(value) ? Long.toString((long) value) : Double.toString(value);
+        }
+
         private Vector3 position(SourcePositions.Position at, Element element) {
-            return new Vector3(number(at, element, "x", 0), number(at, element, "y", 0), number(at, element, "z", 0));
+            return new Vector3(number(at, element, "x", DEFAULTS.get("x")), number(at, element, "y", DEFAULTS.get("y")),
+                    number(at, element, "z", DEFAULTS.get("z")));
         }
 
         private double positiveNumber(SourcePositions.Position at, Element element, String attribute,
@@ -323,7 +342,10 @@ public final class SceneLoader {
 
         private Vector3 colour(SourcePositions.Position at, Element element) {
             if (!element.hasAttribute("colour")) {
-                throw error(at, element.getTagName() + " has no colour: expected colour=\"#RRGGBB\"");
+                String misspelt = SceneDocument.attributeNames(element).stream()
+                        .filter(name -> Misspelling.meant(name, Set.of("colour")).isPresent()).findFirst()
+                        .map(name -> " (the tick spells it colour, not " + name + ")").orElse("");
+                throw error(at, element.getTagName() + " has no colour: expected colour=\"#RRGGBB\"" + misspelt);
             }
             String text = element.getAttribute("colour");
             if (!COLOUR.matcher(text).matches()) {

@@ -17,9 +17,10 @@ import picocli.CommandLine.Spec;
 
 /** {@code tick1 starter}: writes the student's starting kit, exactly what {@code grade} compiles against. */
 @Command(name = "starter",
-        description = "Writes the Tick 1 starter kit: src/gfx/tick1/ with the given classes (Camera, PointLight, "
+        description = {"Writes the Tick 1 starter kit that students start from.",
+            "The kit holds src/gfx/tick1/ with the given classes (Camera, PointLight, "
                 + "Ray, RaycastHit, Scene, SceneLoader, Tick1, Vector3), Sphere.java and Renderer.java with the "
-                + "handout's TODOs, and basic_scene.xml.")
+                + "handout's TODOs, and basic_scene.xml."})
 public final class StarterCommand implements Callable<Integer> {
 
     @ExitStatus("the kit was written")

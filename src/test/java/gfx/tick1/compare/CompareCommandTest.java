@@ -109,6 +109,37 @@ class CompareCommandTest {
         }
     }
 
+    /** A JPEG of a render, as an image viewer's "save as" or a screenshot tool gives. */
+    private Path jpeg(String name) throws IOException {
+        BufferedImage image = new BufferedImage(8, 6, BufferedImage.TYPE_INT_RGB);
+        Path file = dir.resolve(name);
+        assertThat(ImageIO.write(image, "jpeg", file.toFile())).isTrue();
+        return file;
+    }
+
+    @Test
+    void aJpegIsRefusedInOneLineThatSaysWhyWhateverItsName() throws IOException {
+        Path good = png("a.png", 8, 6, 0);
+        for (Path jpeg : new Path[] {jpeg("real.jpg"), jpeg("named-as.png")}) {
+            CliRun run = CliRun.of("compare", good.toString(), jpeg.toString());
+            assertThat(run.status()).as(run.transcript()).isEqualTo(CompareCommand.EXIT_CANNOT_COMPARE);
+            assertThat(run.err()).as(run.transcript()).isEqualTo("tick1 compare: " + jpeg + ": a JPEG image, not a "
+                    + "PNG: JPEG's compression changes pixels, so it cannot match a render pixel for pixel; save the "
+                    + "image as PNG" + System.lineSeparator());
+            assertThat(run.out()).as("no figures for a JPEG").isEmpty();
+        }
+    }
+
+    @Test
+    void aHeatMapNamedAsAnotherFormatIsRefusedBeforeAnythingIsWritten() throws IOException {
+        Path a = png("a.png", 8, 6, 0), b = png("b.png", 8, 6, 0x010101);
+        CliRun run = CliRun.of("compare", a.toString(), b.toString(), "--diff", dir.resolve("d.jpg").toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(CompareCommand.EXIT_CANNOT_COMPARE);
+        assertThat(run.err()).startsWith("tick1 compare: --diff " + dir.resolve("d.jpg") + ": the heat map is a PNG; "
+                + "name it " + dir.resolve("d.png"));
+        assertThat(dir.resolve("d.jpg")).doesNotExist();
+    }
+
     @Test
     void aMissingArgumentIsAUsageError() {
         CliRun run = CliRun.of("compare", "only-one.png");

@@ -100,4 +100,16 @@ class DiagnoseCommandTest {
             assertThat(run.err().lines()).hasSize(1);
         }
     }
+
+    @Test
+    void aJpegOfACorrectRenderIsRefusedInOneLineNotDiagnosed() throws IOException {
+        Path png = render("scenes/tick1.xml", Variant.CORRECT, 160, 120);
+        Path jpeg = dir.resolve("real.jpg");
+        javax.imageio.ImageIO.write(javax.imageio.ImageIO.read(png.toFile()), "jpeg", jpeg.toFile());
+        CliRun run = CliRun.of("diagnose", jpeg.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_CANNOT_DIAGNOSE);
+        assertThat(run.err()).startsWith("tick1 diagnose: " + jpeg + ": a JPEG image, not a PNG: ");
+        assertThat(run.err().lines()).hasSize(1);
+        assertThat(run.out()).as("no verdict on a lossy copy").isEmpty();
+    }
 }

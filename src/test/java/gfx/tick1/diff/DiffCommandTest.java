@@ -259,6 +259,41 @@ class DiffCommandTest {
     }
 
     @Test
+    void aParseErrorIsOneShortLineWithoutTheParsersListOfExpectedTokens() throws IOException {
+        Path file = write("Sphere.java", ours("Sphere").replace("public class Sphere", "public class Sphere <"));
+        CliRun run = CliRun.of("diff", file.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_CANNOT_COMPARE);
+        assertThat(run.err()).as(run.transcript()).doesNotContain("expected one of");
+        assertThat(run.err().lines()).hasSize(1);
+    }
+
+    @Test
+    void aFileThatIsNotJavaIsSaidToBeSoInOneLine() throws IOException {
+        CliRun run = CliRun.of("diff", "scenes/tick1.xml");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_CANNOT_COMPARE);
+        assertThat(run.err()).isEqualTo("tick1 diff: scenes/tick1.xml: not Java source; give your Sphere.java and "
+                + "Renderer.java" + System.lineSeparator());
+    }
+
+    @Test
+    void aFolderIsNamedAsOneAndItsTwoFilesAreSuggested() {
+        CliRun run = CliRun.of("diff", "src/test/resources/students/correct");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_CANNOT_COMPARE);
+        assertThat(run.err()).isEqualTo("tick1 diff: src/test/resources/students/correct: a folder, not a file; "
+                + "did you mean tick1 diff src/test/resources/students/correct/Sphere.java "
+                + "src/test/resources/students/correct/Renderer.java?" + System.lineSeparator());
+    }
+
+    @Test
+    void aFileNamedWithoutTheKitsSourceFolderIsFoundThere() throws IOException, InterruptedException {
+        assertThat(CliRun.inFolder(dir, "starter", "--out", "kit").status()).isZero();
+        CliRun run = CliRun.inFolder(dir.resolve("kit"), "diff", "Sphere.java", "Renderer.java");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_CANNOT_COMPARE);
+        assertThat(run.err()).isEqualTo("tick1 diff: Sphere.java: no such file; did you mean "
+                + StarterKit.SOURCE_FOLDER + "Sphere.java?" + System.lineSeparator());
+    }
+
+    @Test
     void aFileOfAnotherClassIsOneLineAndExitTwo() throws IOException {
         Path file = write("Camera.java", "package gfx.tick1; public class Camera { }");
         CliRun run = CliRun.of("diff", file.toString());

@@ -63,4 +63,37 @@ class HeatMapLegendTest {
         assertThat(one.getRGB(0, 30, 400, HeatMapLegend.HEIGHT, null, 0, 400))
                 .isEqualTo(other.getRGB(0, 300, 400, HeatMapLegend.HEIGHT, null, 0, 400));
     }
+
+    /** The pixels of the strip that are text: the legend's light grey. */
+    private static int inkIn(BufferedImage image, int x, int y, int width, int height) {
+        int ink = 0;
+        for (int j = y; j < y + height; j++) {
+            for (int i = x; i < x + width; i++) {
+                ink += (image.getRGB(i, j) & 0xFFFFFF) == 0xD0D0D0 ? 1 : 0;
+            }
+        }
+        return ink;
+    }
+
+    @Test
+    void identicalImagesGetNoDifferencesWrittenInPlaceOfTheKey() {
+        BufferedImage grey = ImageDifferenceTest.filled(400, 300, 0x808080);
+        BufferedImage same = ImageDifference.between(grey, grey).heatMapWithLegend();
+        assertThat(same.getHeight()).isEqualTo(300 + HeatMapLegend.HEIGHT);
+        int[] strip = same.getRGB(0, 300, 400, HeatMapLegend.HEIGHT, null, 0, 400);
+        assertThat(strip).as("no colour of the key: nothing differs").doesNotContain(
+                0xFF000000 | ImageDifference.heatColour(1), 0xFF000000 | ImageDifference.heatColour(64));
+        assertThat(inkIn(same, 0, 300, 400, HeatMapLegend.HEIGHT)).as("the words NO DIFFERENCES").isPositive();
+        assertThat(strip).isNotEqualTo(oneLevelOffAt(400, 300, 5, 5).heatMapWithLegend()
+                .getRGB(0, 300, 400, HeatMapLegend.HEIGHT, null, 0, 400));
+    }
+
+    /** Every tick label's top row is inked over at least two cells, as the top of a digit should be. */
+    @Test
+    void theOneOfTheKeyStartsOnItsTopRowLikeTheOtherDigits() {
+        BufferedImage withLegend = oneLevelOffAt(640, 480, 0, 0).heatMapWithLegend();
+        int labelTop = 480 + 17;
+        // The 1 is centred under the bar's start (x = 12): its glyph spans x 9 to 14.
+        assertThat(inkIn(withLegend, 9, labelTop, 6, 2)).as("the 1's top row").isGreaterThanOrEqualTo(8);
+    }
 }

@@ -177,7 +177,22 @@ class SceneLoaderTest {
     void anUnknownAttributeIsAWarningNamingWhatIsExpected() throws IOException {
         Path path = file("<scene><point-light colour='#FFFFFF'/><sphere raduis='2' colour='#FF0000'/></scene>");
         assertThat(new SceneLoader(path, false).getWarnings()).containsExactly(path + ":1:47: warning: sphere "
-                + "attribute \"raduis\": not part of Tick 1 scenes, ignored (expected colour, radius, x, y, z)");
+                + "attribute \"raduis\": not part of Tick 1 scenes, ignored (expected colour, radius, x, y, z); did "
+                + "you mean radius? radius is not given, so the default 1 is used");
+    }
+
+    @Test
+    void aMisspeltAttributeOfAnElementThatHasTheRightOneGetsNoSuggestion() throws IOException {
+        Path path = file("<scene><point-light colour='#FFFFFF'/><sphere radius='2' raduis='2' colour='#F00000'/>"
+                + "</scene>");
+        assertThat(new SceneLoader(path, false).getWarnings()).singleElement().asString()
+                .endsWith("(expected colour, radius, x, y, z)");
+    }
+
+    @Test
+    void colourSpeltTheAmericanWayIsNamedInTheError() throws IOException {
+        assertThat(errorFor("<scene><ambient-light color='#555555'/></scene>")).isEqualTo("scene.xml:1:8: "
+                + "ambient-light has no colour: expected colour=\"#RRGGBB\" (the tick spells it colour, not color)");
     }
 
     @Test
