@@ -1,5 +1,6 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.grade.cohort.CohortGrade;
 import gfx.tick1.grade.cohort.ResultStore;
 import gfx.tick1.grade.grading.Grading;
@@ -16,6 +17,7 @@ import gfx.tick1.grade.sandbox.ChildOutput;
 import gfx.tick1.grade.sandbox.Sandbox;
 import gfx.tick1.grade.sandbox.WorkFolder;
 import gfx.tick1.io.IoErrors;
+import gfx.tick1.io.OnExit;
 import gfx.tick1.scene.SceneException;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -62,22 +64,20 @@ final class CohortCommand {
                 throw new java.nio.file.NoSuchFileException(options.worksheet().toString());
             }
         } catch (IOException e) {
-            err.println("tick1 grade: " + IoErrors.describe(e));
-            return GradeCommand.EXIT_USAGE;
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, IoErrors.describe(e));
         }
         Path work = Files.createTempDirectory("tick1-grade");
         AtomicReference<CohortGrade> running = new AtomicReference<>();
-        // Ctrl-C or SIGTERM: stop the students' processes and delete the work folder. Finished
-        // results are in the store already; the one being stored is renamed into place whole or
-        // not at all.
-        Thread cleanUp = new Thread(() -> {
-            CohortGrade cohort = running.get();
+        // At the end, or on Ctrl-C or SIGTERM: stop the students' processes and delete the work
+        // folder. Finished results are in the store already; the one being stored is renamed into
+        // place whole or not at all.
+        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
+            CohortGrade cohort = running.getAndSet(null);
             if (cohort != null) {
                 cohort.stop();
             }
             GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
         });
-        Runtime.getRuntime().addShutdownHook(cleanUp);
         try {
             Grading grading;
             ResultStore store;
@@ -86,18 +86,15 @@ final class CohortCommand {
                 grading = Grading.prepare(Files.createDirectory(work.resolve("grading")), options.scenesFolder(),
                         options.limits());
             } catch (SceneException e) {
-                err.println("tick1 grade: " + e.getMessage());
-                return GradeCommand.EXIT_USAGE;
+                throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());
             } catch (IOException e) {
-                err.println("tick1 grade: " + IoErrors.describe(e));
-                return GradeCommand.EXIT_USAGE;
+                throw new CommandFailure(GradeCommand.EXIT_USAGE, IoErrors.describe(e));
             }
             try {
                 store = new ResultStore(Files.createDirectories(options.reportFolder()).resolve(STATE_FOLDER));
             } catch (IOException e) {
-                err.println("tick1 grade: " + options.reportFolder() + ": cannot write the report: "
-                        + IoErrors.describe(e));
-                return GradeCommand.EXIT_CANNOT_WRITE;
+                throw new CommandFailure(GradeCommand.EXIT_CANNOT_WRITE, options.reportFolder()
+                        + ": cannot write the report: " + IoErrors.describe(e));
             }
             CohortGrade cohort = new CohortGrade(grading, sandbox, options.jobs(), store, err,
                     System.console() != null);
@@ -105,23 +102,13 @@ final class CohortCommand {
             CohortGrade.Done done = cohort.run(submissions, work);
             if (cohort.stopped()) {
                 // Stopped part way: the report of the last whole run stays as it was.
-                err.println("tick1 grade: stopped; the results finished so far are kept in "
+                throw new CommandFailure(GradeCommand.EXIT_STOPPED, "stopped; the results finished so far are kept in "
                         + options.reportFolder().resolve(STATE_FOLDER) + ": run the same command again to grade "
                         + "the rest and write the report");
-                return GradeCommand.EXIT_STOPPED;
             }
             return report(done);
         } finally {
-            CohortGrade cohort = running.getAndSet(null);
-            if (cohort != null) {
-                cohort.stop();
-            }
-            GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
-            try {
-                Runtime.getRuntime().removeShutdownHook(cleanUp);
-            } catch (IllegalStateException e) {
-                // The JVM is shutting down: the hook runs (or ran) anyway.
-            }
+            cleanUp.now();
         }
     }
 
@@ -136,11 +123,10 @@ final class CohortCommand {
             CohortReport.write(report, results,
                     result -> Worksheet.grade(CohortOutputs.grade(result, options.maxGrade(), options.perScene())));
         } catch (CohortInputException e) {
-            err.println("tick1 grade: " + e.getMessage());
-            return GradeCommand.EXIT_USAGE;
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());
         } catch (IOException e) {
-            err.println("tick1 grade: " + report + ": cannot write the report: " + IoErrors.describe(e));
-            return GradeCommand.EXIT_CANNOT_WRITE;
+            throw new CommandFailure(GradeCommand.EXIT_CANNOT_WRITE, report + ": cannot write the report: "
+                    + IoErrors.describe(e));
         }
         long passed = results.stream().filter(StudentResult::passed).count();
         // A submission with a problem (a missing file, ...) is never run, so neither now nor earlier.

@@ -1,5 +1,6 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.grade.grading.Grading;
 import gfx.tick1.grade.grading.ReferenceChoice;
@@ -10,6 +11,7 @@ import gfx.tick1.grade.sandbox.Sandbox;
 import gfx.tick1.grade.sandbox.StudentProcess;
 import gfx.tick1.grade.sandbox.WorkFolder;
 import gfx.tick1.io.IoErrors;
+import gfx.tick1.io.OnExit;
 import gfx.tick1.scene.SceneException;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -148,10 +150,9 @@ public final class GradeCommand implements Callable<Integer> {
             try {
                 sandbox = Sandbox.confined();
             } catch (Sandbox.Unavailable e) {
-                err.println("tick1 grade: " + e.getMessage() + ": install the " + Sandbox.PACKAGE
+                throw new CommandFailure(EXIT_USAGE, e.getMessage() + ": install the " + Sandbox.PACKAGE
                         + " package (apt-get install " + Sandbox.PACKAGE + "), or give --no-sandbox to grade "
                         + "without a sandbox");
-                return EXIT_USAGE;
             }
         }
         if (submissions != null) {
@@ -159,22 +160,16 @@ public final class GradeCommand implements Callable<Integer> {
         }
         Path work = Files.createTempDirectory("tick1-grade");
         StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), memoryMegabytes);
-        // Ctrl-C or SIGTERM: stop the student's process and delete the work folder, scenes and all.
-        Thread cleanUp = new Thread(() -> {
+        // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
+        // scenes and all.
+        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
             process.stop();
             reportUndeleted(WorkFolder.delete(work), err);
         });
-        Runtime.getRuntime().addShutdownHook(cleanUp);
         try {
             return grade(work, sandbox, process, out, err);
         } finally {
-            process.stop();
-            reportUndeleted(WorkFolder.delete(work), err);
-            try {
-                Runtime.getRuntime().removeShutdownHook(cleanUp);
-            } catch (IllegalStateException e) {
-                // The JVM is shutting down: the hook runs (or ran) anyway.
-            }
+            cleanUp.now();
         }
     }
 
@@ -226,11 +221,9 @@ public final class GradeCommand implements Callable<Integer> {
             submission = new Submission("", "", "", studentFile(sphere), studentFile(renderer), null);
             WorkFolder.removeEarlierReport(reportFolder);
         } catch (SceneException e) {
-            err.println("tick1 grade: " + e.getMessage());
-            return EXIT_USAGE;
+            throw new CommandFailure(EXIT_USAGE, e.getMessage());
         } catch (IOException e) {
-            err.println("tick1 grade: " + IoErrors.describe(e));
-            return EXIT_USAGE;
+            throw new CommandFailure(EXIT_USAGE, IoErrors.describe(e));
         }
         StudentProcess.writeHarness(Files.createDirectory(work.resolve("harness")));
         SubmissionGrader.Graded graded = new SubmissionGrader(grading, sandbox, process, work)

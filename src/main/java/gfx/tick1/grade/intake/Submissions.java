@@ -21,6 +21,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.stream.Collectors;
+import org.apache.commons.compress.utils.SeekableInMemoryByteChannel;
 
 /**
  * The intake: a cohort's download from Moodle (the "Download all submissions" zip, or the folder it unpacks to) read
@@ -99,7 +100,7 @@ public final class Submissions {
     private Map<String, Student> readZip(Path path, FileChannel channel) throws IOException {
         ZipArchive zip;
         try {
-            zip = ZipArchive.open(ZipArchive.Source.of(channel), limits.maxEntries());
+            zip = ZipArchive.open(channel, limits.maxEntries());
         } catch (ZipArchive.Refused e) {
             throw new CohortInputException(path + ": " + e.getMessage());
         }
@@ -307,7 +308,7 @@ public final class Submissions {
         private void openNested(String path, Reader reader) throws IOException {
             ZipArchive zip;
             try {
-                zip = ZipArchive.open(ZipArchive.Source.of(charge(reader.read(limits.maxNestedZipBytes()))),
+                zip = ZipArchive.open(new SeekableInMemoryByteChannel(charge(reader.read(limits.maxNestedZipBytes()))),
                         limits.maxEntries());
             } catch (ZipArchive.TooLarge e) {
                 refuse(path + " is larger than " + IntakeLimits.size(limits.maxNestedZipBytes())

@@ -46,8 +46,8 @@ public final class CohortOutputs {
             Path folder = Files.createDirectories(feedbackFolder(report, results.get(i)));
             removeImagesNotNamed(folder, results.get(i));
             for (SceneResult scene : results.get(i).scenes()) {
-                for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
-                    if (image != null && images.get(i) != null) {
+                for (String image : scene.images()) {
+                    if (images.get(i) != null) {
                         Path stored = images.get(i).resolve(image);
                         ReportFiles.write(folder.resolve(image), out -> Files.copy(stored, out));
                     }
@@ -63,11 +63,7 @@ public final class CohortOutputs {
     private static void removeImagesNotNamed(Path folder, StudentResult result) throws IOException {
         Set<String> named = new HashSet<>();
         for (SceneResult scene : result.scenes()) {
-            for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
-                if (image != null) {
-                    named.add(image);
-                }
-            }
+            named.addAll(scene.images());
         }
         try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "*.png")) {
             for (Path file : files) {

@@ -74,8 +74,8 @@ public final class CohortReport {
                         + (ReportFiles.isPlainName(folder) ? "two results share it" : "not one plain folder name"));
             }
             for (SceneResult scene : result.scenes()) {
-                for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
-                    if (image != null && (!ReportFiles.isPlainName(image) || isFeedbackFile(image))) {
+                for (String image : scene.images()) {
+                    if (!ReportFiles.isPlainName(image) || isFeedbackFile(image)) {
                         throw new IllegalArgumentException("image \"" + image + "\" of " + folder
                                 + ": not a plain file name of its own");
                     }

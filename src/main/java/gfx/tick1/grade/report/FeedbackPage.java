@@ -44,15 +44,7 @@ final class FeedbackPage {
 
     /** The images of a scene that a student may see, as file names in the feedback folder. */
     static List<String> images(SceneResult scene) {
-        List<String> files = new ArrayList<>();
-        if (!scene.hidden()) {
-            for (String file : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
-                if (file != null) {
-                    files.add(file);
-                }
-            }
-        }
-        return files;
+        return scene.hidden() ? List.of() : scene.images();
     }
 
     /** "passed", or "not passed: 1 of 2 scenes matched" (or the like when nothing could run). */

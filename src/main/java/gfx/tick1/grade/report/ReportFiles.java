@@ -1,18 +1,16 @@
 package gfx.tick1.grade.report;
 
+import gfx.tick1.io.AtomicFile;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.attribute.PosixFilePermissions;
 
 /**
  * Where the report's files go, and how they are written: each file is written whole to a hidden
- * temporary file in its own folder and then renamed over the target, which on POSIX file systems
- * is atomic. A grade stopped part way (Ctrl-C, a crash, a full disk) leaves the old page or the
+ * temporary file in its own folder and then renamed over the target ({@link AtomicFile}), which on
+ * POSIX file systems is atomic. A grade stopped part way (Ctrl-C, a crash, a full disk) leaves the old page or the
  * new one, never half of one; at worst a {@code .NAME.RANDOM.tmp} beside it.
  */
 public final class ReportFiles {
@@ -35,36 +33,8 @@ public final class ReportFiles {
     }
 
     public static void write(Path target, Content content) throws IOException {
-        Path folder = target.toAbsolutePath().getParent();
-        Files.createDirectories(folder);
-        Path temporary = temporaryBeside(folder, target.getFileName().toString());
-        try {
-            try (OutputStream out = Files.newOutputStream(temporary)) {
-                content.writeTo(out);
-            }
-            try {
-                Files.move(temporary, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING);
-            }
-        } finally {
-            Files.deleteIfExists(temporary);
-        }
-    }
-
-    /**
-     * A new hidden file in {@code folder}. Asked for as rw-rw-rw-, which the umask trims as it does
-     * for any new file (usually to rw-r--r--): Files.createTempFile alone would make it, and so the
-     * finished page, readable by its owner only.
-     */
-    private static Path temporaryBeside(Path folder, String name) throws IOException {
-        String prefix = "." + name + ".";
-        try {
-            return Files.createTempFile(folder, prefix, ".tmp",
-                    PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-rw-rw-")));
-        } catch (UnsupportedOperationException e) {
-            return Files.createTempFile(folder, prefix, ".tmp"); // not a POSIX file system
-        }
+        Files.createDirectories(target.toAbsolutePath().getParent());
+        AtomicFile.write(target, content::writeTo);
     }
 
     /**
