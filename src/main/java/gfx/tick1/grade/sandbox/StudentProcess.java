@@ -46,6 +46,13 @@ public final class StudentProcess {
     static final String HARNESS_JAR = "harness.jar";
     /** The class data sharing archive's name in its folder. */
     static final String SHARED_ARCHIVE = "harness.jsa";
+    /**
+     * The scene the shared archive's run renders: one the starter kit's SceneLoader accepts (every
+     * colour given), so that the DOM parser, the image classes and ImageIO's PNG writer are archived
+     * along with javac.
+     */
+    private static final String ARCHIVE_SCENE = "<scene><ambient-light colour=\"#202020\"/>"
+            + "<point-light x=\"1\" y=\"1\" colour=\"#FFFFFF\"/><sphere z=\"4\" colour=\"#FF0000\"/></scene>\n";
     /** How long making the shared archive may take. */
     private static final Duration ARCHIVE_TIME_LIMIT = Duration.ofSeconds(60);
 
@@ -251,7 +258,7 @@ public final class StudentProcess {
             Files.writeString(sources.resolve(student + ".java"), StarterKit.source(student), StandardCharsets.UTF_8);
         }
         Path scenes = Files.createDirectory(work.resolve("scenes"));
-        Files.writeString(scenes.resolve("0.xml"), "<scene><point-light/><sphere z=\"4\"/></scene>\n");
+        Files.writeString(scenes.resolve("0.xml"), ARCHIVE_SCENE);
         sandbox.share(work, false);
         Path output = Files.createDirectory(work.resolve("output"));
         sandbox.share(output, true);
@@ -261,7 +268,9 @@ public final class StudentProcess {
                 Duration.ZERO, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false,
                 List.of("-XX:ArchiveClassesAtExit=" + inside(output, OUTPUT) + "/" + SHARED_ARCHIVE));
         Path archive = output.resolve(SHARED_ARCHIVE);
-        if (!run.finished() || !ChildOutput.isRegularFile(archive)) {
+        // Without the image the run never reached ImageIO and the render: the archive would miss them.
+        if (!run.finished() || !ChildOutput.isRegularFile(archive)
+                || !ChildOutput.isRegularFile(output.resolve("0.png"))) {
             return this;
         }
         Files.move(archive, folder.resolve(SHARED_ARCHIVE));
@@ -315,6 +324,7 @@ public final class StudentProcess {
                 "-XX:ReservedCodeCacheSize=64m",
                 "-XX:+UseSerialGC",               // one GC thread: the student's code is single-threaded
                 "-XX:TieredStopAtLevel=1",        // quick start; small renders are over before C2 pays
+                "-XX:CICompilerCount=1",          // one JIT thread: the student code has one core; a second competes
                 "-XX:-UsePerfData",               // no shared-memory file in /tmp (there is no /tmp)
                 "-Djava.awt.headless=true",
                 "-Djava.io.tmpdir=" + (sandbox.isConfined() ? OUTPUT : System.getProperty("java.io.tmpdir")),
