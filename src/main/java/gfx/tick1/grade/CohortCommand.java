@@ -1,5 +1,6 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.cli.ExitStatuses;
 import gfx.tick1.grade.cohort.CohortGrade;
 import gfx.tick1.grade.cohort.ResultStore;
 import gfx.tick1.grade.grading.Grading;
@@ -150,11 +151,13 @@ final class CohortCommand {
                 + (problems > 0 ? ", " + problems + " not run: a problem with their files" : "") + "): "
                 + passed + " passed, " + (results.size() - passed) + " failed.");
         out.println("Grades: " + report.resolve(GRADES) + "; report: " + report.resolve("index.html"));
-        for (String folder : done.ungraded()) {
-            err.println("tick1 grade: " + printable(folder) + ": not graded: its images could not be stored in "
-                    + report);
+        for (CohortGrade.Ungraded ungraded : done.ungraded()) {
+            err.println("tick1 grade: " + printable(ungraded.folder()) + ": not graded: " + ungraded.why()
+                    + (ungraded.grader() ? "" : " " + report));
         }
-        return done.ungraded().isEmpty() ? GradeCommand.EXIT_PASS : GradeCommand.EXIT_CANNOT_WRITE;
+        return done.ungraded().isEmpty() ? GradeCommand.EXIT_PASS
+                : done.ungraded().stream().anyMatch(CohortGrade.Ungraded::grader) ? ExitStatuses.EXIT_INTERNAL
+                : GradeCommand.EXIT_CANNOT_WRITE;
     }
 
     /**
