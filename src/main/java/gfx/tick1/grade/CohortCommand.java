@@ -66,6 +66,10 @@ final class CohortCommand {
             err.println("tick1 grade: " + IoErrors.describe(e));
             return GradeCommand.EXIT_USAGE;
         }
+        if (options.scenesFolder() == null) {
+            err.println("tick1 grade: the built-in hidden scene is public (it is in tick1): anyone can pass it by "
+                    + "copying its images; give scenes of your own with --scenes");
+        }
         Path work = Files.createTempDirectory("tick1-grade");
         AtomicReference<CohortGrade> running = new AtomicReference<>();
         // Ctrl-C or SIGTERM: stop the students' processes and delete the work folder. Finished

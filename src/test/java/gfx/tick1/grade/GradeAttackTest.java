@@ -263,7 +263,20 @@ class GradeAttackTest {
         assertThat(grade.output()).as("the public scene's report keeps the message").contains("HIDDENLEAK");
         assertThat(hidden).as("the hidden scene's report").doesNotContain("HIDDENLEAK")
                 .startsWith("hidden.xml: FAIL: the code threw an exception (its message is not shown for a hidden "
-                        + "scene)\n    at gfx.tick1.Renderer.render(Renderer.java:20)\nFAILED");
+                        + "scene)\nFAILED");
+    }
+
+    @Test
+    void trueStackFramesCannotCarryAHiddenSceneOutInTheirMethodNamesOrLineNumbers() throws Exception {
+        Grade grade = grade("frames-channel");
+        assertFailedAndHarmedNothing(grade);
+        String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: FAIL"));
+        assertThat(grade.output()).as("the public scene's report keeps the frames")
+                .containsPattern("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: (low|high)");
+        assertThat(hidden).as("the hidden scene's report: fixed words and the class only")
+                .startsWith("hidden.xml: FAIL: the code threw java.lang.IllegalStateException (its message is not "
+                        + "shown for a hidden scene)\nFAILED")
+                .doesNotContain("leakEven", "leakOdd", "Renderer.java:");
     }
 
     @Test

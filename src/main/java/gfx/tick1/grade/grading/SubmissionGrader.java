@@ -26,9 +26,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 
 /**
  * Grades one submission as the course's tester does: compiles the two files with the starter
@@ -186,11 +184,7 @@ public final class SubmissionGrader {
         long compareStart = System.nanoTime();
         grade.renderNanos = compareStart - renderStart;
 
-        Map<String, String> sourceTexts = new HashMap<>();
-        sourceTexts.put("Sphere.java", sphereCode);
-        sourceTexts.put("Renderer.java", rendererCode);
-        StarterKit.GIVEN_CLASSES.forEach(given -> sourceTexts.put(given + ".java", StarterKit.source(given)));
-        HiddenScenes hiddenScenes = new HiddenScenes(sourceTexts, classes);
+        HiddenScenes hiddenScenes = new HiddenScenes(classes);
         List<GradingScene> ordered = new ArrayList<>(publicScenes);
         ordered.addAll(grading.batch(true));
         int failures = 0;
