@@ -155,6 +155,9 @@ public final class GradeCommand implements Callable<Integer> {
                         + "without a sandbox");
                 return EXIT_USAGE;
             }
+            if (sandbox.totalsNotEnforced() != null) {
+                err.println("tick1 grade: warning: " + sandbox.totalsNotEnforced());
+            }
         }
         if (submissions != null) {
             return new CohortCommand(this, sandbox, out, err).call();

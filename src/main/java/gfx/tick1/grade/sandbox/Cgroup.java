@@ -187,8 +187,8 @@ final class Cgroup implements AutoCloseable {
         Path memory = groups.get(place.v2() ? "" : "memory");
         Path pids = groups.get(place.v2() ? "" : "pids");
         if (count(memory, place.v2() ? "memory.events" : "memory.oom_control", "oom_kill") > 0) {
-            return "the program was stopped: it used more than " + Sandbox.size(totals.memoryBytes())
-                    + " of memory in all (all its processes, and the files they kept in memory, together)";
+            return "the program used more than " + Sandbox.size(totals.memoryBytes()) + " of memory in all (all its "
+                    + "processes, and the files they kept in memory, together), and the kernel killed a process of it";
         }
         if (count(pids, "pids.events", "max") > 0) {
             return "it reached the limit of " + totals.processes() + " processes and threads in all";

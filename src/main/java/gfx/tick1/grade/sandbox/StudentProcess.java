@@ -192,8 +192,8 @@ public final class StudentProcess {
         List<Outcome> outcomes = new ArrayList<>();
         for (int i = 0; i < sceneFiles.size(); i++) {
             outcomes.add(progressText == null && run.finished() && run.exitStatus() == 0
-                    ? new Outcome.Failed("no image: the log of the run's progress is missing, unreadable or not a regular "
-                            + "file (did the code remove, replace or chmod it?)")
+                    ? new Outcome.Failed("no image: the log of the run's progress is missing, unreadable or not a "
+                            + "regular file (did the code remove, replace or chmod it?)")
                     : outcome(output, i, progressText == null ? List.of() : progressText.lines().toList(), run,
                             width, height, timeLimit));
         }
@@ -202,16 +202,16 @@ public final class StudentProcess {
     }
 
     /**
-     * A scene's outcome when the run reached a total: a stopped run's failure is the total's, and
-     * any other failure says it after its own reason (on a line of its own, which a hidden
-     * scene's report leaves out with the rest of the code's words).
+     * A scene's outcome when the run reached a total. Memory and the output folder's cap fail every
+     * scene with the total's words (a process was killed, or the run stopped, so nothing of the run
+     * counts); the process total follows the scene's own failure, on a line of its own (which a
+     * hidden scene's report leaves out with the rest of the code's words), as the run went on.
      */
     private static Outcome withLimit(Outcome outcome, String limit) {
-        if (!(outcome instanceof Outcome.Failed failed)) {
-            return outcome;
+        if (limit.startsWith("the program")) {
+            return new Outcome.Failed(limit);
         }
-        return new Outcome.Failed(limit.startsWith("the program was stopped") ? limit
-                : failed.reason() + "\n" + limit);
+        return outcome instanceof Outcome.Failed failed ? new Outcome.Failed(failed.reason() + "\n" + limit) : outcome;
     }
 
     /**

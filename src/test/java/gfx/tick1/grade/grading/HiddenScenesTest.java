@@ -34,7 +34,8 @@ class HiddenScenesTest {
     @Test
     void anExceptionKeepsItsClassAndNoFrameNorLineNumber() {
         assertThat(hidden.withoutMessages("the code threw java.lang.IllegalStateException: a message\n"
-                + "    at gfx.tick1.Renderer.leakEven(Renderer.java:33)\n    at gfx.tick1.Renderer.render(Renderer.java:9)"))
+                + "    at gfx.tick1.Renderer.leakEven(Renderer.java:33)\n"
+                + "    at gfx.tick1.Renderer.render(Renderer.java:9)"))
                 .isEqualTo("the code threw java.lang.IllegalStateException (its message is not shown for a hidden "
                         + "scene)");
     }
