@@ -48,8 +48,8 @@ public final class CohortTiming {
 
     /** The sandbox runs of one submission: compiling with tick1.xml, and the hidden scene. */
     public static final int RUNS_PER_SUBMISSION = 2;
-    /** How many runs of {@code true} measure what a control group costs. */
-    private static final int CGROUP_PROBES = 21;
+    /** How many times the parts of a control group's cost are timed. */
+    private static final int CGROUP_PROBES = 51;
 
     /** {@code tick1 grade}'s default --memory. */
     private static final int DEFAULT_MEMORY_MEGABYTES = 512;
