@@ -2,16 +2,13 @@ package gfx.tick1;
 
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.cli.ExitStatuses;
-import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.io.IoErrors;
 import gfx.tick1.io.ProgressLine;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Intersection;
-import gfx.tick1.scene.Scene;
 import gfx.tick1.scene.SceneException;
 import gfx.tick1.scene.SceneLoader;
-import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.io.PrintWriter;
@@ -23,8 +20,6 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ForkJoinPool;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Model.CommandSpec;
@@ -54,10 +49,7 @@ public final class RenderCommand implements Callable<Integer> {
     public static final int EXIT_CANNOT_WRITE = 3;
 
     /** The largest width or height accepted; the frame must also fit in the JVM's heap. */
-    public static final int MAX_DIMENSION = 16384;
-
-    /** The largest --threads accepted. */
-    private static final int MAX_THREADS = 256;
+    public static final int MAX_DIMENSION = RenderOptions.MAX_DIMENSION;
 
     @Spec
     private CommandSpec spec;
@@ -115,13 +107,26 @@ public final class RenderCommand implements Callable<Integer> {
 
     private final OutputStream binaryOut;
 
+    /** A render started on a guess at the command line, or null. */
+    private final RenderJob ahead;
+
     public RenderCommand() {
         this(System.out);
     }
 
     /** @param binaryOut where {@code --output -} sends the PNG bytes */
     public RenderCommand(OutputStream binaryOut) {
+        this(binaryOut, null);
+    }
+
+    /**
+     * @param binaryOut where {@code --output -} sends the PNG bytes
+     * @param ahead a render started before the command line was read, on a guess at it: used only
+     *     if picocli reads the same options, and stopped otherwise; or null
+     */
+    RenderCommand(OutputStream binaryOut, RenderJob ahead) {
         this.binaryOut = binaryOut;
+        this.ahead = ahead;
     }
 
     /** {@code --intersection}: a method by its lower-case name, as the help writes it, in any case. */
@@ -145,19 +150,30 @@ public final class RenderCommand implements Callable<Integer> {
         return !spec.commandLine().getParseResult().hasMatchedOption("--input");
     }
 
+    /** What picocli read: the options the render depends on. */
+    RenderOptions options() {
+        return new RenderOptions(input, strict, width, height, samples, intersection, threads);
+    }
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         timings.end("command line");
-        String usage = checkOptions();
+        RenderOptions options = options();
+        String usage = options.problem();
+        RenderJob job = ahead != null && ahead.options().equals(options) ? ahead : null;
+        if (ahead != null && job == null) {
+            ahead.cancel();
+        }
         if (usage != null) {
             throw new ParameterException(spec.commandLine(), usage);
         }
+        if (job == null) {
+            job = RenderJob.start(options);
+        }
 
-        Scene scene;
         try {
-            SceneLoader loader = new SceneLoader(Path.of(input), strict);
-            scene = loader.getScene();
+            SceneLoader loader = job.scene();
             if (!quiet) {
                 loader.getWarnings().forEach(err::println);
             }
@@ -172,79 +188,36 @@ public final class RenderCommand implements Callable<Integer> {
         }
 
         timings.end("scene");
-        BufferedImage image = render(scene, err);
+        // The starter code printed a line per row; this shows one line, once a render takes long enough to wonder.
+        ProgressLine progress = new ProgressLine(err, !quiet && System.console() != null, Duration.ofMillis(500),
+                Duration.ofMillis(100));
+        try {
+            job.awaitRender(rowsDone -> progress.show(String.format("rendering: %3d%%", 100L * rowsDone / height)));
+        } finally {
+            progress.finish();
+        }
         timings.end("render");
-        int status = write(image, err);
+        int status = write(job, err);
         timings.end("png");
         if (showTimings) {
-            timings.print(err);
+            timings.print(err, (job == ahead ? "rendered while the command line was read: " : "") + job.stages());
         }
         return status;
     }
 
-    /** Checks what picocli's types cannot: ranges, and that the frame fits in memory. */
-    private String checkOptions() {
-        if (width < 1 || width > MAX_DIMENSION) {
-            return "--width " + width + ": must be from 1 to " + MAX_DIMENSION;
-        }
-        if (height < 1 || height > MAX_DIMENSION) {
-            return "--height " + height + ": must be from 1 to " + MAX_DIMENSION;
-        }
-        if (samples < 1 || samples > SamplePattern.MAX_SAMPLES) {
-            return "--samples " + samples + ": must be from 1 to " + SamplePattern.MAX_SAMPLES;
-        }
-        if (threads != null && (threads < 1 || threads > MAX_THREADS)) {
-            return "--threads " + threads + ": must be from 1 to " + MAX_THREADS;
-        }
-        // The renderer holds the frame twice (its pixel array and the image), 4 bytes a pixel each,
-        // and the PNG encoder needs room of its own: half the heap is a safe ceiling.
-        long needed = 8L * width * height;
-        long available = Runtime.getRuntime().maxMemory() / 2;
-        if (needed > available) {
-            return String.format("a %d x %d image needs about %d MiB, more than half of the %d MiB this Java "
-                    + "may use; raise that with JAVA_OPTS=-Xmx...", width, height, needed >> 20,
-                    Runtime.getRuntime().maxMemory() >> 20);
-        }
-        return null;
-    }
-
-    /** The threads to render with: --threads, or one a core. */
-    private int threadCount() {
-        return threads != null ? threads : Runtime.getRuntime().availableProcessors();
-    }
-
-    private BufferedImage render(Scene scene, PrintWriter err) {
-        FastRenderer renderer = new FastRenderer(width, height, new SamplePattern(samples), intersection);
-        // The starter code printed a line per row; this shows one line, once a render takes long enough to wonder.
-        ProgressLine progress = new ProgressLine(err, !quiet && System.console() != null, Duration.ofMillis(500),
-                Duration.ofMillis(100));
-        ForkJoinPool pool = new ForkJoinPool(threadCount());
+    private int write(RenderJob job, PrintWriter err) {
         try {
-            // A parallel stream started inside a pool's task runs on that pool's threads.
-            return pool.submit(() -> renderer.render(scene,
-                    rowsDone -> progress.show(String.format("rendering: %3d%%", 100L * rowsDone / height)))).get();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while rendering", e);
-        } catch (ExecutionException e) {
-            throw new IllegalStateException(e.getCause());
-        } finally {
-            pool.shutdownNow();
-            progress.finish();
-        }
-    }
-
-    private int write(BufferedImage image, PrintWriter err) {
-        try {
+            byte[] png = job.png();
             if (output.equals("-")) {
-                PngOutput.write(image, binaryOut);
+                binaryOut.write(png);
+                binaryOut.flush();
                 // System.out is a PrintStream, which records a failed write (a closed pipe, a
                 // full disk) instead of throwing.
                 if (binaryOut instanceof java.io.PrintStream printStream && printStream.checkError()) {
                     throw new IOException("standard output was closed or could not be written");
                 }
             } else {
-                PngOutput.write(image, Path.of(output));
+                PngOutput.write(png, Path.of(output));
             }
         } catch (InvalidPathException e) {
             err.println(output + ": cannot write the image: not a valid file name");

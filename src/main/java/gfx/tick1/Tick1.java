@@ -33,7 +33,11 @@ public final class Tick1 {
 
     public static void main(String[] args) {
         Timings.mainStarted();
-        CommandLine commandLine = commandLine(new RenderCommand(), args);
+        // A plain render starts on a guess at its options while picocli reads them (which takes
+        // longer than rendering a small frame); the render command checks the guess.
+        RenderOptions guess = CommandLineGuess.of(args);
+        RenderJob ahead = guess != null && guess.problem() == null ? RenderJob.start(guess) : null;
+        CommandLine commandLine = commandLine(new RenderCommand(System.out, ahead), args);
         int status;
         try {
             status = commandLine.execute(args);

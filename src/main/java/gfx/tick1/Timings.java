@@ -29,14 +29,17 @@ final class Timings {
         last = now;
     }
 
-    /** One line: {@code timings: jvm 61.0 ms, command line 35.2 ms, ...}. */
-    void print(PrintWriter err) {
+    /**
+     * One line: {@code timings: jvm 61.0 ms, command line 35.2 ms, ...}, then {@code more} after a
+     * semicolon.
+     */
+    void print(PrintWriter err, String more) {
         StringBuilder line = new StringBuilder("timings:");
         double sinceMain = (System.nanoTime() - mainNanos) / 1e6;
         double uptime = ManagementFactory.getRuntimeMXBean().getUptime();
         line.append(String.format(" jvm start to main %.1f ms,", uptime - sinceMain));
         phases.forEach((name, nanos) -> line.append(String.format(" %s %.1f ms,", name, nanos / 1e6)));
         line.setLength(line.length() - 1);
-        err.println(line);
+        err.println(line + "; " + more);
     }
 }

@@ -2,6 +2,7 @@ package gfx.tick1.bench;
 
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.fast.FastRenderer;
+import gfx.tick1.grade.cohort.CohortTiming;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.io.IoErrors;
@@ -17,10 +18,13 @@ import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import javax.imageio.ImageIO;
@@ -108,11 +112,15 @@ public final class BenchCommand implements Callable<Integer> {
 
         Map<String, String> png = pngEncoding(tick1, settings);
         ProcessRuns runs = new ProcessRuns();
-        Whole whole = wholeRuns(runs, settings, tick1File);
+        Whole whole = wholeRuns(runs, settings, tick1File, tick1);
 
         BenchReport report = new BenchReport(quick, cores, results, png, runs.describe(), whole);
         report.write(out);
-        CohortSection.appendTo(out.resolve("report.md"), quick, log);
+        CohortTiming.Measured cohort = CohortSection.appendTo(out.resolve("report.md"), quick, log);
+        Goals goals = new Goals(quick, whole, cohort);
+        Files.writeString(out.resolve("report.md"), goals.markdown(), StandardCharsets.UTF_8,
+                StandardOpenOption.APPEND);
+        goals.print(log);
         log.printf("Wrote %s, %s and %s%n", out.resolve("report.md"), out.resolve("results.csv"),
                 out.resolve("speed-vs-error.png"));
         return EXIT_OK;
@@ -121,7 +129,7 @@ public final class BenchCommand implements Callable<Integer> {
     /** Frame sizes, repetitions and scenes for the two modes. */
     private record Settings(int width, int height, int errorWidth, int errorHeight, int warmups, int runs,
             int[] crowds, int processRuns) {
-        static final Settings FULL = new Settings(3840, 2160, 640, 480, 6, 7, new int[] {1_000, 10_000}, 7);
+        static final Settings FULL = new Settings(3840, 2160, 640, 480, 6, 7, new int[] {1_000, 10_000}, 11);
         static final Settings QUICK = new Settings(640, 480, 160, 120, 1, 3, new int[] {1_000}, 3);
 
         Settings withRuns(int warmups, int runs) {
@@ -212,30 +220,66 @@ public final class BenchCommand implements Callable<Integer> {
         void encode(BufferedImage image, ByteArrayOutputStream out) throws IOException;
     }
 
-    /** Whole runs in fresh processes. */
-    record Whole(Map<String, Double> phases, Timing startup, Timing handoutStyle, Timing crowd10, Timing crowd10k,
-            Timing endToEnd, String endToEndSize) {
+    /**
+     * Whole runs in fresh processes. {@code courseCode} and {@code scalarC} are the yardsticks run
+     * in turn with tick1's runs beside them ({@code startup} and {@code endToEnd}), or null with
+     * the reason in {@code courseCodeMissing} and {@code scalarCMissing}; {@code scalarCDiffering}
+     * counts the pixels where the C tracer's image differs from tick1's.
+     */
+    record Whole(Map<String, Double> phases, Timing startup, Timing courseCode, String courseCodeMissing,
+            Timing handoutStyle, Timing crowd10, Timing crowd10k, Timing endToEnd, String endToEndSize,
+            Timing scalarC, String scalarCMissing, long scalarCDiffering) {
     }
 
-    private Whole wholeRuns(ProcessRuns runs, Settings settings, Path tick1File) throws IOException {
-        String image = out.resolve("whole-run.png").toString();
+    private Whole wholeRuns(ProcessRuns runs, Settings settings, Path tick1File, Scene tick1) throws IOException {
+        Path image = out.resolve("whole-run.png");
         String scene = tick1File.toString();
-        Map<String, Double> phases = runs.phases(settings.processRuns, "-q", "-i", scene, "-o", image);
-        Timing startup = runs.tick1(settings.processRuns, "-q", "-i", scene, "-o", image);
-        Timing handoutStyle = runs.java(settings.processRuns, HandoutStyleRender.class.getName(), scene, image);
+        Path yardsticks = Files.createDirectories(out.resolve("yardsticks"));
+        Map<String, Double> phases = runs.phases(settings.processRuns, "-q", "-i", scene, "-o", image.toString());
+        List<String> small = runs.tick1Command("-q", "-i", scene, "-o", image.toString());
+        Timing startup, courseCode = null;
+        String courseCodeMissing = null;
+        try {
+            List<String> course = CourseCode.build(yardsticks, tick1File, yardsticks.resolve("course-code.png"));
+            List<Timing> pair = runs.interleaved(settings.processRuns, List.of(small, course));
+            startup = pair.get(0);
+            courseCode = pair.get(1);
+        } catch (IOException e) {
+            courseCodeMissing = e.getMessage();
+            startup = runs.tick1(settings.processRuns, small.subList(1, small.size()).toArray(String[]::new));
+        }
+        Timing handoutStyle = runs.java(settings.processRuns, HandoutStyleRender.class.getName(), scene,
+                image.toString());
         Path crowd10 = out.resolve("crowd-10.xml"), crowd10k = out.resolve("crowd-10000.xml");
         Files.writeString(crowd10, CrowdScene.xml(10));
         Files.writeString(crowd10k, CrowdScene.xml(10_000));
-        Timing ten = runs.tick1(settings.processRuns, "-q", "-i", crowd10.toString(), "-o", image);
-        Timing tenThousand = runs.tick1(settings.processRuns, "-q", "-i", crowd10k.toString(), "-o", image);
-        int w = quick ? 1920 : 3840, h = quick ? 1080 : 2160;
-        Timing endToEnd = runs.tick1(quick ? 1 : 5, "-q", "-i", scene, "-o", image, "--width", "" + w, "--height",
-                "" + h, "--samples", "4");
-        log.printf("  whole runs: start-up %.0f ms (handout-style java run %.0f ms); 10 spheres %.0f ms, 10,000 "
-                + "spheres %.0f ms; %d x %d x 4 samples %.0f ms%n", startup.median(), handoutStyle.median(),
-                ten.median(), tenThousand.median(), w, h, endToEnd.median());
-        Files.deleteIfExists(Path.of(image));
-        return new Whole(phases, startup, handoutStyle, ten, tenThousand, endToEnd, w + " x " + h);
+        Timing ten = runs.tick1(settings.processRuns, "-q", "-i", crowd10.toString(), "-o", image.toString());
+        Timing tenThousand = runs.tick1(settings.processRuns, "-q", "-i", crowd10k.toString(), "-o", image.toString());
+        int w = quick ? 1920 : 3840, h = quick ? 1080 : 2160, samples = 4;
+        List<String> big = runs.tick1Command("-q", "-i", scene, "-o", image.toString(), "--width", "" + w,
+                "--height", "" + h, "--samples", "" + samples);
+        Timing endToEnd, scalarC = null;
+        String scalarCMissing = null;
+        long differing = -1;
+        int bigRuns = quick ? 1 : 7;
+        try {
+            ScalarC c = ScalarC.build(yardsticks, tick1, w, h, samples);
+            List<Timing> pair = runs.interleaved(bigRuns, List.of(big, c.command()));
+            endToEnd = pair.get(0);
+            scalarC = pair.get(1);
+            differing = c.pixelsDifferingFrom(ImageIO.read(image.toFile()));
+        } catch (IOException e) {
+            scalarCMissing = e.getMessage();
+            endToEnd = runs.tick1(bigRuns, big.subList(1, big.size()).toArray(String[]::new));
+        }
+        log.printf("  whole runs: start-up %.0f ms (course code %s, handout-style java run %.0f ms); 10 spheres %.0f "
+                + "ms, 10,000 spheres %.0f ms; %d x %d x %d samples %.0f ms (scalar C %s)%n", startup.median(),
+                courseCode == null ? "not run" : String.format(Locale.ROOT, "%.0f ms", courseCode.median()),
+                handoutStyle.median(), ten.median(), tenThousand.median(), w, h, samples, endToEnd.median(),
+                scalarC == null ? "not run" : String.format(Locale.ROOT, "%.0f ms", scalarC.median()));
+        Files.deleteIfExists(image);
+        return new Whole(phases, startup, courseCode, courseCodeMissing, handoutStyle, ten, tenThousand, endToEnd,
+                w + " x " + h, scalarC, scalarCMissing, differing);
     }
 
     private static Scene load(Path file) {

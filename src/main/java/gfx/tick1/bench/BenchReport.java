@@ -89,20 +89,7 @@ final class BenchReport {
         md.append("\n## PNG encoding of one frame\n\n| encoder | median | size |\n|---|---:|---:|\n");
         png.forEach((name, row) -> md.append("| ").append(name).append(" | ").append(row).append(" |\n"));
 
-        md.append("\n## Whole runs in fresh processes\n\nStarted through ").append(launcher)
-                .append("; JVM start and PNG encoding included; median of the runs.\n\n");
-        md.append("Where the time of one 640 x 480 render of tick1.xml goes (`tick1 --timings`, medians):\n\n"
-                + "| phase | ms |\n|---|---:|\n");
-        whole.phases().forEach((phase, ms) -> md.append(String.format(Locale.ROOT, "| %s | %.1f |%n", phase, ms)));
-        md.append(String.format(Locale.ROOT, "%n| run | median ms |%n|---|---:|%n"
-                + "| tick1, tick1.xml at 640 x 480 | %.0f |%n"
-                + "| plain `java` run of a handout-style single-threaded renderer, same scene | %.0f |%n"
-                + "| tick1, 10 spheres at 640 x 480 | %.0f |%n| tick1, 10,000 spheres at 640 x 480 | %.0f |%n"
-                + "| tick1, tick1.xml at %s with 4 samples | %.0f |%n",
-                whole.startup().median(), whole.handoutStyle().median(), whole.crowd10().median(),
-                whole.crowd10k().median(), whole.endToEndSize(), whole.endToEnd().median()));
-        md.append(String.format(Locale.ROOT, "%nA whole run with 10,000 spheres takes %.2f times as long as one "
-                + "with 10.%n", whole.crowd10k().median() / whole.crowd10().median()));
+        wholeRuns(md);
 
         if (quick) {
             md.append("\nA quick run uses small frames and few runs: it shows that every variant runs and what it "
@@ -110,5 +97,50 @@ final class BenchReport {
         }
         md.append("\n![speed against error](speed-vs-error.png)\n");
         return md.toString();
+    }
+
+    private void wholeRuns(StringBuilder md) {
+        md.append("\n## Whole runs in fresh processes\n\nStarted through ").append(launcher)
+                .append("; JVM start and PNG encoding included; median of the runs.\n\n");
+        md.append("Where the time of one 640 x 480 render of tick1.xml goes (`tick1 --timings`, medians): the main "
+                + "thread's phases (after the command line, the time it waits for each), then when the render's "
+                + "own threads, started on a guess at the command line, had loaded the scene, rendered the last "
+                + "row and encoded the PNG, in ms after main began:\n\n| phase | ms |\n|---|---:|\n");
+        whole.phases().forEach((phase, ms) -> md.append(String.format(Locale.ROOT, "| %s | %.1f |%n", phase, ms)));
+        md.append("\nThe yardsticks are run in turn with tick1's runs beside them: the course's own code (the "
+                + "starter kit that `tick1 starter` writes, with a correct solution, compiled with javac and run "
+                + "with `java -cp` on the same JDK) and a single-threaded scalar C tracer of the same rays with the "
+                + "same maths in doubles (`" + ScalarC.SOURCE + "`, built with `" + ScalarC.buildLine() + "`).\n");
+        md.append("\n| run | median ms | tick1's time / this |\n|---|---:|---:|\n");
+        row(md, "tick1, tick1.xml at 640 x 480", whole.startup(), null);
+        row(md, "course code (starter kit + correct solution, `java -cp`), tick1.xml at 640 x 480",
+                whole.courseCode(), whole.startup());
+        if (whole.courseCode() == null) {
+            md.append("| course code: not run (").append(whole.courseCodeMissing()).append(") | | |\n");
+        }
+        row(md, "plain `java` run of a handout-style single-threaded renderer, same scene", whole.handoutStyle(),
+                whole.startup());
+        row(md, "tick1, 10 spheres at 640 x 480", whole.crowd10(), null);
+        row(md, "tick1, 10,000 spheres at 640 x 480", whole.crowd10k(), null);
+        row(md, "tick1, tick1.xml at " + whole.endToEndSize() + " with 4 samples", whole.endToEnd(), null);
+        row(md, "scalar C on one core, the same rays at " + whole.endToEndSize() + " x 4", whole.scalarC(),
+                whole.endToEnd());
+        if (whole.scalarC() == null) {
+            md.append("| scalar C: not run (").append(whole.scalarCMissing()).append(") | | |\n");
+        } else {
+            md.append(String.format(Locale.ROOT, "%nThe C tracer's image differs from tick1's in %,d pixels.%n",
+                    whole.scalarCDiffering()));
+        }
+        md.append(String.format(Locale.ROOT, "%nA whole run with 10,000 spheres takes %.2f times as long as one "
+                + "with 10.%n", whole.crowd10k().median() / whole.crowd10().median()));
+    }
+
+    /** A row of the whole-runs table; with {@code tick1}, the ratio of tick1's run to this one. */
+    private static void row(StringBuilder md, String run, Timing timing, Timing tick1) {
+        if (timing == null) {
+            return;
+        }
+        String ratio = tick1 == null ? "" : String.format(Locale.ROOT, "%.2f", tick1.median() / timing.median());
+        md.append(String.format(Locale.ROOT, "| %s | %.0f | %s |%n", run, timing.median(), ratio));
     }
 }

@@ -25,11 +25,15 @@ final class CohortSection {
     private CohortSection() {
     }
 
-    /** Measures a cohort of 100 (the full run) or 10 (--quick) and appends the section to {@code report}. */
-    static void appendTo(Path report, boolean quick, PrintWriter log) throws IOException {
+    /**
+     * Measures a cohort of 100 (the full run) or 10 (--quick) and appends the section to {@code report};
+     * returns what was measured, or null where nothing could be.
+     */
+    static CohortTiming.Measured appendTo(Path report, boolean quick, PrintWriter log) throws IOException {
         int count = quick ? 10 : 100;
         int jobs = Runtime.getRuntime().availableProcessors();
         String section;
+        CohortTiming.Measured measured = null;
         if (!Files.isRegularFile(SOLUTION.resolve("Sphere.java"))) {
             section = heading() + "Not measured: the correct solution (" + SOLUTION + ") is not here; run the "
                     + "benchmark in the project's folder.\n";
@@ -42,6 +46,7 @@ final class CohortSection {
                         Files.readString(SOLUTION.resolve("Sphere.java"), StandardCharsets.UTF_8),
                         Files.readString(SOLUTION.resolve("Renderer.java"), StandardCharsets.UTF_8),
                         count, jobs, WIDTH, HEIGHT);
+                measured = m;
                 section = markdown(m) + "\nThe machine's load average (1 minute) was " + loadBefore
                         + " before the grade and " + loadAverage() + " after it: other work on the machine slows "
                         + "every phase.\n";
@@ -53,6 +58,7 @@ final class CohortSection {
             }
         }
         Files.writeString(report, "\n" + section, StandardCharsets.UTF_8, StandardOpenOption.APPEND);
+        return measured;
     }
 
     /** The first figure of /proc/loadavg, or "unknown" where there is none. */

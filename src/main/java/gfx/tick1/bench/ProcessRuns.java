@@ -36,7 +36,7 @@ final class ProcessRuns {
     }
 
     /** The command that runs tick1 with these arguments: the launcher, or java -cp. */
-    private List<String> tick1Command(String... args) {
+    List<String> tick1Command(String... args) {
         List<String> command = new ArrayList<>();
         if (launcher != null) {
             command.add(launcher.toString());
@@ -74,6 +74,30 @@ final class ProcessRuns {
         Map<String, Double> medians = new LinkedHashMap<>();
         samples.forEach((phase, values) -> medians.put(phase, Timing.of(values).median()));
         return medians;
+    }
+
+    /**
+     * The wall-clock times of {@code runs} runs of each command, taken in turn (the first command,
+     * the second, ..., then the first again), so that a change in the machine's load falls on all
+     * of them alike: what their ratios need.
+     */
+    List<Timing> interleaved(int runs, List<List<String>> commands) throws IOException {
+        for (List<String> command : commands) {
+            run(command); // one untimed run each: the file cache, not the program, is what it warms
+        }
+        double[][] millis = new double[commands.size()][runs];
+        for (int i = 0; i < runs; i++) {
+            for (int c = 0; c < commands.size(); c++) {
+                long start = System.nanoTime();
+                run(commands.get(c));
+                millis[c][i] = (System.nanoTime() - start) / 1e6;
+            }
+        }
+        List<Timing> timings = new ArrayList<>();
+        for (double[] samples : millis) {
+            timings.add(Timing.of(samples));
+        }
+        return timings;
     }
 
     private Timing time(List<String> command, int runs) throws IOException {

@@ -8,6 +8,8 @@ import java.awt.image.DataBufferInt;
 import java.awt.image.DirectColorModel;
 import java.awt.image.Raster;
 import java.awt.image.WritableRaster;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.IntConsumer;
 import java.util.stream.IntStream;
@@ -72,30 +74,38 @@ public final class FastRenderer {
         return render(scene, row -> { });
     }
 
-    /** Renders on the current pool's threads; {@code rowsDone} hears each finished row's count. */
+    /**
+     * Renders on the current pool's threads (or the common pool and this thread, outside any pool);
+     * {@code rowsDone} hears each finished row's count.
+     */
     public BufferedImage render(Scene scene, IntConsumer rowsDone) {
+        RowsInOrder rows = start(scene);
+        AtomicInteger finished = new AtomicInteger();
+        int workers = ForkJoinTask.inForkJoinPool() ? ForkJoinTask.getPool().getParallelism()
+                : ForkJoinPool.getCommonPoolParallelism() + 1;
+        // A parallel stream started inside a pool's task runs on that pool's threads: one worker each.
+        IntConsumer counted = y -> rowsDone.accept(finished.incrementAndGet());
+        IntStream.range(0, workers).parallel().forEach(worker -> rows.work(counted));
+        return rows.image();
+    }
+
+    /**
+     * A render of this scene that the caller's threads share, each calling {@link RowsInOrder#work}:
+     * the same pixels as {@link #render(Scene)}, with the rows finished nearly in order.
+     */
+    public RowsInOrder start(Scene scene) {
         FlatScene flat = new FlatScene(scene, intersection);
         boolean bvh = search == SphereSearch.BVH
                 || search == SphereSearch.BY_SCENE_SIZE && flat.size >= BVH_THRESHOLD;
         SphereBvh tree = bvh && flat.size > 0 ? new SphereBvh(flat) : null;
-        ScreenBounds bounds = new ScreenBounds(flat, frame);
-        int width = frame.width(), height = frame.height();
-        int[] pixels = new int[width * height];
-        AtomicInteger finished = new AtomicInteger();
-        // One tracer (and its row buffers) a thread, not a row.
-        ThreadLocal<Tracer> tracers = ThreadLocal.withInitial(() -> new Tracer(flat, tree, bounds, frame));
-        IntStream.range(0, height).parallel().forEach(y -> {
-            tracers.get().row(y, pixels, y * width);
-            rowsDone.accept(finished.incrementAndGet());
-        });
-        return wrap(pixels, width, height);
+        return new RowsInOrder(flat, tree, new ScreenBounds(flat, frame), frame);
     }
 
     /**
      * An RGB image backed by {@code pixels} itself: copying through {@code setRGB} would convert
      * every pixel through the colour model, which costs as much as a fifth of a 4K render.
      */
-    private static BufferedImage wrap(int[] pixels, int width, int height) {
+    static BufferedImage wrap(int[] pixels, int width, int height) {
         DirectColorModel model = new DirectColorModel(24, 0xFF0000, 0x00FF00, 0x0000FF);
         WritableRaster raster = Raster.createPackedRaster(new DataBufferInt(pixels, pixels.length), width, height,
                 width, model.getMasks(), null);

@@ -3,12 +3,15 @@ package gfx.tick1.image;
 import gfx.tick1.io.AtomicFile;
 import gfx.tick1.io.IoErrors;
 import java.awt.image.BufferedImage;
+import java.awt.image.RenderedImage;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.security.SecureRandom;
 import javax.imageio.IIOException;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
@@ -53,6 +56,24 @@ public final class PngOutput {
     }
 
     static void write(BufferedImage image, Path target, Encoder encoder) throws IOException {
+        write(target, out -> encoder.encode(image, out));
+    }
+
+    /**
+     * Writes a PNG already encoded ({@link #write(RenderedImage, OutputStream)} into memory) to
+     * {@code target}, as whole as {@link #write(BufferedImage, Path)} writes one.
+     */
+    public static void write(byte[] png, Path target) throws IOException {
+        write(target, out -> out.write(png));
+    }
+
+    /** What goes into the file. */
+    @FunctionalInterface
+    private interface Contents {
+        void writeTo(OutputStream out) throws IOException;
+    }
+
+    private static void write(Path target, Contents contents) throws IOException {
         Path given = target.toAbsolutePath();
         if (Files.isDirectory(given)) {
             throw new IOException("is a directory, expected a file name for the PNG");
@@ -64,7 +85,7 @@ public final class PngOutput {
             // /dev/stdout lead to /proc/self/fd/1 and on to a name such as "pipe:[1234]", which is
             // no path at all.
             try (OutputStream out = Files.newOutputStream(given)) {
-                encoder.encode(image, out);
+                contents.writeTo(out);
             }
             return;
         }
@@ -76,7 +97,7 @@ public final class PngOutput {
         if (!Files.isDirectory(directory)) {
             throw new IOException(directory + " is not a directory");
         }
-        AtomicFile.write(absolute, out -> encoder.encode(image, out), e -> cannotCreate(directory, e));
+        AtomicFile.write(absolute, contents::writeTo, e -> cannotCreate(directory, e));
     }
 
     /** Most failures to create a file name only the file; say the reason where one is known. */
@@ -103,12 +124,24 @@ public final class PngOutput {
      * Encodes {@code image} as PNG onto a stream (standard output, for {@code --output -}) through
      * ImageIO's own PNG writer. The stream is flushed, not closed.
      */
-    public static void write(BufferedImage image, OutputStream out) throws IOException {
+    public static void write(RenderedImage image, OutputStream out) throws IOException {
         write(image, out, DEFLATE_LEVEL);
     }
 
+    /**
+     * Loads ImageIO's registry and its PNG writer, so that a write started later (on another
+     * thread, say, while the image is still being drawn) does not wait for them; and what the
+     * temporary file beside the target needs (its name's random part, its permissions), which
+     * is most of the time a small PNG takes to be written.
+     */
+    public static void load() {
+        ImageIO.getImageWritersByFormatName("png").next().dispose();
+        new SecureRandom().nextLong();
+        PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-rw-rw-"));
+    }
+
     /** As {@link #write(BufferedImage, OutputStream)}, at a deflate level from 0 (none) to 9 (best). */
-    public static void write(BufferedImage image, OutputStream out, int deflateLevel) throws IOException {
+    public static void write(RenderedImage image, OutputStream out, int deflateLevel) throws IOException {
         ImageWriter writer = ImageIO.getImageWritersByFormatName("png").next();
         ImageWriteParam param = writer.getDefaultWriteParam();
         param.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);

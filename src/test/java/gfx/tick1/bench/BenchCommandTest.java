@@ -10,7 +10,6 @@ import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Locale;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -67,11 +66,38 @@ class BenchCommandTest {
     }
 
     @Test
-    void theReportAndWhatItPrintsSayWhatWasMeasuredWithoutTargets() throws IOException {
+    void theWholeRunsTableHasTheCourseCodeAndTheCTracerBesideTick1WithRatios() throws IOException {
+        String report = Files.readString(out.resolve("report.md"));
+        assertThat(report).contains("| run | median ms | tick1's time / this |",
+                "| course code (starter kit + correct solution, `java -cp`), tick1.xml at 640 x 480 | ",
+                ScalarC.buildLine());
+        assertThat(report).as("the C tracer is run where a compiler is, and says why not elsewhere")
+                .containsAnyOf("| scalar C on one core, the same rays at 1920 x 1080 x 4 | ", "| scalar C: not run (");
+    }
+
+    @Test
+    void theCTracerDrawsTickOnesPixelsWhereItRuns() throws IOException {
+        String report = Files.readString(out.resolve("report.md"));
+        if (report.contains("| scalar C on one core")) {
+            assertThat(report).contains("The C tracer's image differs from tick1's in 0 pixels.");
+        }
+    }
+
+    @Test
+    void theThreeRatiosArePrintedBesideTheirGoals() throws IOException {
         String report = Files.readString(out.resolve("report.md"));
         for (String text : new String[] {report, printed}) {
-            assertThat(text.toLowerCase(Locale.ROOT)).doesNotContain("target", "goal", " met:");
+            assertThat(text).contains("640 x 480, whole run: tick1's time / the course code's",
+                    "with 4 samples, whole run: tick1's time / single-core scalar C's",
+                    "grading a cohort: wall time a submission", "at most 0.8", "at most 0.5 s");
         }
+        assertThat(report).contains("## Speed goals", "| measure | this run | goal | met |");
+    }
+
+    @Test
+    void aQuickRunCallsNoGoalMetOrUnmet() throws IOException {
+        String report = Files.readString(out.resolve("report.md"));
+        assertThat(report).doesNotContain("| yes |", "| no |");
     }
 
     @Test
