@@ -1,6 +1,7 @@
 package gfx.tick1.grade;
 
 import gfx.tick1.cli.CommandFailure;
+import gfx.tick1.cli.ExitStatuses;
 import gfx.tick1.grade.cohort.CohortGrade;
 import gfx.tick1.grade.cohort.ResultStore;
 import gfx.tick1.grade.grading.Grading;
@@ -61,6 +62,10 @@ final class CohortCommand {
             submissions = withoutOwnFiles(Submissions.read(options.submissions()));
         } catch (IOException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, IoErrors.describe(e));
+        }
+        if (options.scenesFolder() == null) {
+            err.println("tick1 grade: the built-in hidden scene is public (it is in tick1): anyone can pass it by "
+                    + "copying its images; give scenes of your own with --scenes");
         }
         Submissions.sharedIds(submissions).forEach((id, folders) -> err.println("tick1 grade: participant "
                 + printable(id) + " has " + folders.size() + " folders in the download (" + printable(String.join(
@@ -163,11 +168,13 @@ final class CohortCommand {
                 + (problems > 0 ? ", " + problems + " not run: a problem with their files" : "") + "): "
                 + passed + " passed, " + (results.size() - passed) + " failed.");
         out.println("Grades: " + report.resolve(ReportFiles.GRADES) + "; report: " + report.resolve("index.html"));
-        for (String folder : done.ungraded()) {
-            err.println("tick1 grade: " + printable(folder) + ": not graded: its images could not be stored in "
-                    + report);
+        for (CohortGrade.Ungraded ungraded : done.ungraded()) {
+            err.println("tick1 grade: " + printable(ungraded.folder()) + ": not graded: " + ungraded.why()
+                    + (ungraded.grader() ? "" : " " + report));
         }
-        return done.ungraded().isEmpty() ? GradeCommand.EXIT_PASS : GradeCommand.EXIT_CANNOT_WRITE;
+        return done.ungraded().isEmpty() ? GradeCommand.EXIT_PASS
+                : done.ungraded().stream().anyMatch(CohortGrade.Ungraded::grader) ? ExitStatuses.EXIT_INTERNAL
+                : GradeCommand.EXIT_CANNOT_WRITE;
     }
 
     /**

@@ -37,7 +37,9 @@ import picocli.CommandLine.Spec;
                     + "with them, and compares each image with the reference render, pixel for pixel. Compiling and "
                     + "rendering run in a separate Java process inside a bubblewrap sandbox, with time, memory and "
                     + "process limits. A failing scene is explained: the difference figures, the closest entry of "
-                    + "the diagnose catalogue, and a heat map (not for hidden scenes).",
+                    + "the diagnose catalogue, and a heat map (not for hidden scenes). The built-in hidden scene is "
+                    + "public (it is in tick1, which students have): anyone can pass it by copying its images; "
+                    + "give scenes of your own with --scenes for a grade that counts.",
             "With --submissions it grades a whole cohort from Moodle's download: every submission in a sandbox of "
                     + "its own, several at once, into grades.csv (Moodle's grading worksheet), a feedback page per "
                     + "student and index.html. Each result is kept as soon as it is known: a grade that is stopped "
@@ -178,6 +180,9 @@ public final class GradeCommand implements Callable<Integer> {
                 throw new CommandFailure(EXIT_USAGE, e.getMessage() + ": install the " + Sandbox.PACKAGE
                         + " package (apt-get install " + Sandbox.PACKAGE + "), or give --no-sandbox to grade "
                         + "without a sandbox");
+            }
+            if (sandbox.totalsNotEnforced() != null) {
+                err.println("tick1 grade: warning: " + sandbox.totalsNotEnforced());
             }
         }
         if (target.cohort != null) {

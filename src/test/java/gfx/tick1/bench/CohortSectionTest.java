@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 class CohortSectionTest {
 
     private static final CohortTiming.Measured MEASURED = new CohortTiming.Measured(100, 2, 100, 80.0, 0.9, 0.6,
-            0.05, 1.6);
+            0.05, 1.6, 0.0042);
 
     @Test
     void theSectionGivesTheWallTimePerSubmissionAndEachPhase() {
@@ -18,7 +18,8 @@ class CohortSectionTest {
                 .contains("100 correct solutions", "2 at a time", "100 of 100 passed")
                 .contains("| wall time per submission (whole grade / submissions) | 0.800 |")
                 .contains("compile (the sandbox, the JVM's start, javac) | 0.900 |")
-                .contains("| 0.600 |", "| 0.050 |", "| 1.600 |");
+                .contains("| 0.600 |", "| 0.050 |", "| 1.600 |")
+                .contains("the control groups (2 runs, each making, joining, removing one)", "| 0.0042 |");
     }
 
     @Test

@@ -104,12 +104,21 @@ class GradeAttackTest {
     }
 
     private Grade gradeFiles(Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
-        List<String> command = new ArrayList<>(List.of(
+        return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary, sphere, renderer, options);
+    }
+
+    /** A grade started by {@code launcher} (setpriv: as another user), with this class path and temporary folder. */
+    private Grade gradeFilesAs(List<String> launcher, String classPath, Path temporaryFolder, Path sphere,
+            Path renderer, String... options) throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>(launcher);
+        command.addAll(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporary,
-                "-cp", System.getProperty("java.class.path"),
-                Tick1.class.getName(), "grade", "--sphere", sphere.toString(), "--renderer", renderer.toString(),
-                "--report", dir.resolve("report").toString()));
+                GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporaryFolder,
+                "-cp", classPath,
+                Tick1.class.getName(), "grade", "--sphere", sphere.toString(), "--renderer", renderer.toString()));
+        if (!List.of(options).contains("--report")) {
+            command.addAll(List.of("--report", dir.resolve("report").toString()));
+        }
         command.addAll(List.of(SMALL));
         if (!List.of(options).contains("--time-limit")) {
             command.addAll(List.of("--time-limit", "10"));
@@ -263,7 +272,125 @@ class GradeAttackTest {
         assertThat(grade.output()).as("the public scene's report keeps the message").contains("HIDDENLEAK");
         assertThat(hidden).as("the hidden scene's report").doesNotContain("HIDDENLEAK")
                 .startsWith("hidden.xml: FAIL: the code threw an exception (its message is not shown for a hidden "
-                        + "scene)\n    at gfx.tick1.Renderer.render(Renderer.java:20)\nFAILED");
+                        + "scene)\nFAILED");
+    }
+
+    @Test
+    void trueStackFramesCannotCarryAHiddenSceneOutInTheirMethodNamesOrLineNumbers() throws Exception {
+        Grade grade = grade("frames-channel");
+        assertFailedAndHarmedNothing(grade);
+        String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: FAIL"));
+        assertThat(grade.output()).as("the public scene's report keeps the frames")
+                .containsPattern("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: (low|high)");
+        assertThat(hidden).as("the hidden scene's report: fixed words and the class only")
+                .startsWith("hidden.xml: FAIL: the code threw java.lang.IllegalStateException (its message is not "
+                        + "shown for a hidden scene)\nFAILED")
+                .doesNotContain("leakEven", "leakOdd", "Renderer.java:");
+    }
+
+    @Test
+    void aThousandSixHundredCommentLinesBeforeThePackageAreReadAsJavacReadsThem() throws Exception {
+        Path student = Files.createDirectories(dir.resolve("comment-flood"));
+        StudentSolution correct = StudentSolution.correct();
+        Path[] files = correct.writeTo(student);
+        Files.writeString(files[0], "//\n".repeat(1_600) + Files.readString(files[0]));
+        Files.writeString(files[1], "/* x */\n".repeat(800) + "\n".repeat(1_700) + Files.readString(files[1]));
+        Grade grade = gradeFiles(files[0], files[1]);
+        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(grade.output()).doesNotContain("Exception", "\tat ");
+    }
+
+    @Test
+    void aPackageLineThatNeverEndsIsRefusedByTheScanCap() throws Exception {
+        Path student = Files.createDirectories(dir.resolve("endless-package"));
+        Path[] files = StudentSolution.correct().writeTo(student);
+        Files.writeString(files[0], "package gfx" + " ".repeat(320 * 1024));
+        Grade grade = gradeFiles(files[0], files[1]);
+        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(grade.output()).contains("but it declares no package within its first 65536 characters");
+    }
+
+    @Test
+    void theSandboxsFileSystemsInMemoryAreSizedOrReadOnly() throws Exception {
+        Grade grade = grade("fill-the-tmpfs");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).containsPattern("/dev/shm: (\\d|[1-5]\\d|6[0-4]) MiB in all "
+                + "\\(No space left on device\\)")
+                .containsPattern("; /fill: stopped after 0 MiB \\(/fill \\((Read-only file system|Permission "
+                        + "denied)\\)")
+                .containsPattern("/dev/fill: stopped after 0 MiB \\(/dev/fill \\((Read-only file system|Permission "
+                        + "denied)\\)");
+    }
+
+    @Test
+    void memorySpreadOverManyProcessesIsHeldToOneTotal() throws Exception {
+        assumeThat(totalsEnforced()).as("a control group can be made here").isTrue();
+        Grade grade = grade("memory-in-many-processes", "--memory", "64");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program used more than 576 MiB of memory in all");
+    }
+
+    @Test
+    void whatTheCodeWritesToItsOutputFolderIsCapped() throws Exception {
+        Grade grade = grade("fill-the-output");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: it wrote more than 256 MiB "
+                + "to its output folder").doesNotContain("wrote 64 files");
+    }
+
+    @Test
+    void filesTheCodeMadeUnreadableAreTheStudentsFailureWhenGradingAsANormalUser() throws Exception {
+        Path home = Files.createDirectory(dir.resolve("normal-user"));
+        Path classPath = Files.createDirectory(home.resolve("class-path"));
+        List<String> entries = new ArrayList<>();
+        for (String entry : System.getProperty("java.class.path").split(java.io.File.pathSeparator)) {
+            Path from = Path.of(entry);
+            if (Files.exists(from)) {
+                Path to = classPath.resolve(entries.size() + "-" + from.getFileName());
+                copyTree(from, to);
+                entries.add(to.toString());
+            }
+        }
+        Path student = Files.createDirectories(home.resolve("student"));
+        Files.writeString(student.resolve("Renderer.java"), resourceOr("/students/attacks/unreadable-progress/"
+                + "Renderer.java", null));
+        Files.writeString(student.resolve("Sphere.java"), StarterKit.source("Sphere"));
+        Path tmp = Files.createDirectory(home.resolve("tmp"));
+        try (Stream<Path> all = Files.walk(home)) {
+            for (Path file : all.toList()) {
+                Files.setAttribute(file, "unix:uid", NORMAL_USER);
+                Files.setAttribute(file, "unix:gid", NORMAL_USER);
+            }
+        }
+        Files.setPosixFilePermissions(home, PosixFilePermissions.fromString("rwx--x--x"));
+        Grade grade = gradeFilesAs(List.of("/usr/bin/setpriv", "--reuid=" + NORMAL_USER, "--regid=" + NORMAL_USER,
+                "--clear-groups"), String.join(java.io.File.pathSeparator, entries), tmp,
+                student.resolve("Sphere.java"), student.resolve("Renderer.java"), "--report",
+                home.resolve("report").toString());
+        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: ").doesNotContain("internal error",
+                "AccessDeniedException");
+        try (Stream<Path> left = Files.list(tmp)) {
+            assertThat(left.toList()).as("work folders left").isEmpty();
+        }
+    }
+
+    /** The user the normal-user grade runs as: nobody. */
+    private static final int NORMAL_USER = 65534;
+
+    private static void copyTree(Path from, Path to) throws IOException {
+        try (Stream<Path> all = Files.walk(from)) {
+            for (Path file : all.toList()) {
+                Files.copy(file, to.resolve(from.relativize(file).toString()));
+            }
+        }
+    }
+
+    /** Whether this machine gives each run a control group (the grade warns when it cannot). */
+    private boolean totalsEnforced() throws Exception {
+        Path[] files = StudentSolution.correct().writeTo(Files.createDirectories(dir.resolve("probe")));
+        Grade grade = gradeFiles(files[0], files[1], "--width", "8", "--height", "6");
+        return !grade.output().contains("memory, processes and CPU are not limited in all");
     }
 
     @Test

@@ -110,6 +110,12 @@ class GradeCohortTest {
                 "System.exit(0); return image;")), false));
         students.add(new Student("Other Package", id++, files(correct.editSphere("package gfx.tick1;",
                 "package tick1;")), false));
+        // Comments and blank lines that overflowed the stack of a grader parsing the package by a regex, and a
+        // package line that never ends, which it parsed in quadratic time: each is one student's grade alone.
+        students.add(new Student("Comment Flood", id++, files(new StudentSolution("//\n".repeat(1_600)
+                + correct.sphere(), "/* x */\n".repeat(800) + "\n".repeat(1_700) + correct.renderer())), true));
+        students.add(new Student("Endless Package", id++, files(new StudentSolution("package gfx"
+                + " ".repeat(320 * 1024), correct.renderer())), false));
         Map<String, byte[]> twice = new LinkedHashMap<>(files(correct));
         twice.put("old/Sphere.java", correct.sphere().getBytes(StandardCharsets.UTF_8));
         students.add(new Student("Two Spheres", id++, twice, false));

@@ -4,6 +4,7 @@ import gfx.tick1.grade.grading.Grading;
 import gfx.tick1.grade.grading.SubmissionGrader;
 import gfx.tick1.grade.model.StudentResult;
 import gfx.tick1.grade.model.Submission;
+import gfx.tick1.grade.sandbox.ChildOutput;
 import gfx.tick1.grade.sandbox.Sandbox;
 import gfx.tick1.grade.sandbox.StudentProcess;
 import gfx.tick1.grade.sandbox.WorkFolder;
@@ -18,12 +19,17 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.ThreadFactory;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.stream.IntStream;
 
 /**
  * Grades a cohort: every submission in the sandbox, {@code jobs} at a time, each in a process and
@@ -33,10 +39,25 @@ import java.util.stream.IntStream;
  */
 public final class CohortGrade {
 
-    /** What a cohort grade did: every result in the submissions' order, and the time of those graded now. */
+    /**
+     * What a cohort grade did: every result in the submissions' order, and the time of those graded
+     * now; {@code ungraded}, the submissions that could not be graded, each with why.
+     */
     public record Done(List<StudentResult> results, List<Path> images, List<SubmissionGrader.Phases> phases, int stored,
-            List<String> ungraded) {
+            List<Ungraded> ungraded) {
     }
+
+    /**
+     * A submission that could not be graded: its folder, and why in one line. It keeps a failing
+     * row (never "no submission"), and is graded again by the next run.
+     *
+     * @param grader whether the grader is at fault (an error of tick1's), not the report's folder
+     */
+    public record Ungraded(String folder, String why, boolean grader) {
+    }
+
+    /** The diagnosis of a submission tick1 could not grade. */
+    public static final String NOT_GRADED = "not graded";
 
     /**
      * From how many submissions to grade a class data sharing archive is made: it takes about as
@@ -85,120 +106,224 @@ public final class CohortGrade {
 
     /** Grades {@code submissions} in {@code work}, a folder of the grader's own. */
     public Done run(List<Submission> submissions, Path work) throws IOException, InterruptedException {
-        int count = submissions.size();
-        StudentResult[] results = new StudentResult[count];
-        Path[] images = new Path[count];
-        List<Integer> todo = new ArrayList<>();
-        // Submissions with the same key (the same files) are graded once: the others wait for its result.
-        Map<Integer, String> sameAsEarlier = new HashMap<>();
-        Set<String> keys = new HashSet<>();
-        for (int i = 0; i < count; i++) {
-            Submission submission = submissions.get(i);
-            if (submission.problem() != null) {
-                results[i] = new SubmissionGrader(grading, sandbox, null, null)
-                        .grade(submission, null, null, new PrintWriter(Writer.nullWriter()), err).result();
-                continue;
-            }
-            String key = ResultStore.key(submission, grading);
-            results[i] = store.load(key, submission);
-            if (results[i] == null && !keys.add(key)) {
-                sameAsEarlier.put(i, key);
-            } else if (results[i] == null) {
-                todo.add(i);
-            } else {
-                images[i] = store.folderOf(key);
-            }
-        }
-        int stored = (int) IntStream.range(0, count)
-                .filter(i -> results[i] != null && submissions.get(i).problem() == null).count();
-        List<SubmissionGrader.Phases> phases = Collections.synchronizedList(new ArrayList<>());
-        List<String> ungraded = Collections.synchronizedList(new ArrayList<>());
-        if (!todo.isEmpty()) {
-            // The sandboxes' users must be able to pass through the work folder to their own folders in it.
-            Files.setPosixFilePermissions(work, PosixFilePermissions.fromString("rwx--x--x"));
-            StudentProcess process = process(work, todo.size());
-            Progress progress = new Progress(todo.size());
-            AtomicInteger next = new AtomicInteger();
-            List<Thread> workers = new ArrayList<>();
-            List<Throwable> failures = Collections.synchronizedList(new ArrayList<>());
-            for (int job = 0; job < Math.min(jobs, todo.size()); job++) {
-                int j = job;
-                Thread worker = new Thread(() -> {
-                    try {
-                        work(j, work.resolve("job-" + j), process, submissions, todo, next, results, images, phases,
-                                ungraded, progress);
-                    } catch (IOException | RuntimeException e) {
-                        if (!stopping) {
-                            failures.add(e);
-                        }
-                    } catch (InterruptedException e) {
-                        Thread.currentThread().interrupt();
-                    }
-                }, "tick1-grade-job-" + j);
-                workers.add(worker);
-                worker.start();
-            }
-            for (Thread worker : workers) {
-                worker.join();
-            }
-            progress.finish();
-            if (!failures.isEmpty()) {
-                Throwable first = failures.get(0);
-                throw first instanceof IOException io ? io : new IOException(first.toString(), first);
-            }
-        }
-        for (Map.Entry<Integer, String> same : sameAsEarlier.entrySet()) {
-            results[same.getKey()] = store.load(same.getValue(), submissions.get(same.getKey()));
-            images[same.getKey()] = store.folderOf(same.getValue());
-        }
-        List<StudentResult> all = new ArrayList<>();
-        List<Path> allImages = new ArrayList<>();
-        for (int i = 0; i < count; i++) {
-            if (results[i] != null) {
-                all.add(results[i]);
-                allImages.add(images[i]);
-            }
-        }
-        return new Done(all, allImages, List.copyOf(phases), stored, List.copyOf(ungraded));
+        return new CohortRun(submissions, work).grade();
     }
 
-    /** One job: its own folder, sandbox user and process; takes the next submission until none is left. */
-    private void work(int job, Path folder, StudentProcess shared, List<Submission> submissions, List<Integer> todo,
-            AtomicInteger next, StudentResult[] results, Path[] images, List<SubmissionGrader.Phases> phases,
-            List<String> ungraded, Progress progress) throws IOException, InterruptedException {
-        Sandbox jobSandbox = sandbox.forJob(job);
-        Files.createDirectory(folder);
-        grading.copyScenes(folder);
-        jobSandbox.share(folder, false);
-        StudentProcess process = shared.in(jobSandbox);
-        processes.add(process);
-        SubmissionGrader grader = new SubmissionGrader(grading, jobSandbox, process, folder);
-        PrintWriter transcript = new PrintWriter(Writer.nullWriter());
-        for (int n; !stopping && (n = next.getAndIncrement()) < todo.size(); ) {
-            int index = todo.get(n);
+    /** One run's state: what is to grade, what is known, and the jobs that grade it. */
+    private final class CohortRun {
+        private final List<Submission> submissions;
+        private final Path work;
+        private final StudentResult[] results;
+        private final Path[] images;
+        private final List<Integer> todo = new ArrayList<>();
+        /** Submissions with the same key (the same files) are graded once: the others wait for its result. */
+        private final Map<Integer, String> sameAsEarlier = new HashMap<>();
+        private final Map<String, Integer> firstWithKey = new HashMap<>();
+        private final List<SubmissionGrader.Phases> phases = Collections.synchronizedList(new ArrayList<>());
+        private final List<Ungraded> ungraded = Collections.synchronizedList(new ArrayList<>());
+        /** The jobs not grading just now: each has its own folder, sandbox user and process. */
+        private final BlockingQueue<Job> idle = new LinkedBlockingQueue<>();
+        private int stored;
+
+        CohortRun(List<Submission> submissions, Path work) {
+            this.submissions = submissions;
+            this.work = work;
+            this.results = new StudentResult[submissions.size()];
+            this.images = new Path[submissions.size()];
+        }
+
+        Done grade() throws IOException, InterruptedException {
+            sort();
+            if (!todo.isEmpty()) {
+                gradeTodo();
+            }
+            for (Map.Entry<Integer, String> same : sameAsEarlier.entrySet()) {
+                int i = same.getKey();
+                results[i] = store.load(same.getValue(), submissions.get(i));
+                images[i] = store.folderOf(same.getValue());
+                StudentResult original = results[firstWithKey.get(same.getValue())];
+                if (results[i] == null && original != null && NOT_GRADED.equals(original.diagnosis())) {
+                    // The one graded for it could not be: it fares the same.
+                    String why = original.reason();
+                    results[i] = new StudentResult(submissions.get(i), false, 0, 0, NOT_GRADED, why, List.of(),
+                            Duration.ZERO);
+                    ungraded.add(new Ungraded(submissions.get(i).folder(), "the same files as "
+                            + submissions.get(firstWithKey.get(same.getValue())).folder() + ", which was not graded",
+                            true));
+                }
+            }
+            List<StudentResult> all = new ArrayList<>();
+            List<Path> allImages = new ArrayList<>();
+            for (int i = 0; i < results.length; i++) {
+                if (results[i] != null) {
+                    all.add(results[i]);
+                    allImages.add(images[i]);
+                }
+            }
+            return new Done(all, allImages, List.copyOf(phases), stored, List.copyOf(ungraded));
+        }
+
+        /** Results known already (problems, stored results), and the submissions left to grade. */
+        private void sort() throws IOException, InterruptedException {
+            for (int i = 0; i < submissions.size(); i++) {
+                Submission submission = submissions.get(i);
+                if (submission.problem() != null) {
+                    results[i] = new SubmissionGrader(grading, sandbox, null, null)
+                            .grade(submission, null, null, new PrintWriter(Writer.nullWriter()), err).result();
+                    continue;
+                }
+                String key = ResultStore.key(submission, grading);
+                results[i] = store.load(key, submission);
+                if (results[i] != null) {
+                    images[i] = store.folderOf(key);
+                    stored++;
+                } else if (firstWithKey.putIfAbsent(key, i) != null) {
+                    sameAsEarlier.put(i, key);
+                } else {
+                    todo.add(i);
+                }
+            }
+        }
+
+        /** Grades {@link #todo} on a pool of {@code jobs} threads, one job (folder, user, process) each. */
+        private void gradeTodo() throws IOException, InterruptedException {
+            // The sandboxes' users must be able to pass through the work folder to their own folders in it.
+            Files.setPosixFilePermissions(work, PosixFilePermissions.fromString("rwx--x--x"));
+            StudentProcess shared = process(work, todo.size());
+            int count = Math.min(jobs, todo.size());
+            for (int job = 0; job < count; job++) {
+                idle.add(new Job(job, work.resolve("job-" + job), shared));
+            }
+            Progress progress = new Progress(todo.size());
+            ExecutorService pool = Executors.newFixedThreadPool(count, new JobThreads());
+            try {
+                List<Future<?>> graded = new ArrayList<>();
+                for (int index : todo) {
+                    graded.add(pool.submit(() -> gradeOne(index, progress)));
+                }
+                for (Future<?> one : graded) {
+                    try {
+                        one.get();
+                    } catch (ExecutionException e) {
+                        throw new IllegalStateException("a cohort job failed outside any grade", e.getCause());
+                    }
+                }
+            } finally {
+                pool.shutdownNow();
+                pool.awaitTermination(1, TimeUnit.MINUTES);
+                progress.finish();
+            }
+        }
+
+        /**
+         * Grades the {@code index}-th submission with an idle job. Whatever goes wrong in its grade
+         * is that submission's failure, with a reason; the cohort goes on.
+         */
+        private Void gradeOne(int index, Progress progress) throws InterruptedException {
+            if (stopping) {
+                return null;
+            }
+            Job job = idle.take();
             Submission submission = submissions.get(index);
+            try {
+                StudentResult result = job.grade(submission, index, this);
+                if (result != null) {
+                    progress.done(result.passed());
+                }
+            } catch (IOException | RuntimeException | Error e) {
+                if (!stopping) {
+                    String why = "an error in tick1 stopped its grade (" + ChildOutput.printable(
+                            e.getClass().getSimpleName() + (e.getMessage() == null ? "" : ": " + e.getMessage()))
+                            .replace('\n', ' ').lines().findFirst().orElse("") + ")";
+                    why = why.length() > WHY_CAP ? why.substring(0, WHY_CAP) + "...)" : why;
+                    ungraded.add(new Ungraded(submission.folder(), why, true));
+                    results[index] = notGraded(submission, why);
+                    progress.done(false);
+                }
+            } finally {
+                idle.add(job);
+            }
+            return null;
+        }
+
+        void storeResult(int index, Submission submission, SubmissionGrader.Graded graded, Path entry)
+                throws IOException {
+            if (graded.imagesUnwritable()) {
+                ungraded.add(new Ungraded(submission.folder(), "its images could not be stored in",
+                        false));
+                WorkFolder.delete(entry);
+                return;
+            }
+            String key = ResultStore.key(submission, grading);
+            store.save(key, graded.result(), entry);
+            results[index] = graded.result();
+            images[index] = store.folderOf(key);
+            phases.add(graded.phases());
+        }
+    }
+
+    /** The most characters of why a submission could not be graded. */
+    private static final int WHY_CAP = 200;
+
+    /** The failing result of a submission that could not be graded: a row that says so. */
+    private StudentResult notGraded(Submission submission, String why) {
+        return new StudentResult(submission, false, 0, 0, NOT_GRADED,
+                "FAILED: not graded: " + why + "; the course staff must grade it again", List.of(), Duration.ZERO);
+    }
+
+    /** One job: a folder, a sandbox user and a process of its own, made when it first grades. */
+    private final class Job {
+        private final int number;
+        private final Path folder;
+        private final StudentProcess shared;
+        private SubmissionGrader grader;
+
+        Job(int number, Path folder, StudentProcess shared) {
+            this.number = number;
+            this.folder = folder;
+            this.shared = shared;
+        }
+
+        /** Grades {@code submission} and stores its result; null when the grade was cut short by stop(). */
+        StudentResult grade(Submission submission, int index, CohortRun run) throws IOException,
+                InterruptedException {
+            if (grader == null) {
+                Sandbox jobSandbox = sandbox.forJob(number);
+                Files.createDirectory(folder);
+                grading.copyScenes(folder);
+                jobSandbox.share(folder, false);
+                StudentProcess process = shared.in(jobSandbox);
+                processes.add(process);
+                grader = new SubmissionGrader(grading, jobSandbox, process, folder);
+            }
             Path submissionWork = Files.createDirectory(folder.resolve("submission-" + index));
             Path entry = store.newEntry();
             SubmissionGrader.Graded graded;
             try {
-                graded = grader.grade(submission, submissionWork, entry, transcript, err);
+                graded = grader.grade(submission, submissionWork, entry, new PrintWriter(Writer.nullWriter()), err);
+            } catch (IOException | RuntimeException | Error e) {
+                WorkFolder.delete(entry);
+                throw e;
             } finally {
                 WorkFolder.delete(submissionWork);
             }
             // A grade cut short by stop() ended after stopping was set: it is never stored.
             if (stopping) {
-                return;
-            }
-            if (graded.imagesUnwritable()) {
-                ungraded.add(submission.folder());
                 WorkFolder.delete(entry);
-            } else {
-                store.save(ResultStore.key(submission, grading), graded.result(), entry);
-                results[index] = graded.result();
-                images[index] = store.folderOf(ResultStore.key(submission, grading));
-                phases.add(graded.phases());
+                return null;
             }
-            progress.done(graded.result().passed());
+            run.storeResult(index, submission, graded, entry);
+            return graded.result();
+        }
+    }
+
+    /** The pool's threads, named by job, as the hand-made workers were. */
+    private static final class JobThreads implements ThreadFactory {
+        private final AtomicInteger next = new AtomicInteger();
+
+        @Override
+        public Thread newThread(Runnable task) {
+            return new Thread(task, "tick1-grade-job-" + next.getAndIncrement());
         }
     }
 

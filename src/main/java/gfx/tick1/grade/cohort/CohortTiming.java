@@ -29,7 +29,7 @@ public final class CohortTiming {
      * shared set-up included) and the median time per submission of each phase, in seconds.
      */
     public record Measured(int submissions, int jobs, int passed, double wallSeconds, double medianCompile,
-            double medianRender, double medianCompare, double medianTotal) {
+            double medianRender, double medianCompare, double medianTotal, double cgroupPerSubmission) {
 
         /** The wall time of the whole grade shared out over the submissions. */
         public double wallPerSubmission() {
@@ -45,6 +45,11 @@ public final class CohortTiming {
             super(reason);
         }
     }
+
+    /** The sandbox runs of one submission: compiling with tick1.xml, and the hidden scene. */
+    public static final int RUNS_PER_SUBMISSION = 2;
+    /** How many times the parts of a control group's cost are timed. */
+    private static final int CGROUP_PROBES = 51;
 
     /** {@code tick1 grade}'s default --memory. */
     private static final int DEFAULT_MEMORY_MEGABYTES = 512;
@@ -96,7 +101,8 @@ public final class CohortTiming {
                     median(phases.stream().mapToLong(SubmissionGrader.Phases::compileNanos).toArray()),
                     median(phases.stream().mapToLong(SubmissionGrader.Phases::renderNanos).toArray()),
                     median(phases.stream().mapToLong(SubmissionGrader.Phases::compareNanos).toArray()),
-                    median(done.results().stream().mapToLong(r -> r.time().toNanos()).toArray()));
+                    median(done.results().stream().mapToLong(r -> r.time().toNanos()).toArray()),
+                    RUNS_PER_SUBMISSION * sandbox.cgroupSeconds(CGROUP_PROBES));
         } finally {
             WorkFolder.delete(work);
             WorkFolder.delete(report);

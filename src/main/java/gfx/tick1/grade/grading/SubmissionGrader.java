@@ -26,9 +26,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 
 /**
  * Grades one submission as the course's tester does: compiles the two files with the starter
@@ -186,11 +184,7 @@ public final class SubmissionGrader {
         long compareStart = System.nanoTime();
         grade.renderNanos = compareStart - renderStart;
 
-        Map<String, String> sourceTexts = new HashMap<>();
-        sourceTexts.put("Sphere.java", sphereCode);
-        sourceTexts.put("Renderer.java", rendererCode);
-        StarterKit.GIVEN_CLASSES.forEach(given -> sourceTexts.put(given + ".java", StarterKit.source(given)));
-        HiddenScenes hiddenScenes = new HiddenScenes(sourceTexts, classes);
+        HiddenScenes hiddenScenes = new HiddenScenes(classes);
         List<GradingScene> ordered = new ArrayList<>(publicScenes);
         ordered.addAll(grading.batch(true));
         int failures = 0;
@@ -244,8 +238,36 @@ public final class SubmissionGrader {
     private StudentResult result(Grade grade, Submission submission, boolean passed, int scenesPassed,
             String diagnosis, String reason) {
         return new StudentResult(submission, passed, scenesPassed, grade.scenes.isEmpty() ? 0 : grading.scenes().size(),
-                diagnosis, reason.replaceAll("\\s*\n\\s*", " "), List.copyOf(grade.scenes),
+                diagnosis, oneLine(reason), List.copyOf(grade.scenes),
                 Duration.ofNanos(System.nanoTime() - grade.start));
+    }
+
+    /**
+     * {@code text} with each run of white space that holds a line break made one space: in one
+     * pass, as the text may be the student's (a regex such as {@code \\s*\n\\s*} backtracks over
+     * a long run of spaces with no break in it, quadratically).
+     */
+    static String oneLine(String text) {
+        StringBuilder line = new StringBuilder(text.length());
+        int run = -1;
+        boolean broken = false;
+        for (int i = 0; i <= text.length(); i++) {
+            char c = i < text.length() ? text.charAt(i) : 'x';
+            if (i < text.length() && (c == ' ' || c == '\t' || c == '\n' || c == 0x0B || c == '\f' || c == '\r')) {
+                run = run < 0 ? i : run;
+                broken |= c == '\n';
+                continue;
+            }
+            if (run >= 0) {
+                line.append(broken ? " " : text.substring(run, i));
+                run = -1;
+                broken = false;
+            }
+            if (i < text.length()) {
+                line.append(c);
+            }
+        }
+        return line.toString();
     }
 
     private static Phases phases(Grade grade) {

@@ -10,8 +10,6 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 /**
  * A student's source file as the tester reads it: UTF-8 text (a byte-order mark, which some
@@ -22,9 +20,8 @@ public final class StudentFile {
     /** The package the starter code and so every submitted file is in (handout section 2). */
     public static final String PACKAGE = "gfx.tick1";
 
-    /** The first declaration of a file, after comments: {@code package a.b;} or anything else. */
-    private static final Pattern PACKAGE_DECLARATION =
-            Pattern.compile("\\A(?:\\s|//[^\\n]*\\n|/\\*(?s:.*?)\\*/)*package\\s+([\\w.\\s]+?)\\s*;");
+    /** The longest package name a message quotes whole. */
+    private static final int QUOTED_NAME_CAP = 100;
 
     private StudentFile() {
     }
@@ -82,13 +79,19 @@ public final class StudentFile {
      * gfx.tick1, in one line, or null when it declares that package.
      */
     public static String packageProblem(String name, String code) {
-        Matcher declaration = PACKAGE_DECLARATION.matcher(code);
-        String declared = declaration.find() ? declaration.group(1).replaceAll("\\s", "") : null;
+        PackageDeclaration.Found found = PackageDeclaration.in(code);
+        String declared = found.name();
         if (PACKAGE.equals(declared)) {
             return null;
         }
+        String said = switch (found.kind()) {
+            case DECLARED -> "declares package " + (declared.length() <= QUOTED_NAME_CAP ? declared
+                    : declared.substring(0, QUOTED_NAME_CAP) + "... (" + declared.length() + " characters)");
+            case NONE -> "declares no package";
+            case BEYOND_CAP -> "declares no package within its first " + PackageDeclaration.SCAN_CAP
+                    + " characters (comments and blank lines included)";
+        };
         return name + ": the tester needs the file in package " + PACKAGE + " (its first line \"package " + PACKAGE
-                + ";\", as in the starter code), but it "
-                + (declared == null ? "declares no package" : "declares package " + declared);
+                + ";\", as in the starter code), but it " + said;
     }
 }

@@ -6,6 +6,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.NoSuchFileException;
@@ -59,14 +60,16 @@ public final class ChildOutput {
         }
     }
 
-    /** At most {@code cap} bytes of the regular file {@code file}, or null when it is not one. */
+    /** At most {@code cap} bytes of the regular file {@code file}, or null when it is not one or cannot be read. */
     static byte[] read(Path file, int cap) throws IOException {
         if (!isRegularFile(file)) {
             return null;
         }
         try (InputStream in = Files.newInputStream(file, LinkOption.NOFOLLOW_LINKS)) {
             return in.readNBytes(cap);
-        } catch (NoSuchFileException e) {
+        } catch (NoSuchFileException | AccessDeniedException e) {
+            // Removed meanwhile, or made unreadable (chmod 000) by the code: when the grader is not
+            // root, it is the student's failure that the file is not there to read, never the grader's.
             return null;
         }
     }
@@ -89,6 +92,9 @@ public final class ChildOutput {
         // Stored (uncompressed) deflate blocks, filter bytes and chunk headers add a little to the raw 4 bytes a pixel.
         long cap = 4L * width * height + 5L * height + 64 * 1024;
         byte[] bytes = read(file, (int) Math.min(Integer.MAX_VALUE - 16, cap + 1));
+        if (bytes == null) {
+            throw new Unusable("the image file is not readable");
+        }
         // The signature, then the IHDR chunk: length (4), "IHDR" (4), width (4), height (4).
         if (bytes.length < 24 || !Arrays.equals(bytes, 0, 8, PNG_SIGNATURE, 0, 8)
                 || !new String(bytes, 12, 4, StandardCharsets.ISO_8859_1).equals("IHDR")) {

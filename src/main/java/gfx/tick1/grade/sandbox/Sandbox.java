@@ -44,7 +44,7 @@ public final class Sandbox {
     static final long FILE_SIZE_LIMIT = 64L << 20;
     private static final int OPEN_FILES_LIMIT = 256;
     /** Threads count as processes: the JVM needs about 20; the student's code one. */
-    private static final int PROCESSES_LIMIT = 96;
+    static final int PROCESSES_LIMIT = 96;
 
     /** The first of the user ids the student's code runs as when the grader is root. */
     static final int FIRST_UID = 1_900_000_000;
@@ -58,16 +58,24 @@ public final class Sandbox {
     /** The distance between the user ids of two jobs: more than the process ids the first one's id is made of. */
     private static final int JOB_UID_STEP = 1_000_000;
 
+    /** The size of the sandbox's shared memory, /dev/shm (its / and /dev are read-only). */
+    static final long SHM_BYTES = 64L << 20;
+    /** The size of each empty folder that hides tick1's own code under /usr. */
+    private static final long HIDING_BYTES = 64L << 10;
+
     private final Path bwrap;
     private final boolean confined;
+    /** Where each run's control group is made, or null: totals are then not enforced. */
+    private final Cgroup.Place cgroups;
     /** The user the student's code runs as when the grader is root; -1 to keep the grader's. */
     private final int uid;
     /** Which of the grades this program runs at once this sandbox is for: 0 for a single grade. */
     private final int job;
 
-    private Sandbox(Path bwrap, boolean confined, int uid, int job) {
+    private Sandbox(Path bwrap, boolean confined, int uid, int job, Cgroup.Place cgroups) {
         this.bwrap = bwrap;
         this.confined = confined;
+        this.cgroups = cgroups;
         this.uid = uid;
         this.job = job;
     }
@@ -81,12 +89,12 @@ public final class Sandbox {
         if (job < 0 || job >= MOST_JOBS) {
             throw new IllegalArgumentException("job " + job + ": must be from 0 to " + (MOST_JOBS - 1));
         }
-        return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + job * JOB_UID_STEP, job);
+        return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + job * JOB_UID_STEP, job, cgroups);
     }
 
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
     public static Sandbox unconfined() {
-        return new Sandbox(null, false, -1, 0);
+        return new Sandbox(null, false, -1, 0, null);
     }
 
     /**
@@ -109,7 +117,7 @@ public final class Sandbox {
         // A user of its own for each grade running at the same time (the grader's process id is
         // unique), far above the ranges of real users and of containers' subordinate ids.
         Sandbox sandbox = new Sandbox(bwrap, true,
-                root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0);
+                root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0, Cgroup.find());
         sandbox.probe();
         return sandbox;
     }
@@ -125,6 +133,26 @@ public final class Sandbox {
 
     boolean isConfined() {
         return confined;
+    }
+
+    /**
+     * Null when each run is held to totals by a control group of its own; else the one line that
+     * says they are not (the limits are then per process only).
+     */
+    public String totalsNotEnforced() {
+        return !confined || cgroups != null ? null
+                : "no control group can be made here (cgroup v2 not delegated, cgroup v1 memory and pids not "
+                        + "writable): the limits are per process; memory, processes and CPU are not limited in all";
+    }
+
+    /** A control group for one run held to {@code totals}, or null when none can be made. */
+    Cgroup cgroupFor(Cgroup.Totals totals) throws IOException {
+        return confined && cgroups != null ? Cgroup.create(cgroups, totals) : null;
+    }
+
+    /** A size for messages: "1 GiB", "768 MiB". */
+    static String size(long bytes) {
+        return bytes % (1L << 30) == 0 ? (bytes >> 30) + " GiB" : (bytes >> 20) + " MiB";
     }
 
     /**
@@ -170,11 +198,15 @@ public final class Sandbox {
      * {@code cpuSeconds} of processor time and {@code addressSpaceMiB} of address space, and, if
      * {@code oneCore}, on one processor core only.
      */
-    List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB, boolean oneCore) {
+    List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB, boolean oneCore,
+            Cgroup cgroup) {
         if (!confined) {
             return command;
         }
         List<String> wrapped = new ArrayList<>();
+        if (cgroup != null) {
+            wrapped.addAll(cgroup.joinCommand());
+        }
         String core = oneCore ? oneAllowedCore(job) : null;
         if (core != null) {
             wrapped.addAll(List.of(TASKSET.toString(), "--cpu-list", core));
@@ -209,13 +241,16 @@ public final class Sandbox {
         }
         // tick1 itself may be installed under /usr: hide it, so that there is no renderer to copy.
         for (Path folder : ownCodeUnder(Path.of("/usr"), ownCode())) {
-            wrapped.addAll(List.of("--tmpfs", folder.toString()));
+            wrapped.addAll(List.of("--size", Long.toString(HIDING_BYTES), "--tmpfs", folder.toString()));
         }
-        wrapped.addAll(List.of("--proc", "/proc", "--dev", "/dev"));
+        // Every tmpfs has a size, and / and /dev (bwrap's own, of half the host's memory) are read-only.
+        wrapped.addAll(List.of("--proc", "/proc", "--dev", "/dev",
+                "--size", Long.toString(SHM_BYTES), "--perms", "1777", "--tmpfs", "/dev/shm",
+                "--remount-ro", "/dev"));
         for (Bind bind : binds) {
             wrapped.addAll(List.of(bind.writable() ? "--bind" : "--ro-bind", bind.outside().toString(), bind.inside()));
         }
-        wrapped.addAll(List.of("--chdir", "/", "--"));
+        wrapped.addAll(List.of("--remount-ro", "/", "--chdir", "/", "--"));
         wrapped.addAll(command);
         return wrapped;
     }
@@ -301,10 +336,47 @@ public final class Sandbox {
         return builder;
     }
 
+    /**
+     * What a control group adds to one run in the sandbox, in seconds: the median of {@code runs}
+     * times making, limiting and removing one, plus the median extra time of starting a program
+     * through the shell that joins it; NaN where no group can be made. (The kernel's accounting
+     * while the code runs is not in it. Whole sandbox runs with and without a group differ by
+     * less than their own noise on a shared machine, so the parts are timed.)
+     */
+    public double cgroupSeconds(int runs) throws IOException, InterruptedException {
+        if (!confined || cgroups == null) {
+            return Double.NaN;
+        }
+        long[] group = new long[runs], shell = new long[runs];
+        for (int i = 0; i < runs; i++) {
+            long start = System.nanoTime();
+            cgroupFor(new Cgroup.Totals(256L << 20, PROCESSES_LIMIT, true)).close();
+            group[i] = System.nanoTime() - start;
+            shell[i] = timeStart("/bin/sh", "-c", "exec /usr/bin/true") - timeStart("/usr/bin/true");
+        }
+        return (median(group) + median(shell)) / 1e9;
+    }
+
+    private static long timeStart(String... command) throws IOException, InterruptedException {
+        long start = System.nanoTime();
+        Process process = processFor(List.of(command)).redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        process.getOutputStream().close();
+        process.waitFor();
+        return System.nanoTime() - start;
+    }
+
+    private static double median(long[] values) {
+        long[] sorted = values.clone();
+        java.util.Arrays.sort(sorted);
+        int middle = sorted.length / 2;
+        return sorted.length % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2.0;
+    }
+
     /** Runs {@code true} in the sandbox: bubblewrap may be installed where namespaces are not allowed. */
     private void probe() throws Unavailable, InterruptedException {
         try {
-            Process process = processFor(wrap(List.of("/usr/bin/true"), List.of(), 5, 256, false))
+            Process process = processFor(wrap(List.of("/usr/bin/true"), List.of(), 5, 256, false, null))
                     .redirectErrorStream(true).start();
             process.getOutputStream().close();
             byte[] said = process.getInputStream().readNBytes(4096);

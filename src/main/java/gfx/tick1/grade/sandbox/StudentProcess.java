@@ -4,6 +4,8 @@ import gfx.tick1.grade.harness.StudentCompiler;
 import gfx.tick1.grade.harness.StudentFile;
 import gfx.tick1.grade.harness.StudentHarness;
 import gfx.tick1.grade.sandbox.Sandbox.Bind;
+import gfx.tick1.grade.sandbox.SandboxedProcess.Request;
+import gfx.tick1.grade.sandbox.SandboxedProcess.Run;
 import gfx.tick1.starter.StarterKit;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -16,7 +18,6 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import java.util.jar.JarEntry;
 import java.util.jar.JarOutputStream;
 
@@ -30,14 +31,8 @@ import java.util.jar.JarOutputStream;
  */
 public final class StudentProcess {
 
-    /** How much of what the student's code printed is kept, from the end. */
-    private static final int OUTPUT_TAIL_CHARS = 2000;
     /** The compiler's heap when --memory is less: javac needs about this much for the starter code. */
     private static final int COMPILER_HEAP_MEGABYTES = 256;
-    /** How often the log of a run that compiles first is read, until it says the code compiled. */
-    private static final long COMPILED_POLL_MILLIS = 10;
-    /** Address space beyond the heap: the JVM's code, class metadata, thread stacks, libraries. */
-    private static final int NON_HEAP_MEGABYTES = 1024;
 
     /** Where the harness's classes, the compiled classes, scenes and output appear inside the sandbox. */
     static final String HARNESS = "/harness", SOURCES = "/sources", CLASSES = "/classes", SCENES = "/scenes",
@@ -71,13 +66,6 @@ public final class StudentProcess {
     public record Result(List<Outcome> outcomes, String outputTail) {
     }
 
-    /**
-     * How a run of the harness ended, and the end of what it printed (printable characters only);
-     * for a run that compiles first, whether it was seen to finish compiling and how long that took.
-     */
-    record Run(boolean finished, int exitStatus, String outputTail, boolean compiledSeen, long compileNanos) {
-    }
-
     /** What compiling gave: the errors, or a reason the compiler did not finish, or neither (it compiled). */
     public record Compiled(List<String> errors, String failure) {
         public boolean compiled() {
@@ -94,9 +82,7 @@ public final class StudentProcess {
     private final int memoryMegabytes;
     /** The folder holding {@value #SHARED_ARCHIVE}, or null. */
     private final Path sharedArchive;
-    private volatile Process running;
-    /** Set by {@link #stop}: no run starts after it. */
-    private volatile boolean stopped;
+    private final SandboxedProcess sandboxed;
 
     /**
      * Runs the harness whose classes are in {@code harness}, in {@code sandbox}, with
@@ -111,6 +97,7 @@ public final class StudentProcess {
         this.harness = harness;
         this.memoryMegabytes = memoryMegabytes;
         this.sharedArchive = sharedArchive;
+        this.sandboxed = new SandboxedProcess(sandbox);
     }
 
     /**
@@ -119,9 +106,10 @@ public final class StudentProcess {
      */
     public Compiled compile(Path sources, Path output, String sphereName, String rendererName, Duration timeLimit)
             throws IOException, InterruptedException {
-        Run run = run(List.of("compile", SOURCES, OUTPUT, sphereName, rendererName),
+        Run run = run(new Request(List.of("compile", SOURCES, OUTPUT, sphereName, rendererName),
                 List.of(new Bind(sources, SOURCES, false), new Bind(output, OUTPUT, true)),
-                timeLimit, null, Duration.ZERO, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false);
+                timeLimit, null, Duration.ZERO, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false,
+                archiveOption(), output));
         return compiled(run, output, timeLimit);
     }
 
@@ -143,9 +131,10 @@ public final class StudentProcess {
         List<String> arguments = new ArrayList<>(List.of("render", StudentHarness.COMPILE_FIRST, SOURCES,
                 sphereName, rendererName, OUTPUT, Integer.toString(width), Integer.toString(height)));
         sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
-        Run run = run(arguments, List.of(new Bind(sources, SOURCES, false), new Bind(scenes, SCENES, false),
-                new Bind(output, OUTPUT, true)), timeLimit, output.resolve(StudentHarness.PROGRESS_FILE), timeLimit,
-                memoryMegabytes, true);
+        Run run = run(new Request(arguments, List.of(new Bind(sources, SOURCES, false),
+                new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), timeLimit,
+                output.resolve(StudentHarness.PROGRESS_FILE), timeLimit, memoryMegabytes, true, archiveOption(),
+                output));
         if (!run.compiledSeen()) {
             Compiled compiled = compiled(run, output, timeLimit);
             return new CompiledAndRendered(compiled.compiled()
@@ -158,6 +147,9 @@ public final class StudentProcess {
 
     /** What a run that compiled (or tried to) says about compiling. */
     private Compiled compiled(Run run, Path output, Duration timeLimit) throws IOException {
+        if (run.limitReached() != null) {
+            return new Compiled(List.of(), run.limitReached());
+        }
         if (!run.finished()) {
             return new Compiled(List.of(),
                     "the compiler did not finish within the time limit of " + describe(timeLimit));
@@ -195,8 +187,9 @@ public final class StudentProcess {
         List<String> arguments = new ArrayList<>(List.of("render", CLASSES, OUTPUT,
                 Integer.toString(width), Integer.toString(height)));
         sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
-        Run run = run(arguments, List.of(new Bind(classes, CLASSES, false), new Bind(scenes, SCENES, false),
-                new Bind(output, OUTPUT, true)), timeLeft, null, Duration.ZERO, memoryMegabytes, true);
+        Run run = run(new Request(arguments, List.of(new Bind(classes, CLASSES, false),
+                new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), timeLeft, null, Duration.ZERO,
+                memoryMegabytes, true, archiveOption(), output));
         return rendered(run, output, sceneFiles, width, height, timeLimit);
     }
 
@@ -206,12 +199,26 @@ public final class StudentProcess {
         List<Outcome> outcomes = new ArrayList<>();
         for (int i = 0; i < sceneFiles.size(); i++) {
             outcomes.add(progressText == null && run.finished() && run.exitStatus() == 0
-                    ? new Outcome.Failed("no image: the log of the run's progress is missing or is not a regular file "
-                            + "(did the code remove or replace it?)")
+                    ? new Outcome.Failed("no image: the log of the run's progress is missing, unreadable or not a "
+                            + "regular file (did the code remove, replace or chmod it?)")
                     : outcome(output, i, progressText == null ? List.of() : progressText.lines().toList(), run,
                             width, height, timeLimit));
         }
-        return new Result(outcomes, run.outputTail());
+        return new Result(run.limitReached() == null ? outcomes
+                : outcomes.stream().map(outcome -> withLimit(outcome, run.limitReached())).toList(), run.outputTail());
+    }
+
+    /**
+     * A scene's outcome when the run reached a total. Memory and the output folder's cap fail every
+     * scene with the total's words (a process was killed, or the run stopped, so nothing of the run
+     * counts); the process total follows the scene's own failure, on a line of its own (which a
+     * hidden scene's report leaves out with the rest of the code's words), as the run went on.
+     */
+    private static Outcome withLimit(Outcome outcome, String limit) {
+        if (limit.startsWith("the program")) {
+            return new Outcome.Failed(limit);
+        }
+        return outcome instanceof Outcome.Failed failed ? new Outcome.Failed(failed.reason() + "\n" + limit) : outcome;
     }
 
     /**
@@ -262,11 +269,11 @@ public final class StudentProcess {
         sandbox.share(work, false);
         Path output = Files.createDirectory(work.resolve("output"));
         sandbox.share(output, true);
-        Run run = run(List.of("render", StudentHarness.COMPILE_FIRST, SOURCES, "Sphere.java", "Renderer.java", OUTPUT,
-                "8", "6", SCENES + "/0.xml"), List.of(new Bind(sources, SOURCES, false),
+        Run run = run(new Request(List.of("render", StudentHarness.COMPILE_FIRST, SOURCES, "Sphere.java",
+                "Renderer.java", OUTPUT, "8", "6", SCENES + "/0.xml"), List.of(new Bind(sources, SOURCES, false),
                 new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), ARCHIVE_TIME_LIMIT, null,
                 Duration.ZERO, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false,
-                List.of("-XX:ArchiveClassesAtExit=" + inside(output, OUTPUT) + "/" + SHARED_ARCHIVE));
+                List.of("-XX:ArchiveClassesAtExit=" + inside(output, OUTPUT) + "/" + SHARED_ARCHIVE), output));
         Path archive = output.resolve(SHARED_ARCHIVE);
         // Without the image the run never reached ImageIO and the render: the archive would miss them.
         if (!run.finished() || !ChildOutput.isRegularFile(archive)
@@ -290,35 +297,20 @@ public final class StudentProcess {
 
     /** Kills the sandbox that is running, if one is (on Ctrl-C or SIGTERM). */
     public void stop() {
-        stopped = true;
-        Process process = running;
-        if (process != null) {
-            kill(process);
-        }
+        sandboxed.stop();
     }
 
-    /**
-     * Runs the harness; {@code studentCode} when it runs the student's code (on one core), not only
-     * javac. When {@code progress} is given, the run may take {@code timeLimit} until the harness
-     * logs "compiled" there, and {@code thenLimit} from then on; otherwise {@code timeLimit} in all.
-     */
-    private Run run(List<String> harnessArguments, List<Bind> binds, Duration timeLimit, Path progress,
-            Duration thenLimit, int heapMegabytes, boolean studentCode) throws IOException, InterruptedException {
-        return run(harnessArguments, binds, timeLimit, progress, thenLimit, heapMegabytes, studentCode,
-                sharedArchive == null ? List.of()
-                        : List.of("-XX:SharedArchiveFile=" + inside(sharedArchive, ARCHIVE) + "/" + SHARED_ARCHIVE));
+    /** The JVM option that maps the class data sharing archive, when there is one. */
+    private List<String> archiveOption() {
+        return sharedArchive == null ? List.of()
+                : List.of("-XX:SharedArchiveFile=" + inside(sharedArchive, ARCHIVE) + "/" + SHARED_ARCHIVE);
     }
 
-    /** As above, with {@code javaOptions} for the JVM. */
-    private Run run(List<String> harnessArguments, List<Bind> binds, Duration timeLimit, Path progress,
-            Duration thenLimit, int heapMegabytes, boolean studentCode, List<String> javaOptions)
-            throws IOException, InterruptedException {
-        if (stopped) {
-            throw new InterruptedException("the grade was stopped");
-        }
+    /** Runs the harness as {@code request} says, in the sandbox, with the harness's jar and archive bound in. */
+    private Run run(Request request) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx" + heapMegabytes + "m",
+                "-Xmx" + request.heapMegabytes() + "m",
                 "-XX:MaxDirectMemorySize=32m",
                 "-XX:CompressedClassSpaceSize=64m",
                 "-XX:ReservedCodeCacheSize=64m",
@@ -329,96 +321,18 @@ public final class StudentProcess {
                 "-Djava.awt.headless=true",
                 "-Djava.io.tmpdir=" + (sandbox.isConfined() ? OUTPUT : System.getProperty("java.io.tmpdir")),
                 "-cp", inside(harness, HARNESS) + "/" + HARNESS_JAR));
-        command.addAll(javaOptions);
+        command.addAll(request.javaOptions());
         command.add(StudentHarness.class.getName());
-        if (sandbox.isConfined()) {
-            command.addAll(harnessArguments);
-        } else {
-            // Without a sandbox the folders keep their own names.
-            List<Bind> all = new ArrayList<>(binds);
-            for (String argument : harnessArguments) {
-                String real = argument;
-                for (Bind bind : all) {
-                    if (argument.equals(bind.inside()) || argument.startsWith(bind.inside() + "/")) {
-                        real = bind.outside() + argument.substring(bind.inside().length());
-                    }
-                }
-                command.add(real);
-            }
-        }
-        List<Bind> allBinds = new ArrayList<>(binds);
-        allBinds.add(new Bind(harness, HARNESS, false));
+        command.addAll(sandbox.isConfined() ? request.harnessArguments()
+                : SandboxedProcess.unconfinedArguments(request.harnessArguments(), request.binds()));
+        List<Bind> binds = new ArrayList<>(request.binds());
+        binds.add(new Bind(harness, HARNESS, false));
         if (sharedArchive != null) {
-            allBinds.add(new Bind(sharedArchive, ARCHIVE, false));
+            binds.add(new Bind(sharedArchive, ARCHIVE, false));
         }
-        int cpuSeconds = (int) Math.ceil(timeLimit.plus(thenLimit).toMillis() / 1000.0) + 1;
-        Process process = Sandbox.processFor(sandbox.wrap(command, allBinds, cpuSeconds,
-                heapMegabytes + NON_HEAP_MEGABYTES, studentCode)).redirectErrorStream(true).start();
-        running = process;
-        try {
-            if (stopped) {
-                // stop() came between the start and the line above: it must still end this run.
-                throw new InterruptedException("the grade was stopped");
-            }
-            process.getOutputStream().close();
-            OutputTail tail = new OutputTail(process.getInputStream());
-            tail.start();
-            long start = System.nanoTime();
-            long compiledAt = progress == null ? -1 : awaitCompiled(process, progress, start + timeLimit.toNanos());
-            boolean finished = compiledAt < 0 && progress != null ? !process.isAlive()
-                    : process.waitFor(progress == null ? timeLimit.toMillis()
-                            : thenLimit.toMillis() - (System.nanoTime() - compiledAt) / 1_000_000,
-                            TimeUnit.MILLISECONDS);
-            if (!finished) {
-                kill(process);
-            }
-            tail.join(1000);
-            return new Run(finished, process.exitValue(), ChildOutput.printable(tail.text()), compiledAt >= 0,
-                    (compiledAt >= 0 ? compiledAt : System.nanoTime()) - start);
-        } finally {
-            kill(process);
-            running = null;
-        }
-    }
-
-    /**
-     * Waits until the harness logs "compiled" in {@code progress}, the process ends, or the
-     * deadline passes; the time it was seen, or -1. The log is polled: the harness cannot signal
-     * otherwise without a channel the student's code could use later.
-     */
-    private static long awaitCompiled(Process process, Path progress, long deadline) throws IOException,
-            InterruptedException {
-        while (true) {
-            boolean ended = process.waitFor(COMPILED_POLL_MILLIS, TimeUnit.MILLISECONDS);
-            String logged = ChildOutput.readText(progress);
-            if (logged != null && logged.lines().anyMatch(StudentHarness.COMPILED::equals)) {
-                return System.nanoTime();
-            }
-            if (ended || System.nanoTime() - deadline >= 0) {
-                return -1;
-            }
-        }
-    }
-
-    /**
-     * Kills the process and everything it started, and returns when they are gone, so that no
-     * process of the student's can change its output folder while it is read. (In the sandbox the
-     * first of them is the PID namespace's init, which ends only after every other process in it.)
-     */
-    private static void kill(Process process) {
-        List<ProcessHandle> started = process.descendants().toList();
-        started.forEach(ProcessHandle::destroyForcibly);
-        process.destroyForcibly();
-        try {
-            process.waitFor();
-            for (ProcessHandle handle : started) {
-                handle.onExit().get(10, TimeUnit.SECONDS);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
-            // A process that will not die within seconds of SIGKILL: nothing more to do.
-        }
+        return sandboxed.run(command, new Request(request.harnessArguments(), binds, request.timeLimit(),
+                request.progress(), request.thenLimit(), request.heapMegabytes(), request.studentCode(),
+                request.javaOptions(), request.output()));
     }
 
     private static Outcome outcome(Path output, int index, List<String> progress, Run run, int width, int height,
@@ -453,40 +367,5 @@ public final class StudentProcess {
     static String describe(Duration duration) {
         long millis = duration.toMillis();
         return millis % 1000 == 0 ? millis / 1000 + " s" : millis / 1000.0 + " s";
-    }
-
-    /** Reads the child's output as it comes, keeping only the end, so no output can fill memory. */
-    private static final class OutputTail extends Thread {
-        private final InputStream in;
-        private final StringBuilder text = new StringBuilder();
-
-        OutputTail(InputStream in) {
-            this.in = in;
-            setDaemon(true);
-        }
-
-        @Override
-        public void run() {
-            byte[] buffer = new byte[8192];
-            try {
-                for (int n; (n = in.read(buffer)) > 0; ) {
-                    synchronized (text) {
-                        text.append(new String(buffer, 0, n, StandardCharsets.UTF_8));
-                        if (text.length() > 2 * OUTPUT_TAIL_CHARS) {
-                            text.delete(0, text.length() - OUTPUT_TAIL_CHARS);
-                        }
-                    }
-                }
-            } catch (IOException e) {
-                // The child was killed: what was read is all there is.
-            }
-        }
-
-        String text() {
-            synchronized (text) {
-                return text.length() > OUTPUT_TAIL_CHARS ? text.substring(text.length() - OUTPUT_TAIL_CHARS)
-                        : text.toString();
-            }
-        }
     }
 }

@@ -3,7 +3,7 @@ package gfx.tick1.grade.grading;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
-import java.util.Map;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
@@ -13,8 +13,7 @@ import org.junit.jupiter.params.provider.CsvSource;
  */
 class HiddenScenesTest {
 
-    private final HiddenScenes hidden =
-            new HiddenScenes(Map.of("Renderer.java", "class Renderer {}"), Path.of("/nowhere"));
+    private final HiddenScenes hidden = new HiddenScenes(Path.of("/nowhere"));
 
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
@@ -30,5 +29,14 @@ class HiddenScenesTest {
             + " | no image within the time limit of 10 s (an infinite loop?); the program was stopped"})
     void numbersTheCodeChoseAreLeftOutAndTheGradersOwnKept(String reason, String reported) {
         assertThat(hidden.withoutMessages(reason)).isEqualTo(reported);
+    }
+
+    @Test
+    void anExceptionKeepsItsClassAndNoFrameNorLineNumber() {
+        assertThat(hidden.withoutMessages("the code threw java.lang.IllegalStateException: a message\n"
+                + "    at gfx.tick1.Renderer.leakEven(Renderer.java:33)\n"
+                + "    at gfx.tick1.Renderer.render(Renderer.java:9)"))
+                .isEqualTo("the code threw java.lang.IllegalStateException (its message is not shown for a hidden "
+                        + "scene)");
     }
 }
