@@ -46,6 +46,7 @@ public final class RenderCommand implements Callable<Integer> {
     public static final int EXIT_OK = 0;
     @ExitStatus("the scene file is missing, unreadable or invalid")
     public static final int EXIT_BAD_SCENE = 1;
+    @ExitStatus("the command line is wrong, or output.png exists and no -o was given")
     public static final int EXIT_USAGE = ExitStatuses.EXIT_USAGE;
     @ExitStatus("the image could not be written (any existing file is left as it was)")
     public static final int EXIT_CANNOT_WRITE = 3;
@@ -62,8 +63,8 @@ public final class RenderCommand implements Callable<Integer> {
     private String input;
 
     @Option(names = {"-o", "--output"}, paramLabel = "IMAGE.png", defaultValue = "output.png",
-            description = "The PNG file to write, or - for standard output (default: ${DEFAULT-VALUE}). "
-                    + "It is replaced only by a complete image.")
+            description = "The PNG file to write, or - for standard output (default: ${DEFAULT-VALUE}, "
+                    + "never replaced unless named). It is replaced only by a complete image.")
     private String output;
 
     @Option(names = "--width", paramLabel = "PIXELS", defaultValue = "640",
@@ -102,7 +103,8 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
     private boolean quiet;
 
-    @Option(names = "--timings", hidden = true, description = "Print where the run's time went.")
+    @Option(names = "--timings", description = "Print where the run's time went (start-up, scene, render, PNG) "
+            + "on standard error.")
     private boolean showTimings;
 
     private final Timings timings = new Timings();
