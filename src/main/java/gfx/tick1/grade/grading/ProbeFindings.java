@@ -47,6 +47,11 @@ final class ProbeFindings {
         return failed.stream().map(Judgement::probe).toList();
     }
 
+    /** The failed probes' judgements, in the catalogue's order. */
+    List<Judgement> failed() {
+        return failed;
+    }
+
     boolean anyFailed() {
         return !failed.isEmpty();
     }

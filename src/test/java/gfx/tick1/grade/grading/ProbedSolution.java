@@ -34,6 +34,26 @@ record ProbedSolution(String sphere, String renderer) {
         return new ProbedSolution(sphere, replaceOnce(renderer, text, replacement));
     }
 
+    /** The correct solution with the body of intersectionWith after a, b and c written as {@code body}. */
+    ProbedSolution intersection(String body) {
+        int from = sphere.indexOf("        // A negative discriminant");
+        String end = "        // Currently returning empty RaycastHit for no intersection\n        return new RaycastHit();\n";
+        int to = sphere.indexOf(end);
+        assertThat(from).as("the correct Sphere's intersection").isPositive();
+        assertThat(to).isGreaterThan(from);
+        return new ProbedSolution(sphere.substring(0, from) + body + sphere.substring(to + end.length()), renderer);
+    }
+
+    /** The correct solution with the body of illuminate after n is read written as {@code body}. */
+    ProbedSolution shading(String body) {
+        int from = renderer.indexOf("        // L and V, unit vectors");
+        String end = "return ambient.add(diffuse).add(specular);\n";
+        int to = renderer.indexOf(end);
+        assertThat(from).as("the correct Renderer's shading").isPositive();
+        assertThat(to).isGreaterThan(from);
+        return new ProbedSolution(sphere, renderer.substring(0, from) + body + renderer.substring(to + end.length()));
+    }
+
     /** The probes' log of these two files. */
     String probeLog(Path folder) throws Exception {
         List<StudentCompiler.Source> sources = new ArrayList<>();
