@@ -34,8 +34,8 @@ import picocli.CommandLine.Spec;
         description = {
             "Compares your Sphere.java and Renderer.java with ours, ignoring comments, formatting, the package, "
                     + "imports and the order of fields and methods. Fields, constructors and methods are matched "
-                    + "by signature; each one that differs is shown as a unified diff (- ours, + yours). When something "
-                    + "differs and the files compile, your intersectionWith and illuminate are run in the sandbox "
+                    + "by signature; each one that differs is shown as a unified diff (- ours, + yours). When "
+                    + "something differs and the files compile, your intersectionWith and illuminate are run in the sandbox "
                     + "on fixed inputs, and each property they get wrong is a hint with the handout section to "
                     + "reread; without the sandbox there are no hints, and a line says why. A file is recognised "
                     + "by its class. Colour on a terminal only."})

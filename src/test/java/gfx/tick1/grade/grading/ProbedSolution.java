@@ -37,7 +37,8 @@ record ProbedSolution(String sphere, String renderer) {
     /** The correct solution with the body of intersectionWith after a, b and c written as {@code body}. */
     ProbedSolution intersection(String body) {
         int from = sphere.indexOf("        // A negative discriminant");
-        String end = "        // Currently returning empty RaycastHit for no intersection\n        return new RaycastHit();\n";
+        String end = "        // Currently returning empty RaycastHit for no intersection\n"
+                + "        return new RaycastHit();\n";
         int to = sphere.indexOf(end);
         assertThat(from).as("the correct Sphere's intersection").isPositive();
         assertThat(to).isGreaterThan(from);
