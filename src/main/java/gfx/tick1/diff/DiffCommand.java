@@ -35,9 +35,9 @@ import picocli.CommandLine.Spec;
             "Compares your Sphere.java and Renderer.java with ours, ignoring comments, formatting, the package, "
                     + "imports and the order of fields and methods. Fields, constructors and methods are matched "
                     + "by signature; each one that differs is shown as a unified diff (- ours, + yours). When "
-                    + "something differs and the files compile, your intersectionWith and illuminate are run in the sandbox "
-                    + "on fixed inputs, and each property they get wrong is a hint with the handout section to "
-                    + "reread; without the sandbox there are no hints, and a line says why. A file is recognised "
+                    + "something differs and the files compile, your intersectionWith and illuminate are run in the "
+                    + "sandbox on fixed inputs, and each property they get wrong is a hint with the handout section "
+                    + "to reread; without the sandbox there are no hints, and a line says why. A file is recognised "
                     + "by its class. Colour on a terminal only."})
 public final class DiffCommand implements Callable<Integer> {
 
