@@ -24,17 +24,19 @@ import picocli.CommandLine.Spec;
 @Command(name = "diagnose",
         description = {
             "Renders the scene as each entry of a catalogue (the handout's stages, the correct image and the "
-                    + "mistakes students make) and ranks them by the share of pixels that match exactly and within "
-                    + "one level. An entry is named as the answer only when its render matches every pixel (the "
-                    + "correct image also within 1 level on every pixel, as arithmetic in another order gives); "
-                    + "otherwise the closest entries are shown as candidates, near ties as ties.",
+                    + "mistakes students make) and ranks them on the pixels where some entry draws a sphere, by the "
+                    + "share that match exactly and within one level. An entry is named as the answer only when its "
+                    + "render matches every pixel (the correct image also within 1 level on every pixel, as "
+                    + "arithmetic in another order gives); otherwise it says it is unsure and shows at most three "
+                    + "candidates, near ties as ties.",
             "Without --scene the image is recognised as a render of tick1.xml or basic_scene.xml.",
             "Catalogue: background only; flat colour (Figure 4); ambient only (Figure 5a); ambient + diffuse; "
-                    + "ambient term without C_diff; specular term without I; correct (Figure 1); L and V not "
-                    + "normalised (Figure 6a); N.L not clamped (Figure 6b); R.V not clamped (Figure 6c); far root; "
-                    + "hit rejected when either root is negative; no distance fall-off; fall-off without 4 pi; V "
-                    + "pointing away from the camera; R reflected the wrong way; rounding instead of truncating; "
-                    + "image upside down; red and blue swapped."})
+                    + "ambient term without C_diff; no ambient term; specular term without I; colour scaled by 255; "
+                    + "colour divided by 255; correct (Figure 1); L and V not normalised (Figure 6a); N.L not "
+                    + "clamped (Figure 6b); R.V not clamped (Figure 6c); far root; hit rejected when either root is "
+                    + "negative; roots accepted at s >= 0; no distance fall-off; fall-off without 4 pi; V pointing "
+                    + "away from the camera; R reflected the wrong way; rounding instead of truncating; image upside "
+                    + "down; red and blue swapped."})
 public final class DiagnoseCommand implements Callable<Integer> {
 
     @ExitStatus("the image is correct")

@@ -15,12 +15,13 @@ import java.util.Set;
 
 /**
  * Says which entry of the catalogue an image is closest to: renders the scene as every
- * {@link Variant} at the image's size and ranks them by how many pixels match.
+ * {@link Variant} at the image's size and ranks them by how many of the pixels where some entry
+ * draws a sphere ({@link SpherePixels}) match.
  */
 public final class Diagnoser {
 
     /**
-     * Most exactly equal pixels first; then most pixels within one level (a student's arithmetic
+     * Most exactly equal sphere pixels first; then most sphere pixels within one level (a student's arithmetic
      * in another order moves a few pixels by one level); then the smallest mean difference. On a
      * full tie the correct image wins, so a correct image is never called a mistake merely because
      * the scene does not show that mistake.
@@ -96,26 +97,33 @@ public final class Diagnoser {
                 : Optional.of(new SceneDiagnosis(best, diagnose(image, scenes.get(best))));
     }
 
-    /** Ranks every catalogue entry against {@code image}, which is taken to show {@code scene}. */
+    /**
+     * Ranks every catalogue entry against {@code image}, which is taken to show {@code scene}, on
+     * the pixels where some entry draws a sphere.
+     */
     public Diagnosis diagnose(BufferedImage image, Scene scene) {
         checkBorder(image);
         int width = image.getWidth(), height = image.getHeight();
         VariantRenderer renderer = new VariantRenderer(width, height);
         BufferedImage inside = inner(image);
-        Map<Variant, BufferedImage> renders = renderer.render(scene, Variant.seenInImages());
-        BufferedImage correct = inner(renders.get(Variant.CORRECT));
+        VariantRenderer.Renders renders = renderer.renders(scene, Variant.seenInImages());
+        SpherePixels spheres = SpherePixels.inside(renders.spheres(), width, height, border);
+        BufferedImage correct = inner(renders.images().get(Variant.CORRECT));
         List<Candidate> candidates = new ArrayList<>();
         List<Variant> alikeCorrect = new ArrayList<>();
-        renders.forEach((variant, render) -> {
+        renders.images().forEach((variant, render) -> {
             // A mistake that draws this scene exactly as the correct code does cannot be seen in it.
             if (!variant.isCorrect() && ImageDifference.between(correct, inner(render)).differingPixels() == 0) {
                 alikeCorrect.add(variant);
             } else {
-                candidates.add(new Candidate(variant, ImageDifference.between(inner(render), inside)));
+                candidates.add(new Candidate(variant, ImageDifference.between(inner(render), inside),
+                        spheres.match(inner(render), inside)));
             }
         });
         candidates.sort(CLOSEST_FIRST);
-        return new Diagnosis(candidates, tolerance, alikeCorrect);
+        int background = ReferenceRenderer.BACKGROUND_COLOUR.toRGB() & 0xFFFFFF;
+        return new Diagnosis(candidates, tolerance, alikeCorrect, spheres.count(),
+                spheres.notBackgroundOutside(inside, background));
     }
 
     private void checkBorder(BufferedImage image) {

@@ -6,16 +6,24 @@ import java.util.List;
 
 /**
  * Every catalogue entry's distance from an image, closest first, and what can be said for
- * certain: an entry explains the image only when its render matches every pixel (exactly, or
- * within the 1-level tolerance when that is allowed); anything less is reported as candidates.
+ * certain: an entry explains the image only when its render matches every pixel of the frame
+ * (exactly, or within the 1-level tolerance when that is allowed); anything less is reported as
+ * at most three candidates, and no entry is then called the closest.
  *
- * @param candidates one per {@link Variant} seen in images, ordered as {@link Diagnoser#CLOSEST_FIRST}
- * @param tolerance  0, or 1 to let an entry within one level on every pixel explain the image
+ * @param candidates   one per {@link Variant} seen in images, ordered as {@link Diagnoser#CLOSEST_FIRST}
+ * @param tolerance    0, or 1 to let an entry within one level on every pixel explain the image
  * @param alikeCorrect the mistakes left out of the ranking because on this scene they draw exactly
- *                   the correct image (a hit rejected when a root is negative, with the camera
- *                   outside every sphere), so that no image can tell them apart from it
+ *                     the correct image (a hit rejected when a root is negative, with the camera
+ *                     outside every sphere), so that no image can tell them apart from it
+ * @param spherePixels how many pixels the ranking counts: those where some entry draws a sphere
+ * @param strayPixels  how many of the other pixels, background in every entry, are not background
+ *                     in the image
  */
-public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant> alikeCorrect) {
+public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant> alikeCorrect, int spherePixels,
+        int strayPixels) {
+
+    /** Candidates shown when no entry explains the image. */
+    private static final int MOST_CANDIDATES = 3;
 
     /**
      * Two entries whose shares of exactly matching pixels are closer than this (0.1 percentage
@@ -23,17 +31,20 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
      */
     private static final double NEAR_TIE = 0.001;
 
-    /** One catalogue entry and how the image differs from its render. */
-    public record Candidate(Variant variant, ImageDifference difference) {
+    /**
+     * One catalogue entry, how the image differs from its render over the whole frame, and how
+     * they agree on the sphere pixels, which rank it.
+     */
+    public record Candidate(Variant variant, ImageDifference difference, SpherePixels.Match onSpheres) {
 
-        /** The share (0 to 1) of pixels equal to this entry's render. */
+        /** The share (0 to 1) of sphere pixels equal to this entry's render. */
         public double exactShare() {
-            return difference.shareWithin(0);
+            return onSpheres.exactShare();
         }
 
-        /** The share (0 to 1) of pixels within one level of this entry's render in every channel. */
+        /** The share (0 to 1) of sphere pixels within one level of this entry's render in every channel. */
         public double withinOneShare() {
-            return difference.shareWithin(1);
+            return onSpheres.withinOneShare();
         }
 
         boolean matchesExactly() {
@@ -108,71 +119,105 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         return closest().withinOneShare() < 0.5;
     }
 
-    /** The diagnosis for a person: the closest entry, the top three, the verdict, why, and what to reread. */
+    /**
+     * The diagnosis for a person. When an entry explains the image: the closest entry, the top
+     * three, the verdict, why, and what to reread. Otherwise: that it is unsure, and at most three
+     * candidates with what to reread for each; no entry is called the closest.
+     */
     public List<String> report() {
         List<String> lines = new ArrayList<>();
-        Candidate best = closest();
-        lines.add("closest: " + best.variant().title() + " (" + shares(best) + ")");
-        if (isWeak()) {
-            lines.add("  (a weak match: the image may show another scene or a mistake not in the catalogue)");
-        }
-        lines.add("top three:");
-        List<Candidate> top = top(3);
-        for (int i = 0; i < top.size(); i++) {
-            lines.add(String.format("  %s %-45s %s", rank(i), top.get(i).variant().title(), shares(top.get(i))));
+        Verdict verdict = verdict();
+        if (verdict != Verdict.UNSURE) {
+            lines.add("closest: " + closest().variant().title() + " (" + shares(closest()) + ")");
+            lines.add("top three:");
+            List<Candidate> top = top(3);
+            for (int i = 0; i < top.size(); i++) {
+                lines.add(line(i, top.get(i)));
+            }
+            lines.add(onWhichPixels());
         }
         List<Candidate> explaining = explaining();
-        switch (verdict()) {
-            case CORRECT -> {
-                Candidate correct = explaining.get(0);
-                lines.add(correct.matchesExactly() ? "verdict: correct: every pixel is the correct render's."
-                        : "verdict: correct, within the 1-level tolerance: " + correct.difference().differingPixels()
-                                + " pixels are 1 level off the correct render, as when the same arithmetic is "
-                                + "written in another order.");
-                lines.add("this is " + correct.variant().explanation() + ".");
-                if (!alikeCorrect.isEmpty()) {
-                    lines.add("(on this scene these mistakes would draw the same image, so they are not ruled out: "
-                            + String.join(", ", alikeCorrect.stream().map(Variant::title).toList()) + ")");
-                }
-            }
-            case EXPLAINED -> {
-                if (explaining.size() == 1) {
-                    Candidate only = explaining.get(0);
-                    lines.add("verdict: " + only.variant().title() + (only.matchesExactly()
-                            ? ": every pixel matches it exactly." : ": every pixel within 1 level of it."));
-                    lines.add("likely cause: " + only.variant().explanation() + ".");
-                    lines.add("reread: handout " + only.variant().reread() + ".");
-                } else {
-                    lines.add("verdict: a tie: " + titles(explaining) + " each match every pixel exactly; this "
-                            + "scene cannot tell them apart.");
-                    for (Candidate candidate : explaining) {
-                        lines.add("if it is " + candidate.variant().title() + ": " + candidate.variant().explanation()
-                                + "; reread handout " + candidate.variant().reread() + ".");
-                    }
-                }
-            }
-            case UNSURE -> {
-                List<Candidate> level = tiedWith(best, candidates);
-                lines.add("verdict: no entry of the catalogue explains this image exactly; it is not the correct "
-                        + "image, and it may show a mistake the catalogue does not know, or two at once.");
-                if (best.variant().isCorrect()) {
-                    lines.add("the closest is the correct image, but " + best.difference().differingPixels()
-                            + " pixels differ from it, by up to " + best.difference().maxDifference() + " levels.");
-                }
-                lines.add(level.size() > 1
-                        ? "candidates, in a near tie (within " + percent(NEAR_TIE) + " of the pixels): "
-                                + titles(level) + "."
-                        : "candidates, closest first: " + titles(top) + ".");
-                for (Candidate candidate : level.size() > 1 ? level : top) {
-                    if (!candidate.variant().isCorrect()) {
-                        lines.add("if it is " + candidate.variant().title() + ": reread handout "
-                                + candidate.variant().reread() + ".");
-                    }
-                }
-            }
+        switch (verdict) {
+            case CORRECT -> correct(lines, explaining.get(0));
+            case EXPLAINED -> explained(lines, explaining);
+            case UNSURE -> unsure(lines);
             default -> throw new IllegalStateException();
         }
         return lines;
+    }
+
+    private String line(int index, Candidate candidate) {
+        return String.format("  %s %-45s %s", rank(index), candidate.variant().title(), shares(candidate));
+    }
+
+    private String onWhichPixels() {
+        return "  (shares of the " + spherePixels + " pixels where some entry draws a sphere; elsewhere every entry "
+                + "draws the background)";
+    }
+
+    private void correct(List<String> lines, Candidate correct) {
+        lines.add(correct.matchesExactly() ? "verdict: correct: every pixel is the correct render's."
+                : "verdict: correct, within the 1-level tolerance: " + correct.difference().differingPixels()
+                        + " pixels are 1 level off the correct render, as when the same arithmetic is "
+                        + "written in another order.");
+        lines.add("this is " + correct.variant().explanation() + ".");
+        if (!alikeCorrect.isEmpty()) {
+            lines.add("(on this scene these mistakes would draw the same image, so they are not ruled out: "
+                    + String.join(", ", alikeCorrect.stream().map(Variant::title).toList()) + ")");
+        }
+    }
+
+    private static void explained(List<String> lines, List<Candidate> explaining) {
+        if (explaining.size() == 1) {
+            Candidate only = explaining.get(0);
+            lines.add("verdict: " + only.variant().title() + (only.matchesExactly()
+                    ? ": every pixel matches it exactly." : ": every pixel within 1 level of it."));
+            lines.add("likely cause: " + only.variant().explanation() + ".");
+            lines.add("reread: handout " + only.variant().reread() + ".");
+            return;
+        }
+        lines.add("verdict: a tie: " + titles(explaining) + " each match every pixel exactly; this "
+                + "scene cannot tell them apart.");
+        for (Candidate candidate : explaining) {
+            lines.add("if it is " + candidate.variant().title() + ": " + candidate.variant().explanation()
+                    + "; reread handout " + candidate.variant().reread() + ".");
+        }
+    }
+
+    /** No entry explains the image: say so, and show the closest few as candidates, never as the answer. */
+    private void unsure(List<String> lines) {
+        Candidate best = closest();
+        lines.add("verdict: unsure: no entry of the catalogue explains this image exactly; it is not the correct "
+                + "image, and it may show a mistake the catalogue does not know, or two at once.");
+        if (isWeak()) {
+            lines.add("  (a weak match: the image may show another scene or a mistake not in the catalogue)");
+        }
+        List<Candidate> level = tiedWith(best, candidates);
+        List<Candidate> shown = (level.size() > 1 ? level : candidates).subList(0,
+                Math.min(MOST_CANDIDATES, level.size() > 1 ? level.size() : candidates.size()));
+        lines.add(level.size() > 1
+                ? "candidates, in a near tie (within " + percent(NEAR_TIE) + " of the sphere pixels):"
+                : "candidates, closest first:");
+        for (int i = 0; i < shown.size(); i++) {
+            lines.add(line(i, shown.get(i)));
+        }
+        if (level.size() > shown.size()) {
+            lines.add("  (and " + (level.size() - shown.size()) + " more level with them)");
+        }
+        lines.add(onWhichPixels());
+        if (best.variant().isCorrect()) {
+            lines.add("the nearest is the correct image, but " + best.difference().differingPixels()
+                    + " pixels differ from it, by up to " + best.difference().maxDifference() + " levels.");
+        }
+        if (strayPixels > 0) {
+            lines.add(strayPixels + " pixels where no entry draws a sphere are not the background.");
+        }
+        for (Candidate candidate : shown) {
+            if (!candidate.variant().isCorrect()) {
+                lines.add("if it is " + candidate.variant().title() + ": reread handout "
+                        + candidate.variant().reread() + ".");
+            }
+        }
     }
 
     /** "1.", or "1=" for the members of a near tie, ranked by the first of them. */

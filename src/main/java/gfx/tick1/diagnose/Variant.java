@@ -27,10 +27,25 @@ public enum Variant {
             "the ambient term is I_a alone instead of C_diff I_a, so every sphere gets the same grey wash whatever "
                     + "its colour",
             "section 5, \"The Phong illumination model\" (ambient lighting: C_diff I_a)"),
+    NO_AMBIENT("no ambient term", "",
+            "the ambient term C_diff I_a is missing: only the diffuse and specular terms are returned, so whatever "
+                    + "the light does not reach is black",
+            "section 5, \"The Phong illumination model\" (ambient lighting: C_diff I_a)"),
     SPECULAR_WITHOUT_I("specular term without I", "",
             "the specular term leaves out the light's illumination I (C_spec k_s max(0, R.V)^n instead of "
                     + "C_spec k_s I max(0, R.V)^n), so the highlights ignore the light's colour and distance",
             "section 5, \"The Phong illumination model\" (specular lighting: C_spec k_s I max(0, R.V)^n)"),
+    COLOUR_TIMES_255("colour scaled by 255", "",
+            "illuminate's colour is multiplied by 255, as if toRGB() wanted levels of 0 to 255; a colour's r, g, b "
+                    + "run from 0 to 1 and toRGB() turns them into bytes itself, so every channel that is lit at all "
+                    + "comes out 255",
+            "section 2, \"Vector3\" (colours are x, y, z = r, g, b) and the starter code's Renderer.render, which "
+                    + "converts with toRGB()"),
+    COLOUR_OVER_255("colour divided by 255", "",
+            "illuminate's colour is divided by 255, as if it were in levels of 0 to 255; it already runs from 0 to 1, "
+                    + "so the spheres come out black",
+            "section 2, \"Vector3\" (colours are x, y, z = r, g, b) and the starter code's Renderer.render, which "
+                    + "converts with toRGB()"),
     CORRECT("correct", "Figure 1",
             "the full Phong model with the course's camera, intersection and byte conversion",
             "nothing: this is the image the tester expects"),
@@ -55,6 +70,11 @@ public enum Variant {
                     + "inside (one root behind the camera, one in front) is not seen at all; where the camera is "
                     + "outside every sphere the image is right, which is why tick1.xml passes",
             "section 4, steps 4 to 6: the hit is the nearest root with s > 0, whatever the sign of the other"),
+    ROOTS_ACCEPTED_AT_ZERO("roots accepted at s >= 0", "",
+            "the intersection accepts a root s = 0 (s1 >= 0 ? s1 : s2, then s >= 0), so a ray that starts on a "
+                    + "sphere's surface hits it where it starts, at P = O; only a sphere whose surface passes "
+                    + "exactly through the camera shows it, which is why tick1.xml passes",
+            "section 4, steps 4 to 6: a hit is at s > 0, strictly"),
     UNCHECKED_NEGATIVE_SQUARE_ROOT("square root of a negative discriminant not checked", "",
             "Math.sqrt of a negative b^2 - 4ac is NaN; a RaycastHit at a NaN distance never beats the closest hit "
                     + "in Scene.findClosestIntersection, so the image is right, but only by luck",

@@ -4,13 +4,17 @@ import static gfx.tick1.diagnose.Variant.AMBIENT_DIFFUSE;
 import static gfx.tick1.diagnose.Variant.AMBIENT_ONLY;
 import static gfx.tick1.diagnose.Variant.AMBIENT_WITHOUT_C_DIFF;
 import static gfx.tick1.diagnose.Variant.BACKGROUND_ONLY;
+import static gfx.tick1.diagnose.Variant.COLOUR_OVER_255;
+import static gfx.tick1.diagnose.Variant.COLOUR_TIMES_255;
 import static gfx.tick1.diagnose.Variant.FALL_OFF_WITHOUT_4PI;
 import static gfx.tick1.diagnose.Variant.FAR_ROOT;
 import static gfx.tick1.diagnose.Variant.FLAT_COLOUR;
 import static gfx.tick1.diagnose.Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT;
+import static gfx.tick1.diagnose.Variant.NO_AMBIENT;
 import static gfx.tick1.diagnose.Variant.NO_FALL_OFF;
 import static gfx.tick1.diagnose.Variant.RED_BLUE_SWAPPED;
 import static gfx.tick1.diagnose.Variant.ROUNDED_BYTES;
+import static gfx.tick1.diagnose.Variant.ROOTS_ACCEPTED_AT_ZERO;
 import static gfx.tick1.diagnose.Variant.R_WRONG_WAY;
 import static gfx.tick1.diagnose.Variant.SPECULAR_WITHOUT_I;
 import static gfx.tick1.diagnose.Variant.UNCLAMPED_N_DOT_L;
@@ -64,27 +68,50 @@ public final class VariantRenderer {
      * spheres); only the shading and the writing of the pixel differ.
      */
     public Map<Variant, BufferedImage> render(Scene scene, Set<Variant> variants) {
+        return renders(scene, variants).images();
+    }
+
+    /**
+     * The images of a scene as several entries render it, and the pixels where at least one of
+     * them draws a sphere (where its ray hits one, in the row it writes the pixel to).
+     *
+     * @param spheres one flag a pixel, row by row from the top
+     */
+    public record Renders(Map<Variant, BufferedImage> images, boolean[] spheres) {
+    }
+
+    /** As {@link #render(Scene, Set)}, with the pixels where some entry draws a sphere. */
+    public Renders renders(Scene scene, Set<Variant> variants) {
         Camera camera = new Camera(width, height);
         Map<Variant, int[]> pixels = new EnumMap<>(Variant.class);
         variants.forEach(variant -> pixels.put(variant, new int[width * height]));
+        // Rows are written by one thread each, but an upside-down row lands in another's: every
+        // write sets a flag to true, which no other write undoes (JLS 17.6: no word tearing).
+        boolean[] spheres = new boolean[width * height];
         boolean needsFarRoot = variants.contains(FAR_ROOT);
         boolean needsBothRootsPositive = variants.contains(HIT_REJECTED_ON_A_NEGATIVE_ROOT);
+        boolean needsZeroRoots = variants.contains(ROOTS_ACCEPTED_AT_ZERO);
         IntStream.range(0, height).parallel().forEach(y -> {
             for (int x = 0; x < width; x++) {
                 Ray ray = camera.castRay(x, y);
                 RaycastHit nearHit = scene.findClosestIntersection(ray);
                 RaycastHit farHit = needsFarRoot ? farthestRootHit(scene, ray) : null;
                 RaycastHit bothRootsHit = needsBothRootsPositive ? bothRootsPositiveHit(scene, ray) : null;
+                RaycastHit zeroRootHit = needsZeroRoots ? zeroRootHit(scene, ray, nearHit) : null;
                 for (Variant variant : variants) {
                     RaycastHit hit = switch (variant) {
                         case FAR_ROOT -> farHit;
                         case HIT_REJECTED_ON_A_NEGATIVE_ROOT -> bothRootsHit;
+                        case ROOTS_ACCEPTED_AT_ZERO -> zeroRootHit;
                         default -> nearHit;
                     };
                     Vector3 colour = shade(scene, hit, variant);
                     // Pixel row 0 is the top of the image; writing rows bottom-up turns the picture over.
                     int row = variant == UPSIDE_DOWN ? height - 1 - y : y;
                     pixels.get(variant)[row * width + x] = toRGB(colour, variant);
+                    if (variant != BACKGROUND_ONLY && hit.getObjectHit() != null) {
+                        spheres[row * width + x] = true;
+                    }
                 }
             }
         });
@@ -94,7 +121,7 @@ public final class VariantRenderer {
             image.setRGB(0, 0, width, height, rgb, 0, width);
             images.put(variant, image);
         });
-        return images;
+        return new Renders(images, spheres);
     }
 
     /** Renderer.trace after the intersection: the background, or the shade of the hit. */
@@ -116,7 +143,7 @@ public final class VariantRenderer {
 
         PointLight light = scene.getPointLight();
         if (light == null || variant == AMBIENT_ONLY) {
-            return ambient;
+            return variant == NO_AMBIENT ? new Vector3(0) : ambient;
         }
         double distanceToLight = light.getPosition().subtract(P).magnitude();
         Vector3 I = illumination(light, distanceToLight, variant);
@@ -146,7 +173,12 @@ public final class VariantRenderer {
         }
         Vector3 specular = variant == SPECULAR_WITHOUT_I ? C_spec.scale(k_s * Math.pow(specularBase, n))
                 : C_spec.scale(I).scale(k_s * Math.pow(specularBase, n));
-        return ambient.add(diffuse).add(specular);
+        return switch (variant) {
+            case NO_AMBIENT -> diffuse.add(specular);
+            case COLOUR_TIMES_255 -> ambient.add(diffuse).add(specular).scale(255);
+            case COLOUR_OVER_255 -> ambient.add(diffuse).add(specular).scale(1.0 / 255);
+            default -> ambient.add(diffuse).add(specular);
+        };
     }
 
     /** I = light colour * intensity / (4 pi d^2), or one of the two ways of getting it wrong. */
@@ -188,6 +220,24 @@ public final class VariantRenderer {
             }
         }
         return closest;
+    }
+
+    /**
+     * The hit when a root s = 0 counts (s = s1 &gt;= 0 ? s1 : s2, a hit if s &gt;= 0): where a
+     * sphere's surface passes exactly through the ray's origin, that sphere at distance 0, the
+     * nearest any hit can be (the first such sphere on a tie, as Scene keeps the first of equal
+     * hits); elsewhere the reference's hit, as no root is 0 there.
+     */
+    private static RaycastHit zeroRootHit(Scene scene, Ray ray, RaycastHit nearHit) {
+        for (Sphere sphere : scene.getObjects()) {
+            double s1 = root(sphere, ray, false);
+            double s = s1 >= 0 ? s1 : root(sphere, ray, true);
+            if (s == 0) {
+                Vector3 point = ray.evaluateAt(s);
+                return new RaycastHit(sphere, s, point, sphere.getNormalAt(point));
+            }
+        }
+        return nearHit;
     }
 
     /**

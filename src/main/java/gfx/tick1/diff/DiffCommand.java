@@ -11,12 +11,14 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashSet;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.FutureTask;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -26,19 +28,23 @@ import picocli.CommandLine.Spec;
 /**
  * {@code tick1 diff}: a student's Sphere.java and Renderer.java against ours, by meaning. Both
  * sides are parsed; comments, layout, the package, imports and the order of members are set
- * aside, members are matched by signature, and what still differs is shown as a unified diff,
- * member by member. The hints after it come only from probes of the student's own methods, run
- * in the sandbox as {@code grade} runs them ({@link Hints}).
+ * aside, members are matched by signature, a member that means the same as ours (or, where the
+ * starter code gives it whole, as the starter's) is left out ({@link SameMeaning}), and what still
+ * differs is shown as a unified diff, member by member. The hints after it come only from probes
+ * of the student's own methods, run in the sandbox as {@code grade} runs them ({@link Hints}).
  */
 @Command(name = "diff",
         description = {
             "Compares your Sphere.java and Renderer.java with ours, ignoring comments, formatting, the package, "
-                    + "imports and the order of fields and methods. Fields, constructors and methods are matched "
-                    + "by signature; each one that differs is shown as a unified diff (- ours, + yours). When "
-                    + "something differs and the files compile, your intersectionWith and illuminate are run in the "
-                    + "sandbox on fixed inputs, and each property they get wrong is a hint with the handout section "
-                    + "to reread; without the sandbox there are no hints, and a line says why. A file is recognised "
-                    + "by its class. Colour on a terminal only."})
+                    + "imports, the order of fields and methods, the names of locals and parameters, this. on a "
+                    + "field, parentheses that do not change the expression, and the order of declarations that "
+                    + "do not depend on each other. Fields, constructors and methods are matched by signature; each "
+                    + "one that still differs from ours (and, for what the starter code gives whole, from the "
+                    + "starter's) is shown as a unified diff (- ours, + yours). When something differs and the "
+                    + "files compile, your intersectionWith and illuminate are run in the sandbox on fixed inputs, "
+                    + "and each property they get wrong is a hint with the handout section to reread; without the "
+                    + "sandbox there are no hints, and a line says why. A file is recognised by its class. Colour "
+                    + "on a terminal only."})
 public final class DiffCommand implements Callable<Integer> {
 
     @ExitStatus("nothing differs in meaning (and nothing is printed)")
@@ -56,15 +62,39 @@ public final class DiffCommand implements Callable<Integer> {
     @Parameters(arity = "1..2", paramLabel = "FILE.java", description = "Your Sphere.java and/or Renderer.java.")
     private List<Path> files;
 
+    /**
+     * The stack of the thread that parses and compares: both recurse through the syntax tree, so
+     * code nested a few hundred deep (1 + 1 + ..., or ((...))) would overflow an ordinary thread's.
+     */
+    private static final long DEEP_STACK = 256L << 20;
+
     @Override
     public Integer call() throws InterruptedException {
+        FutureTask<Integer> task = new FutureTask<>(this::compareFiles);
+        Thread worker = new Thread(null, task, "tick1 diff", DEEP_STACK);
+        worker.start();
+        try {
+            return task.get();
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof RuntimeException unchecked) {
+                throw unchecked;
+            }
+            if (e.getCause() instanceof Error error) {
+                throw error;
+            }
+            throw new IllegalStateException(e.getCause());
+        }
+    }
+
+    private int compareFiles() {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         List<JavaMembers> theirs = new ArrayList<>();
         Set<String> classes = new LinkedHashSet<>();
         for (Path file : files) {
             try {
-                JavaMembers parsed = JavaMembers.parse(file.toString(), read(file));
+                JavaMembers parsed = JavaMembers.parse(file.toString(), read(file),
+                        className -> StarterKit.STUDENT_CLASSES.contains(className) ? ours(className) : null);
                 if (!StarterKit.STUDENT_CLASSES.contains(parsed.className())) {
                     err.println("tick1 diff: " + file + ": class " + parsed.className()
                             + ": expected Sphere or Renderer, the two classes of the tick");
@@ -82,12 +112,18 @@ public final class DiffCommand implements Callable<Integer> {
             } catch (IOException e) {
                 err.println("tick1 diff: " + file + ": " + IoErrors.reason(e));
                 return EXIT_CANNOT_COMPARE;
+            } catch (StackOverflowError e) {
+                err.println("tick1 diff: " + file + ": expressions or blocks nested too deeply to compare; "
+                        + "expected code nested at most a few thousand deep");
+                return EXIT_CANNOT_COMPARE;
             }
         }
         Colours colours = new Colours(CommandLine.Help.Ansi.AUTO.enabled());
         boolean differs = false;
         for (int i = 0; i < theirs.size(); i++) {
-            List<String> report = compare(ours(theirs.get(i).className()), theirs.get(i), files.get(i), colours);
+            String className = theirs.get(i).className();
+            JavaMembers ours = ours(className);
+            List<String> report = compare(ours, starter(className, ours), theirs.get(i), files.get(i), colours);
             report.forEach(out::println);
             differs |= !report.isEmpty();
         }
@@ -97,36 +133,8 @@ public final class DiffCommand implements Callable<Integer> {
         return differs ? EXIT_DIFFERENT : EXIT_SAME;
     }
 
-    /** The unified diff of one file, member by member in our order, then members only theirs has. */
-    static List<String> compare(JavaMembers ours, JavaMembers theirs, Path file, Colours colours) {
-        Set<String> signatures = new LinkedHashSet<>(ours.members().keySet());
-        signatures.addAll(theirs.members().keySet());
-        List<String> lines = new ArrayList<>();
-        for (String signature : signatures) {
-            List<String> a = linesOf(ours.members().get(signature));
-            List<String> b = linesOf(theirs.members().get(signature));
-            List<List<LineDiff.Line>> hunks = LineDiff.hunks(a, b);
-            if (hunks.isEmpty()) {
-                continue;
-            }
-            if (lines.isEmpty()) {
-                lines.add(colours.bold("--- ours: " + ours.className() + ".java"));
-                lines.add(colours.bold("+++ yours: " + file));
-            }
-            String note = a.isEmpty() ? " (only in yours)" : b.isEmpty() ? " (missing from yours)" : "";
-            for (List<LineDiff.Line> hunk : hunks) {
-                lines.add(colours.cyan("@@ " + signature + note + " @@"));
-                for (LineDiff.Line line : hunk) {
-                    String text = line.kind() + line.text();
-                    lines.add(line.kind() == '-' ? colours.red(text) : line.kind() == '+' ? colours.green(text) : text);
-                }
-            }
-        }
-        return lines;
-    }
-
     /** The hints of the probes of their methods, or the one line that says why there are none. */
-    private void hints(List<JavaMembers> theirs, PrintWriter out, Colours colours) throws InterruptedException {
+    private void hints(List<JavaMembers> theirs, PrintWriter out, Colours colours) {
         Map<String, String> given = new LinkedHashMap<>(), reference = new LinkedHashMap<>();
         for (int i = 0; i < theirs.size(); i++) {
             try {
@@ -139,11 +147,61 @@ public final class DiffCommand implements Callable<Integer> {
         for (String className : StarterKit.STUDENT_CLASSES) {
             reference.put(className, ourSource(className));
         }
-        Hints.of(given, reference).forEach(line -> out.println(colours.yellow(line)));
+        try {
+            Hints.of(given, reference).forEach(line -> out.println(colours.yellow(line)));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            out.println(colours.yellow("no hints: stopped before the probes of your methods had run"));
+        }
     }
 
-    private static List<String> linesOf(String text) {
-        return text == null ? List.of() : text.lines().toList();
+    /**
+     * The unified diff of one file, member by member in our order, then members only theirs has.
+     * A member is left out when it means the same as ours or, for a member the starter code
+     * gives whole (one without a TODO), as the starter's ({@code starter} may be null).
+     */
+    static List<String> compare(JavaMembers ours, JavaMembers starter, JavaMembers theirs, Path file,
+            Colours colours) {
+        Set<String> signatures = new LinkedHashSet<>(ours.members().keySet());
+        signatures.addAll(theirs.members().keySet());
+        List<String> lines = new ArrayList<>();
+        for (String signature : signatures) {
+            JavaMembers.Member our = ours.members().get(signature);
+            JavaMembers.Member their = theirs.members().get(signature);
+            JavaMembers.Member given = starter == null ? null : starter.members().get(signature);
+            if (our != null && their != null && (our.key().equals(their.key())
+                    || given != null && !given.todo() && given.key().equals(their.key()))) {
+                continue;
+            }
+            List<String> a = our == null ? List.of() : our.lines();
+            List<String> b = their == null ? List.of() : their.lines();
+            List<List<LineDiff.Line>> hunks = LineDiff.hunks(a, our == null ? a : our.keyLines(), b,
+                    their == null ? b : their.keyLines());
+            if (hunks.isEmpty()) {
+                continue;
+            }
+            if (lines.isEmpty()) {
+                lines.add(colours.bold("--- ours: " + ours.className() + ".java"));
+                lines.add(colours.bold("+++ yours: " + file));
+            }
+            lines.addAll(member(signature, a.isEmpty() ? " (only in yours)" : b.isEmpty() ? " (missing from yours)"
+                    : "", hunks, colours));
+        }
+        return lines;
+    }
+
+    /** One member's hunks, each headed by its signature. */
+    private static List<String> member(String signature, String note, List<List<LineDiff.Line>> hunks,
+            Colours colours) {
+        List<String> lines = new ArrayList<>();
+        for (List<LineDiff.Line> hunk : hunks) {
+            lines.add(colours.cyan("@@ " + signature + note + " @@"));
+            for (LineDiff.Line line : hunk) {
+                String text = line.kind() + line.text();
+                lines.add(line.kind() == '-' ? colours.red(text) : line.kind() == '+' ? colours.green(text) : text);
+            }
+        }
+        return lines;
     }
 
     /** The source of our Sphere.java or Renderer.java, as the build copies it into the program. */
@@ -166,6 +224,16 @@ public final class DiffCommand implements Callable<Integer> {
             return JavaMembers.parse(name, ourSource(className));
         } catch (JavaMembers.ParseException e) {
             throw new IllegalStateException("our own " + name + " does not parse: " + e.getMessage(), e);
+        }
+    }
+
+    /** The course's starter version of Sphere.java or Renderer.java, as the kit hands it out. */
+    static JavaMembers starter(String className, JavaMembers ours) {
+        try {
+            return JavaMembers.parse(className + ".java", StarterKit.source(className), name -> ours);
+        } catch (JavaMembers.ParseException e) {
+            throw new IllegalStateException("the starter kit's " + className + ".java does not parse: "
+                    + e.getMessage(), e);
         }
     }
 

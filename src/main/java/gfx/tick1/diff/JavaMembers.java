@@ -20,13 +20,10 @@ import com.github.javaparser.ast.expr.MethodCallExpr;
 import com.github.javaparser.ast.expr.NameExpr;
 import com.github.javaparser.ast.expr.ObjectCreationExpr;
 import com.github.javaparser.ast.expr.ThisExpr;
-import com.github.javaparser.printer.DefaultPrettyPrinter;
-import com.github.javaparser.printer.configuration.DefaultConfigurationOption;
-import com.github.javaparser.printer.configuration.DefaultPrinterConfiguration;
-import com.github.javaparser.printer.configuration.DefaultPrinterConfiguration.ConfigOption;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Function;
 import java.util.stream.Collectors;
 
 /**
@@ -39,7 +36,25 @@ import java.util.stream.Collectors;
  * @param members   member signature ("intersectionWith(Ray)", "field radius") to its printed text, in
  *                  the file's order
  */
-public record JavaMembers(String className, Map<String, String> members) {
+public record JavaMembers(String className, Map<String, Member> members) {
+
+    /**
+     * One member: its text in the standard layout (with its independent declarations in
+     * canonical order), its canonical text ({@link SameMeaning}: equal exactly when two members
+     * mean the same), and whether the source marks it as still to be written with a TODO comment.
+     */
+    public record Member(String text, String key, boolean todo) {
+
+        /** The text's lines and the key's, line for line (one statement a line in both). */
+        List<String> lines() {
+            return text.lines().toList();
+        }
+
+        List<String> keyLines() {
+            List<String> keys = key.lines().toList();
+            return keys.size() == lines().size() ? keys : lines();
+        }
+    }
 
     /** A file that is not Java the parser accepts: where, and what the parser said. */
     public static final class ParseException extends Exception {
@@ -50,12 +65,22 @@ public record JavaMembers(String className, Map<String, String> members) {
         }
     }
 
-    private static final DefaultPrettyPrinter PRINTER = new DefaultPrettyPrinter(new DefaultPrinterConfiguration()
-            .removeOption(new DefaultConfigurationOption(ConfigOption.PRINT_COMMENTS))
-            .removeOption(new DefaultConfigurationOption(ConfigOption.PRINT_JAVADOC)));
-
     /** Parses {@code source}; {@code name} is the file's name for messages ("Sphere.java:12:5: ..."). */
     public static JavaMembers parse(String name, String source) throws ParseException {
+        return parse(name, source, className -> null);
+    }
+
+    /**
+     * Parses {@code source} as {@link #parse(String, String)} does, putting independent
+     * declarations that {@code like} (ours; null for none) has in the order they have there.
+     */
+    public static JavaMembers parse(String name, String source, JavaMembers like) throws ParseException {
+        return parse(name, source, className -> like);
+    }
+
+    /** As {@link #parse(String, String, JavaMembers)}, with the members to be like found by the class's name. */
+    static JavaMembers parse(String name, String source, Function<String, JavaMembers> likeOf)
+            throws ParseException {
         JavaParser parser = new JavaParser(new ParserConfiguration()
                 .setLanguageLevel(ParserConfiguration.LanguageLevel.JAVA_17));
         ParseResult<CompilationUnit> result = parser.parse(source);
@@ -72,9 +97,17 @@ public record JavaMembers(String className, Map<String, String> members) {
         TypeDeclaration<?> type = unit.getType(0);
         dropParenthesesThatChangeNothing(type);
         dropThisBeforeMethodCalls(type);
-        Map<String, String> members = new LinkedHashMap<>();
+        SameMeaning meaning = new SameMeaning(type);
+        JavaMembers like = likeOf.apply(type.getNameAsString());
+        Map<String, Member> members = new LinkedHashMap<>();
         for (BodyDeclaration<?> member : type.getMembers()) {
-            members.put(signature(member), PRINTER.print(member));
+            boolean todo = member.getAllContainedComments().stream()
+                    .anyMatch(comment -> comment.getContent().contains("TODO"));
+            String signature = signature(member);
+            Member ours = like == null ? null : like.members().get(signature);
+            List<String> preferred = ours == null ? List.of() : ours.key().lines().map(String::strip).toList();
+            meaning.order(member, preferred);
+            members.put(signature, new Member(SameMeaning.print(member), meaning.key(member, preferred), todo));
         }
         return new JavaMembers(type.getNameAsString(), members);
     }

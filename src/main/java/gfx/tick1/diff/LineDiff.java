@@ -22,7 +22,16 @@ public final class LineDiff {
 
     /** The hunks that turn {@code ours} into {@code theirs}; empty when they are the same. */
     public static List<List<Line>> hunks(List<String> ours, List<String> theirs) {
-        List<Line> all = edits(ours, theirs);
+        return hunks(ours, ours, theirs, theirs);
+    }
+
+    /**
+     * The hunks that turn {@code ours} into {@code theirs}, lines matched by their keys (one a
+     * line): a kept line is shown as ours, a removed one as ours, an added one as theirs.
+     */
+    public static List<List<Line>> hunks(List<String> ours, List<String> ourKeys, List<String> theirs,
+            List<String> theirKeys) {
+        List<Line> all = edits(ours, ourKeys, theirs, theirKeys);
         List<List<Line>> hunks = new ArrayList<>();
         List<Line> hunk = null;
         int lastChange = Integer.MIN_VALUE;
@@ -54,18 +63,27 @@ public final class LineDiff {
 
     /** Every line of both texts, in order: kept, removed from ours, or added in theirs. */
     public static List<Line> edits(List<String> ours, List<String> theirs) {
+        return edits(ours, ours, theirs, theirs);
+    }
+
+    private static List<Line> edits(List<String> ours, List<String> ourKeys, List<String> theirs,
+            List<String> theirKeys) {
         int n = ours.size(), m = theirs.size();
+        if (ourKeys.size() != n || theirKeys.size() != m) {
+            throw new IllegalArgumentException("one key a line: " + ourKeys.size() + " keys for " + n + " lines, "
+                    + theirKeys.size() + " for " + m);
+        }
         int[][] common = new int[n + 1][m + 1]; // common[i][j]: LCS length of ours[i..] and theirs[j..]
         for (int i = n - 1; i >= 0; i--) {
             for (int j = m - 1; j >= 0; j--) {
-                common[i][j] = ours.get(i).equals(theirs.get(j)) ? common[i + 1][j + 1] + 1
+                common[i][j] = ourKeys.get(i).equals(theirKeys.get(j)) ? common[i + 1][j + 1] + 1
                         : Math.max(common[i + 1][j], common[i][j + 1]);
             }
         }
         List<Line> lines = new ArrayList<>();
         int i = 0, j = 0;
         while (i < n || j < m) {
-            if (i < n && j < m && ours.get(i).equals(theirs.get(j))) {
+            if (i < n && j < m && ourKeys.get(i).equals(theirKeys.get(j))) {
                 lines.add(new Line(' ', ours.get(i++)));
                 j++;
             } else if (i < n && (j == m || common[i + 1][j] >= common[i][j + 1])) {

@@ -81,9 +81,9 @@ class DiagnoseCommandTest {
         PngOutput.write(picture, image);
         CliRun run = CliRun.of("diagnose", image.toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_UNSURE);
-        assertThat(run.out()).contains("verdict: no entry of the catalogue explains this image exactly",
-                "candidates, closest first: correct (Figure 1)")
-                .doesNotContain("likely cause", "full Phong model");
+        assertThat(run.out()).contains("verdict: unsure: no entry of the catalogue explains this image exactly",
+                "candidates, closest first:", "  1. correct (Figure 1)")
+                .doesNotContain("likely cause", "full Phong model", "closest: ");
     }
 
     @Test

@@ -92,6 +92,24 @@ class DiagnoserTest {
         assertThat(diagnosis.verdict()).isEqualTo(Diagnosis.Verdict.CORRECT);
     }
 
+    /**
+     * The ranking counts only the pixels where some entry draws a sphere: the background, which
+     * every entry draws alike, would otherwise give even "background only" most of a correct image.
+     */
+    @ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.ValueSource(strings = {BundledScenes.TICK1, BundledScenes.BASIC})
+    void theRankingCountsOnlyThePixelsWhereSomeEntryDrawsASphere(String name) {
+        Scene scene = BundledScenes.load(name);
+        Diagnosis diagnosis = new Diagnoser().diagnose(new VariantRenderer(160, 120).render(scene, Variant.CORRECT),
+                scene);
+        Diagnosis.Candidate background = diagnosis.candidates().stream()
+                .filter(c -> c.variant() == Variant.BACKGROUND_ONLY).findFirst().orElseThrow();
+        assertThat(diagnosis.spherePixels()).isPositive().isLessThan(160 * 120);
+        double onTheFrame = background.difference().shareWithin(0);
+        assertThat(onTheFrame).as("on the whole frame").isGreaterThan(0.3);
+        assertThat(background.exactShare()).as("on the sphere pixels").isLessThan(onTheFrame / 2);
+    }
+
     /** One pixel one level off: correct within the 1-level tolerance, but not for grade, which wants it exact. */
     @Test
     void anImageOneLevelOffIsCorrectOnlyWithTheTolerance() {

@@ -67,7 +67,11 @@ class UncataloguedMistakesTest {
             Diagnosis diagnosis = new Diagnoser(0, 1).diagnose(render(scene, shading, 160, 120), scene);
             String report = sceneName + ":\n" + String.join("\n", diagnosis.report());
             assertThat(diagnosis.verdict()).as(report).isEqualTo(Diagnosis.Verdict.UNSURE);
-            assertThat(report).doesNotContain("full Phong model", "likely cause");
+            assertThat(report).doesNotContain("full Phong model", "likely cause", "closest: ")
+                    .contains("verdict: unsure: ");
+            assertThat(report.lines().filter(line -> line.matches("  \\d+[.=] .*"))).as(report).hasSizeBetween(1, 3);
+            assertThat(report.lines().filter(line -> line.startsWith("if it is "))).as(report)
+                    .hasSizeLessThanOrEqualTo(3);
         }
     }
 

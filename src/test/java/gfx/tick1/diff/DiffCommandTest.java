@@ -121,6 +121,93 @@ class DiffCommandTest {
                         "if (discriminant < 0) {\n            return new RaycastHit();\n        }\n", ""));
     }
 
+    static Stream<CorrectStyles.Style> layoutOnly() {
+        return CorrectStyles.layoutOnly().stream();
+    }
+
+    static Stream<CorrectStyles.Style> otherCode() {
+        return CorrectStyles.otherCode().stream();
+    }
+
+    private static java.util.Set<String> membersShown(CliRun run) {
+        return run.out().lines().filter(line -> line.startsWith("@@ "))
+                .map(line -> line.substring(3, line.length() - 3)).collect(java.util.stream.Collectors.toSet());
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("layoutOnly")
+    void aCorrectSolutionThatDiffersOnlyInLayoutExitsZeroAndPrintsNothing(CorrectStyles.Style style)
+            throws IOException {
+        Path[] files = style.writeTo(dir.resolve("style"));
+        CliRun run = CliRun.of("diff", files[0].toString(), files[1].toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
+        assertThat(run.out()).as(run.transcript()).isEmpty();
+        assertThat(run.err()).isEmpty();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("otherCode")
+    void aCorrectSolutionWrittenAnotherWayShowsTheMembersItChangesAndNoOthers(CorrectStyles.Style style)
+            throws IOException {
+        Path[] files = style.writeTo(dir.resolve("style"));
+        CliRun run = CliRun.of("diff", files[0].toString(), files[1].toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(membersShown(run)).as(run.transcript()).isEqualTo(style.changedMembers());
+    }
+
+    /**
+     * The kit as handed out, in our layout and in the course's own (which writes
+     * {@code this.phong_kD = SPHERE_KD} and calls the traced colour {@code pixel}): only the two
+     * methods the student writes differ.
+     */
+    @ParameterizedTest(name = "the course''s layout: {0}")
+    @org.junit.jupiter.params.provider.ValueSource(booleans = {false, true})
+    void theUntouchedStarterCodeShowsOnlyIntersectionWithAndIlluminate(boolean coursesLayout) throws IOException {
+        String sphere = StarterKit.source("Sphere"), renderer = StarterKit.source("Renderer");
+        if (coursesLayout) {
+            sphere = sphere.replace("        phong_", "        this.phong_");
+            renderer = renderer.replace("linearRGB", "pixel");
+            assertThat(sphere).contains("this.phong_kD = SPHERE_KD;");
+            assertThat(renderer).contains("pixel.toRGB()");
+        }
+        CliRun run = CliRun.of("diff", write("Sphere.java", sphere).toString(),
+                write("Renderer.java", renderer).toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(membersShown(run)).as(run.transcript()).containsExactlyInAnyOrder(INTERSECTION, ILLUMINATE);
+    }
+
+    /** Edits that change what the code computes, each as small as an edit can be. */
+    @ParameterizedTest(name = "{1} -> {2}")
+    @CsvSource(delimiter = '|', value = {
+        "Sphere | double s1 = (-b - Math.sqrt(discriminant)) / (2 * a); "
+            + "| double s1 = (-b - Math.sqrt(discriminant)) / 2 * a;",
+        "Sphere | s1 > 0 ? s1 : s2 | s2 > 0 ? s1 : s2",
+        "Sphere | this.radius = radius; | radius = radius;",
+        "Renderer | Math.pow(Math.max(0, RdotV), n) | Math.pow(Math.max(0, NdotL), n)",
+        "Renderer | double RdotV = R.dot(V); | double RdotV = V.dot(R);",
+        "Renderer | Vector3 linearRGB = trace(scene, ray); | Vector3 linearRGB = trace(scene, camera.castRay(x, y));"})
+    void aChangeOfMeaningIsNeverHidden(String className, String text, String replacement) throws IOException {
+        String source = ours(className);
+        assertThat(source).containsOnlyOnce(text);
+        CliRun run = CliRun.of("diff", write(className + ".java", source.replace(text, replacement)).toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(run.out()).as(run.transcript()).contains(replacement.strip());
+    }
+
+    /** A member the starter code gives whole may be the starter's version; one it leaves to write may not. */
+    @Test
+    void aMemberTheStarterGivesWholeMayBeTheStartersAndOneWithATodoMayNot() throws Exception {
+        JavaMembers ours = JavaMembers.parse("T.java",
+                "class T { int given() { return 1; } int todo() { return 2; } }");
+        JavaMembers starter = JavaMembers.parse("T.java", "class T { int given() { return 3; } "
+                + "int todo() { /* TODO: return 2 */ return 0; } }");
+        JavaMembers theirs = JavaMembers.parse("T.java", "class T { int given() { return 3; } "
+                + "int todo() { return 0; } }");
+        java.util.List<String> report = DiffCommand.compare(ours, starter, theirs, Path.of("T.java"),
+                new DiffCommand.Colours(false));
+        assertThat(report).as(String.join("\n", report)).contains("@@ todo() @@").doesNotContain("@@ given() @@");
+    }
+
     /** The kit's files as handed out: the two stages before any code is written. */
     @ParameterizedTest(name = "{0}")
     @CsvSource({"BACKGROUND_ONLY, Sphere, intersectionWith(Ray)",
@@ -159,6 +246,18 @@ class DiffCommandTest {
         assertThat(run.out()).isEmpty();
     }
 
+    /** Parsing and comparing recurse through the tree: code nested thousands deep must not overflow. */
+    @Test
+    void codeNestedThousandsDeepIsCompared() throws IOException {
+        String nested = "(".repeat(3000) + "2 * a" + ")".repeat(3000);
+        Path file = write("Sphere.java", ours("Sphere").replace("double a = D.dot(D);", "double a = D.dot(D);\n"
+                + "        double deep = " + nested + ";"));
+        CliRun run = CliRun.of("diff", file.toString());
+        assertThat(run.status()).as(run.err()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(run.out()).contains("+    double deep = 2 * a;");
+        assertThat(run.err()).isEmpty();
+    }
+
     @Test
     void aFileOfAnotherClassIsOneLineAndExitTwo() throws IOException {
         Path file = write("Camera.java", "package gfx.tick1; public class Camera { }");
@@ -174,11 +273,11 @@ class DiffCommandTest {
         JavaMembers ours = DiffCommand.ours("Sphere");
         JavaMembers theirs = JavaMembers.parse("Sphere.java",
                 ours("Sphere").replace("double s = s1 > 0 ? s1 : s2;", "double s = s2;"));
-        java.util.List<String> coloured = DiffCommand.compare(ours, theirs, Path.of("Sphere.java"),
+        java.util.List<String> coloured = DiffCommand.compare(ours, null, theirs, Path.of("Sphere.java"),
                 new DiffCommand.Colours(true));
         assertThat(coloured).contains("\u001B[31m-    double s = s1 > 0 ? s1 : s2;\u001B[0m",
                 "\u001B[32m+    double s = s2;\u001B[0m");
-        assertThat(DiffCommand.compare(ours, theirs, Path.of("Sphere.java"), new DiffCommand.Colours(false)))
+        assertThat(DiffCommand.compare(ours, null, theirs, Path.of("Sphere.java"), new DiffCommand.Colours(false)))
                 .noneMatch(line -> line.contains("\u001B"));
     }
 }

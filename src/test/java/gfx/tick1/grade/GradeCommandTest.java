@@ -28,6 +28,7 @@ class GradeCommandTest {
     private static final String DIFFUSE = "k_d * Math.max(0, NdotL)";
     private static final String RGB = "image.setRGB(x, y, linearRGB.toRGB());";
     private static final String NEAR_ROOT = "double s = s1 > 0 ? s1 : s2;";
+    private static final String SUM = "return ambient.add(diffuse).add(specular);";
 
     @TempDir
     Path dir;
@@ -88,6 +89,11 @@ class GradeCommandTest {
                         "return ambient.add(diffuse).add(specular);", "return ambient.add(diffuse);")),
                 Arguments.of(Variant.AMBIENT_WITHOUT_C_DIFF, correct.editRenderer(
                         "Vector3 ambient = C_diff.scale(I_a);", "Vector3 ambient = I_a;")),
+                Arguments.of(Variant.NO_AMBIENT, correct.editRenderer(
+                        "return ambient.add(diffuse).add(specular);", "return diffuse.add(specular);")),
+                Arguments.of(Variant.COLOUR_TIMES_255, correct.editRenderer(SUM, SUM.replace(";", ".scale(255);"))),
+                Arguments.of(Variant.COLOUR_OVER_255,
+                        correct.editRenderer(SUM, SUM.replace(";", ".scale(1.0 / 255);"))),
                 Arguments.of(Variant.SPECULAR_WITHOUT_I,
                         correct.editRenderer("C_spec.scale(I).scale(k_s", "C_spec.scale(k_s")),
                 Arguments.of(Variant.UNNORMALISED_L_V, correct
@@ -119,10 +125,14 @@ class GradeCommandTest {
     static final StudentSolution HIT_REJECTED_ON_A_NEGATIVE_ROOT = StudentSolution.correct().editSphere(NEAR_ROOT,
             "if (s1 < 0 || s2 < 0) {\n            return new RaycastHit();\n        }\n        " + NEAR_ROOT);
 
+    /** A mistake that shows only where a sphere's surface passes exactly through the camera. */
+    static final StudentSolution ROOTS_ACCEPTED_AT_ZERO = StudentSolution.correct()
+            .editSphere(NEAR_ROOT, "double s = s1 >= 0 ? s1 : s2;").editSphere("if (s > 0) {", "if (s >= 0) {");
+
     @Test
     void everyMistakeOfTheCatalogueHasAStudentSolution() {
         assertThat(Stream.concat(mistakes().map(arguments -> arguments.get()[0]),
-                Stream.of(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT)))
+                Stream.of(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT, Variant.ROOTS_ACCEPTED_AT_ZERO)))
                 .containsExactlyInAnyOrder(Variant.seenInImages().stream().filter(v -> !v.isCorrect()).toArray());
     }
 
@@ -159,6 +169,18 @@ class GradeCommandTest {
                         + "returns s = 6, where the nearer hit is at s = 4",
                         "  probe: your illuminate gives negative diffuse light when N.L < 0 (the light behind the "
                                 + "surface)");
+    }
+
+    @Test
+    void rootsAcceptedAtZeroPassTick1ButFailWhereASpherePassesThroughTheCamera() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("through"));
+        Files.copy(Path.of("src/test/resources/scenes/sphere-through-camera.xml"),
+                scenes.resolve("sphere-through-camera.xml"));
+        CliRun run = grade(ROOTS_ACCEPTED_AT_ZERO, "--scenes", scenes.toString());
+        Variant mistake = Variant.ROOTS_ACCEPTED_AT_ZERO;
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).as(run.transcript()).contains("tick1.xml: PASS", "sphere-through-camera.xml: FAIL",
+                "  closest: " + mistake.title() + " (100.000% of pixels exact", "reread: handout " + mistake.reread());
     }
 
     @ParameterizedTest(name = "{0}")
