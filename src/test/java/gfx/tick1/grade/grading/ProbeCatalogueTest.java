@@ -113,6 +113,9 @@ class ProbeCatalogueTest {
         for (gfx.tick1.diagnose.Variant variant : gfx.tick1.diagnose.Variant.values()) {
             assertThat(named).as("the probe test's mistakes").contains(variant.name());
         }
+        for (String name : named) {
+            assertThat(gfx.tick1.diagnose.Variant.valueOf(name)).as("an entry of the catalogue").isNotNull();
+        }
     }
 
     @Test
