@@ -179,8 +179,11 @@ class GradeCommandTest {
         CliRun run = grade(ROOTS_ACCEPTED_AT_ZERO, "--scenes", scenes.toString());
         Variant mistake = Variant.ROOTS_ACCEPTED_AT_ZERO;
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        // What to reread is the section of the failed probe, not the closest picture's.
         assertThat(run.out()).as(run.transcript()).contains("tick1.xml: PASS", "sphere-through-camera.xml: FAIL",
-                "  closest: " + mistake.title() + " (100.000% of pixels exact", "reread: handout " + mistake.reread());
+                "  closest: " + mistake.title() + " (100.000% of pixels exact",
+                "  probe: your intersectionWith accepts a root s = 0: a ray that starts on a sphere's surface hits it "
+                        + "where it starts", "  reread: handout section 4, steps 4 to 6 (a hit is at s > 0)");
     }
 
     @ParameterizedTest(name = "{0}")
