@@ -135,7 +135,7 @@ public final class DiffCommand implements Callable<Integer> {
 
     /** The hints of the probes of their methods, or the one line that says why there are none. */
     private void hints(List<JavaMembers> theirs, PrintWriter out, Colours colours) {
-        Map<String, String> given = new LinkedHashMap<>(), reference = new LinkedHashMap<>();
+        Map<String, String> given = new LinkedHashMap<>(), starter = new LinkedHashMap<>();
         for (int i = 0; i < theirs.size(); i++) {
             try {
                 given.put(theirs.get(i).className(), read(files.get(i)));
@@ -144,11 +144,12 @@ public final class DiffCommand implements Callable<Integer> {
                 return;
             }
         }
+        // A file not given is the starter kit's: its methods' probes are not reported.
         for (String className : StarterKit.STUDENT_CLASSES) {
-            reference.put(className, ourSource(className));
+            starter.put(className, StarterKit.source(className));
         }
         try {
-            Hints.of(given, reference).forEach(line -> out.println(colours.yellow(line)));
+            Hints.of(given, starter).forEach(line -> out.println(colours.yellow(line)));
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             out.println(colours.yellow("no hints: stopped before the probes of your methods had run"));

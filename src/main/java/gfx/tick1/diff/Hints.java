@@ -9,7 +9,7 @@ import java.util.Map;
  * The hints of {@code tick1 diff}: only facts that a probe of the student's own methods showed.
  * The two files are compiled with the starter kit and their {@code intersectionWith} and
  * {@code illuminate} are called in the sandbox on the fixed inputs {@code grade} uses (a file not
- * given is taken as ours); each failed probe of a given file's method is one hint. When the probes
+ * given is the starter kit's, and its method's probes are not reported); each failed probe of a given file's method is one hint. When the probes
  * cannot run (no sandbox, the files do not compile), there are no hints, and one line says why.
  */
 final class Hints {
@@ -18,12 +18,12 @@ final class Hints {
     }
 
     /**
-     * The hint lines for {@code theirs} (class name to source), given {@code ours} for the classes
-     * not given: "hint: ..." lines, or one "no hints: ..." line, or none when every probe holds.
+     * The hint lines for {@code theirs} (class name to source), with {@code starter} for the
+     * classes not given: "hint: ..." lines, or one "no hints: ..." line, or none when every probe holds.
      */
-    static List<String> of(Map<String, String> theirs, Map<String, String> ours) throws InterruptedException {
-        String sphere = theirs.getOrDefault("Sphere", ours.get("Sphere"));
-        String renderer = theirs.getOrDefault("Renderer", ours.get("Renderer"));
+    static List<String> of(Map<String, String> theirs, Map<String, String> starter) throws InterruptedException {
+        String sphere = theirs.getOrDefault("Sphere", starter.get("Sphere"));
+        String renderer = theirs.getOrDefault("Renderer", starter.get("Renderer"));
         CodeProbe.Hints hints = CodeProbe.probe(sphere, renderer, List.copyOf(theirs.keySet()));
         List<String> lines = new ArrayList<>();
         if (hints.whyNone() != null) {
