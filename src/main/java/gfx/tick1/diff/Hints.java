@@ -9,8 +9,9 @@ import java.util.Map;
  * The hints of {@code tick1 diff}: only facts that a probe of the student's own methods showed.
  * The two files are compiled with the starter kit and their {@code intersectionWith} and
  * {@code illuminate} are called in the sandbox on the fixed inputs {@code grade} uses (a file not
- * given is the starter kit's, and its method's probes are not reported); each failed probe of a given file's method is one hint. When the probes
- * cannot run (no sandbox, the files do not compile), there are no hints, and one line says why.
+ * given is the starter kit's, and its method's probes are not reported); each failed probe of a
+ * given file's method is one hint. When the probes cannot run (no sandbox, the files do not
+ * compile), there are no hints, and one line says why.
  */
 final class Hints {
 
