@@ -5,6 +5,7 @@ import gfx.tick1.cli.ExitStatuses;
 import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.io.IoErrors;
+import gfx.tick1.io.ProgressLine;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.scene.Intersection;
 import gfx.tick1.scene.Scene;
@@ -17,6 +18,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
@@ -213,11 +215,14 @@ public final class RenderCommand implements Callable<Integer> {
 
     private BufferedImage render(Scene scene, PrintWriter err) {
         FastRenderer renderer = new FastRenderer(width, height, new SamplePattern(samples), intersection);
-        Progress progress = new Progress(err, height, !quiet && System.console() != null);
+        // The starter code printed a line per row; this shows one line, once a render takes long enough to wonder.
+        ProgressLine progress = new ProgressLine(err, !quiet && System.console() != null, Duration.ofMillis(500),
+                Duration.ofMillis(100));
         ForkJoinPool pool = new ForkJoinPool(threadCount());
         try {
             // A parallel stream started inside a pool's task runs on that pool's threads.
-            return pool.submit(() -> renderer.render(scene, progress)).get();
+            return pool.submit(() -> renderer.render(scene,
+                    rowsDone -> progress.show(String.format("rendering: %3d%%", 100L * rowsDone / height)))).get();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new IllegalStateException("interrupted while rendering", e);

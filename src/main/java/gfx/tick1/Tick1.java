@@ -1,6 +1,7 @@
 package gfx.tick1;
 
 import gfx.tick1.bench.BenchCommand;
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatuses;
 import gfx.tick1.cli.WholeTokenHelp;
 import gfx.tick1.compare.CompareCommand;
@@ -111,6 +112,11 @@ public final class Tick1 {
         });
         commandLine.setExecutionExceptionHandler((e, cl, parseResult) -> {
             PrintWriter err = cl.getErr();
+            if (e instanceof CommandFailure failure) {
+                err.println(cl.getCommandSpec().qualifiedName() + ": " + failure.getMessage());
+                err.flush();
+                return failure.status();
+            }
             for (Throwable cause = e; cause != null; cause = cause.getCause()) {
                 if (cause instanceof OutOfMemoryError) {
                     return outOfMemory(err);

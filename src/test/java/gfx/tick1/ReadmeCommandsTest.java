@@ -11,6 +11,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Set;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
@@ -24,7 +25,8 @@ class ReadmeCommandsTest {
 
     private static final List<Path> PAGES = List.of(Path.of("README.md"), Path.of("CONTRIBUTING.md"));
     /** Tasks Gradle's java and application plugins make, which build.gradle does not name. */
-    private static final Set<String> PLUGIN_TASKS = Set.of("test", "installDist", "build", "compileJava");
+    private static final Set<String> PLUGIN_TASKS = Set.of("test", "check", "installDist", "build",
+            "compileJava");
 
     /** The lines of the pages' fenced code blocks, without a trailing {@code # comment}. */
     static List<String> commandLines() throws IOException {
@@ -66,5 +68,14 @@ class ReadmeCommandsTest {
                 .findFirst().orElse("");
         assertThat(PLUGIN_TASKS.contains(task) || build.contains("registerTask('" + task + "'"))
                 .as("%s: task %s", command, task).isTrue();
+    }
+
+    @Test
+    void ciRunsTheReadmesTestCommand() throws IOException {
+        String readme = Files.readString(Path.of("README.md"));
+        String command = readme.substring(readme.indexOf("## Test")).split("```sh\n", 2)[1].split("\n", 2)[0];
+        String ci = Files.readString(Path.of(".ci/run"));
+
+        assertThat(ci).as(".ci/run's test command").contains("TEST_CMD=(" + command + ")");
     }
 }

@@ -1,5 +1,6 @@
 package gfx.tick1.compare;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngInput;
@@ -54,7 +55,6 @@ public final class CompareCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
         if (tolerance < 0 || tolerance > 255) {
             // Reported and answered with exit status 2 like any other usage error (the start-up's handler).
             throw new ParameterException(spec.commandLine(), "--tolerance " + tolerance + ": must be from 0 to 255");
@@ -65,16 +65,15 @@ public final class CompareCommand implements Callable<Integer> {
             BufferedImage actual = PngInput.read(actualFile);
             difference = ImageDifference.between(expected, actual);
         } catch (IOException | IllegalArgumentException e) {
-            err.println("tick1 compare: " + e.getMessage());
-            return EXIT_CANNOT_COMPARE;
+            throw new CommandFailure(EXIT_CANNOT_COMPARE, e.getMessage());
         }
         print(difference, out);
         if (heatMapFile != null) {
             try {
                 PngOutput.write(difference.heatMapWithLegend(), heatMapFile);
             } catch (IOException e) {
-                err.println("tick1 compare: " + heatMapFile + ": cannot write the heat map: " + IoErrors.reason(e));
-                return EXIT_CANNOT_WRITE;
+                throw new CommandFailure(EXIT_CANNOT_WRITE, heatMapFile + ": cannot write the heat map: "
+                        + IoErrors.reason(e));
             }
             out.println("heat map: " + heatMapFile);
         }

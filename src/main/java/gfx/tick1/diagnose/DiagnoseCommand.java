@@ -1,5 +1,6 @@
 package gfx.tick1.diagnose;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.image.PngInput;
 import gfx.tick1.scene.BundledScenes;
@@ -67,7 +68,6 @@ public final class DiagnoseCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
         BufferedImage image;
         Map<String, Scene> scenes = new LinkedHashMap<>();
         try {
@@ -78,8 +78,7 @@ public final class DiagnoseCommand implements Callable<Integer> {
                 scenes.put(sceneFile.toString(), new SceneLoader(sceneFile, false).getScene());
             }
         } catch (IOException | SceneException e) {
-            err.println("tick1 diagnose: " + e.getMessage());
-            return EXIT_CANNOT_DIAGNOSE;
+            throw new CommandFailure(EXIT_CANNOT_DIAGNOSE, e.getMessage());
         }
         Diagnoser.SceneDiagnosis result;
         try {
@@ -91,14 +90,12 @@ public final class DiagnoseCommand implements Callable<Integer> {
                             diagnoser.diagnose(image, scenes.get(sceneFile.toString()))))
                     : diagnoser.recognise(image, scenes);
             if (found.isEmpty()) {
-                err.println("tick1 diagnose: " + imageFile + ": not a render of "
+                throw new CommandFailure(EXIT_CANNOT_DIAGNOSE, imageFile + ": not a render of "
                         + String.join(" or ", BundledScenes.STUDENT_SCENES) + "; give the scene with --scene");
-                return EXIT_CANNOT_DIAGNOSE;
             }
             result = found.get();
         } catch (IllegalArgumentException e) {
-            err.println("tick1 diagnose: --border " + border + ": " + e.getMessage());
-            return EXIT_CANNOT_DIAGNOSE;
+            throw new CommandFailure(EXIT_CANNOT_DIAGNOSE, "--border " + border + ": " + e.getMessage());
         }
         out.println(imageFile + " (" + image.getWidth() + " x " + image.getHeight() + ") as a render of "
                 + result.scene() + (border > 0 ? ", inside a " + border + "-pixel border" : "") + ":");

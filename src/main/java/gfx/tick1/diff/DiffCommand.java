@@ -1,5 +1,6 @@
 package gfx.tick1.diff;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.io.IoErrors;
 import gfx.tick1.starter.StarterKit;
@@ -88,7 +89,6 @@ public final class DiffCommand implements Callable<Integer> {
 
     private int compareFiles() {
         PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
         List<JavaMembers> theirs = new ArrayList<>();
         Set<String> classes = new LinkedHashSet<>();
         for (Path file : files) {
@@ -96,26 +96,21 @@ public final class DiffCommand implements Callable<Integer> {
                 JavaMembers parsed = JavaMembers.parse(file.toString(), read(file),
                         className -> StarterKit.STUDENT_CLASSES.contains(className) ? ours(className) : null);
                 if (!StarterKit.STUDENT_CLASSES.contains(parsed.className())) {
-                    err.println("tick1 diff: " + file + ": class " + parsed.className()
+                    throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": class " + parsed.className()
                             + ": expected Sphere or Renderer, the two classes of the tick");
-                    return EXIT_CANNOT_COMPARE;
                 }
                 if (!classes.add(parsed.className())) {
-                    err.println("tick1 diff: " + file + ": a second " + parsed.className()
+                    throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": a second " + parsed.className()
                             + " class: give one Sphere.java and one Renderer.java");
-                    return EXIT_CANNOT_COMPARE;
                 }
                 theirs.add(parsed);
             } catch (JavaMembers.ParseException e) {
-                err.println("tick1 diff: " + e.getMessage());
-                return EXIT_CANNOT_COMPARE;
+                throw new CommandFailure(EXIT_CANNOT_COMPARE, e.getMessage());
             } catch (IOException e) {
-                err.println("tick1 diff: " + file + ": " + IoErrors.reason(e));
-                return EXIT_CANNOT_COMPARE;
+                throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": " + IoErrors.reason(e));
             } catch (StackOverflowError e) {
-                err.println("tick1 diff: " + file + ": expressions or blocks nested too deeply to compare; "
-                        + "expected code nested at most a few thousand deep");
-                return EXIT_CANNOT_COMPARE;
+                throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": expressions or blocks nested too deeply to "
+                        + "compare; expected code nested at most a few thousand deep");
             }
         }
         Colours colours = new Colours(CommandLine.Help.Ansi.AUTO.enabled());

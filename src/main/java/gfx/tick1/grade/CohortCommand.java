@@ -1,5 +1,6 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.grade.cohort.CohortGrade;
 import gfx.tick1.grade.cohort.ResultStore;
 import gfx.tick1.grade.grading.Grading;
@@ -16,6 +17,7 @@ import gfx.tick1.grade.sandbox.ChildOutput;
 import gfx.tick1.grade.sandbox.Sandbox;
 import gfx.tick1.grade.sandbox.WorkFolder;
 import gfx.tick1.io.IoErrors;
+import gfx.tick1.io.OnExit;
 import gfx.tick1.scene.SceneException;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -35,13 +37,14 @@ final class CohortCommand {
     /** The folder inside the report folder where each result is kept as soon as it is known. */
     static final String STATE_FOLDER = "state";
 
-    /** The gradebook in the report folder, in the form of Moodle's grading worksheet. */
-    static final String GRADES = "grades.csv";
-
     private final GradeCommand options;
     private final Sandbox sandbox;
     private final PrintWriter out;
     private final PrintWriter err;
+    /** The worksheet given, read and checked before anything is graded; null without --worksheet. */
+    private Worksheet worksheet;
+    /** The grade of a pass: --max-grade, else the worksheet's Maximum Grade, else 1. */
+    private double maxGrade;
 
     CohortCommand(GradeCommand options, Sandbox sandbox, PrintWriter out, PrintWriter err) {
         this.options = options;
@@ -53,94 +56,104 @@ final class CohortCommand {
     int call() throws IOException, InterruptedException {
         List<Submission> submissions;
         try {
+            // The worksheet first: a bad one must stop the grade before anything is graded or written.
+            readWorksheet();
             submissions = withoutOwnFiles(Submissions.read(options.submissions()));
-            if (options.worksheet() != null && Files.isDirectory(options.worksheet())) {
-                throw new IOException(options.worksheet() + ": a folder, not a worksheet (--worksheet wants the "
-                        + "CSV file downloaded from the assignment)");
-            }
-            if (options.worksheet() != null && !Files.isRegularFile(options.worksheet())) {
-                throw new java.nio.file.NoSuchFileException(options.worksheet().toString());
-            }
         } catch (IOException e) {
-            err.println("tick1 grade: " + IoErrors.describe(e));
-            return GradeCommand.EXIT_USAGE;
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, IoErrors.describe(e));
         }
+        Submissions.sharedIds(submissions).forEach((id, folders) -> err.println("tick1 grade: participant "
+                + printable(id) + " has " + folders.size() + " folders in the download (" + printable(String.join(
+                        ", ", folders.subList(0, Math.min(3, folders.size())))) + (folders.size() > 3 ? ", ..." : "")
+                + "): each fails ungraded until one is left"));
         Path work = Files.createTempDirectory("tick1-grade");
         AtomicReference<CohortGrade> running = new AtomicReference<>();
-        // Ctrl-C or SIGTERM: stop the students' processes and delete the work folder. Finished
-        // results are in the store already; the one being stored is renamed into place whole or
-        // not at all.
-        Thread cleanUp = new Thread(() -> {
-            CohortGrade cohort = running.get();
-            if (cohort != null) {
-                cohort.stop();
-            }
-            GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
-        });
-        Runtime.getRuntime().addShutdownHook(cleanUp);
+        // At the end, or on Ctrl-C or SIGTERM: stop the students' processes and delete the work
+        // folder. Finished results are in the store already; the one being stored is renamed into
+        // place whole or not at all.
+        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> stop(running, work));
         try {
-            Grading grading;
-            ResultStore store;
-            try {
-                sandbox.checkReachable(work);
-                grading = Grading.prepare(Files.createDirectory(work.resolve("grading")), options.scenesFolder(),
-                        options.limits());
-            } catch (SceneException e) {
-                err.println("tick1 grade: " + e.getMessage());
-                return GradeCommand.EXIT_USAGE;
-            } catch (IOException e) {
-                err.println("tick1 grade: " + IoErrors.describe(e));
-                return GradeCommand.EXIT_USAGE;
-            }
-            try {
-                store = new ResultStore(Files.createDirectories(options.reportFolder()).resolve(STATE_FOLDER));
-            } catch (IOException e) {
-                err.println("tick1 grade: " + options.reportFolder() + ": cannot write the report: "
-                        + IoErrors.describe(e));
-                return GradeCommand.EXIT_CANNOT_WRITE;
-            }
-            CohortGrade cohort = new CohortGrade(grading, sandbox, options.jobs(), store, err,
-                    System.console() != null);
-            running.set(cohort);
-            CohortGrade.Done done = cohort.run(submissions, work);
-            if (cohort.stopped()) {
-                // Stopped part way: the report of the last whole run stays as it was.
-                err.println("tick1 grade: stopped; the results finished so far are kept in "
-                        + options.reportFolder().resolve(STATE_FOLDER) + ": run the same command again to grade "
-                        + "the rest and write the report");
-                return GradeCommand.EXIT_STOPPED;
-            }
-            return report(done);
+            return gradeAndReport(submissions, work, running);
         } finally {
-            CohortGrade cohort = running.getAndSet(null);
-            if (cohort != null) {
-                cohort.stop();
-            }
-            GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
-            try {
-                Runtime.getRuntime().removeShutdownHook(cleanUp);
-            } catch (IllegalStateException e) {
-                // The JVM is shutting down: the hook runs (or ran) anyway.
-            }
+            cleanUp.now();
         }
+    }
+
+    /**
+     * Reads and checks --worksheet, and settles the grade of a pass: a --max-grade that differs from
+     * the worksheet's Maximum Grade is refused, since Moodle would take its grades on the wrong scale.
+     */
+    private void readWorksheet() throws CohortInputException {
+        Double given = options.maxGrade();
+        Double sheet = null;
+        if (options.worksheet() != null) {
+            worksheet = Worksheet.read(options.worksheet());
+            sheet = worksheet.maximumGrade();
+        }
+        if (given != null && sheet != null && Math.abs(given - sheet) > 1e-9) {
+            throw new CohortInputException("--max-grade " + Worksheet.grade(given) + " differs from the Maximum Grade "
+                    + Worksheet.grade(sheet) + " of " + options.worksheet() + ": leave --max-grade out to grade out "
+                    + "of " + Worksheet.grade(sheet) + ", or change the assignment's maximum in Moodle first");
+        }
+        maxGrade = given != null ? given : sheet != null ? sheet : 1;
+    }
+
+    /** Stops the grade, if it runs, and deletes the work folder; for the shutdown hook and the end alike. */
+    private void stop(AtomicReference<CohortGrade> running, Path work) {
+        CohortGrade cohort = running.getAndSet(null);
+        if (cohort != null) {
+            cohort.stop();
+        }
+        GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
+    }
+
+    /** Prepares the grading and the store, grades every submission, and writes the report. */
+    private int gradeAndReport(List<Submission> submissions, Path work, AtomicReference<CohortGrade> running)
+            throws IOException, InterruptedException {
+        Grading grading;
+        ResultStore store;
+        try {
+            sandbox.checkReachable(work);
+            grading = Grading.prepare(Files.createDirectory(work.resolve("grading")), options.scenesFolder(),
+                    options.limits());
+        } catch (SceneException e) {
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());
+        } catch (IOException e) {
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, IoErrors.describe(e));
+        }
+        try {
+            store = new ResultStore(Files.createDirectories(options.reportFolder()).resolve(STATE_FOLDER));
+        } catch (IOException e) {
+            throw new CommandFailure(GradeCommand.EXIT_CANNOT_WRITE, options.reportFolder()
+                    + ": cannot write the report: " + IoErrors.describe(e));
+        }
+        CohortGrade cohort = new CohortGrade(grading, sandbox, options.jobs(), store, err, System.console() != null);
+        running.set(cohort);
+        CohortGrade.Done done = cohort.run(submissions, work);
+        if (cohort.stopped()) {
+            // Stopped part way: the report of the last whole run stays as it was.
+            throw new CommandFailure(GradeCommand.EXIT_STOPPED, "stopped; the results finished so far are kept in "
+                    + options.reportFolder().resolve(STATE_FOLDER) + ": run the same command again to grade "
+                    + "the rest and write the report");
+        }
+        return report(done);
     }
 
     /** Writes grades.csv, the feedback folders and index.html from every result, and says what was done. */
     private int report(CohortGrade.Done done) {
         Path report = options.reportFolder();
-        List<StudentResult> results = CohortOutputs.withPlainFolders(done.results());
+        List<StudentResult> results = CohortOutputs.forReport(done.results());
         try {
             CohortOutputs.placeImages(results, done.images(), report);
             // The gradebook first: the cohort's page links to it when it is there.
             writeGrades(results, report);
             CohortReport.write(report, results,
-                    result -> Worksheet.grade(CohortOutputs.grade(result, options.maxGrade(), options.perScene())));
+                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())));
         } catch (CohortInputException e) {
-            err.println("tick1 grade: " + e.getMessage());
-            return GradeCommand.EXIT_USAGE;
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());
         } catch (IOException e) {
-            err.println("tick1 grade: " + report + ": cannot write the report: " + IoErrors.describe(e));
-            return GradeCommand.EXIT_CANNOT_WRITE;
+            throw new CommandFailure(GradeCommand.EXIT_CANNOT_WRITE, report + ": cannot write the report: "
+                    + IoErrors.describe(e));
         }
         long passed = results.stream().filter(StudentResult::passed).count();
         // A submission with a problem (a missing file, ...) is never run, so neither now nor earlier.
@@ -149,7 +162,7 @@ final class CohortCommand {
                 + (results.size() - done.stored() - problems) + " now, " + done.stored() + " from earlier runs"
                 + (problems > 0 ? ", " + problems + " not run: a problem with their files" : "") + "): "
                 + passed + " passed, " + (results.size() - passed) + " failed.");
-        out.println("Grades: " + report.resolve(GRADES) + "; report: " + report.resolve("index.html"));
+        out.println("Grades: " + report.resolve(ReportFiles.GRADES) + "; report: " + report.resolve("index.html"));
         for (String folder : done.ungraded()) {
             err.println("tick1 grade: " + printable(folder) + ": not graded: its images could not be stored in "
                     + report);
@@ -185,15 +198,15 @@ final class CohortCommand {
     private void writeGrades(List<StudentResult> results, Path report) throws IOException {
         List<Worksheet.Mark> marks = results.stream()
                 .map(result -> Worksheet.Mark.of(result,
-                        CohortOutputs.grade(result, options.maxGrade(), options.perScene())))
+                        CohortOutputs.grade(result, maxGrade, options.perScene())))
                 .toList();
-        if (options.worksheet() == null) {
-            byte[] fresh = Worksheet.fresh(marks, options.maxGrade(), ZonedDateTime.now());
-            ReportFiles.write(report.resolve(GRADES), out -> out.write(fresh));
+        if (worksheet == null) {
+            byte[] fresh = Worksheet.fresh(marks, maxGrade, ZonedDateTime.now());
+            ReportFiles.write(report.resolve(ReportFiles.GRADES), out -> out.write(fresh));
             return;
         }
-        Worksheet.Filled filled = Worksheet.fill(options.worksheet(), marks);
-        ReportFiles.write(report.resolve(GRADES), out -> out.write(filled.bytes()));
+        Worksheet.Filled filled = worksheet.fill(marks);
+        ReportFiles.write(report.resolve(ReportFiles.GRADES), out -> out.write(filled.bytes()));
         for (String student : filled.withoutSubmission()) {
             err.println("tick1 grade: " + options.worksheet() + ": " + printable(student) + " has no submission");
         }

@@ -1,15 +1,16 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.grade.grading.Grading;
 import gfx.tick1.grade.grading.ReferenceChoice;
 import gfx.tick1.grade.grading.SubmissionGrader;
-import gfx.tick1.grade.harness.StudentFile;
 import gfx.tick1.grade.model.Submission;
 import gfx.tick1.grade.sandbox.Sandbox;
 import gfx.tick1.grade.sandbox.StudentProcess;
 import gfx.tick1.grade.sandbox.WorkFolder;
 import gfx.tick1.io.IoErrors;
+import gfx.tick1.io.OnExit;
 import gfx.tick1.scene.SceneException;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -17,6 +18,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.concurrent.Callable;
+import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -62,35 +64,60 @@ public final class GradeCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Option(names = "--sphere", paramLabel = "Sphere.java", description = "The student's Sphere.java.")
-    private Path sphere;
+    /** Whom to grade: one student's two files, or a cohort's download; picocli allows one or the other. */
+    @ArgGroup(exclusive = true, multiplicity = "0..1")
+    private Target target;
 
-    @Option(names = "--renderer", paramLabel = "Renderer.java", description = "The student's Renderer.java.")
-    private Path renderer;
+    /** One student, or a cohort: the two are exclusive, and the cohort's options go only with the cohort. */
+    static final class Target {
+        @ArgGroup(exclusive = false, multiplicity = "1")
+        private OneStudent student;
 
-    @Option(names = "--submissions", paramLabel = "PATH",
-            description = "Grade a whole cohort instead: PATH is Moodle's \"Download all submissions\" zip, or the "
-                    + "folder it unpacks to, with one folder per student. Writes grades.csv (Moodle's grading "
-                    + "worksheet), index.html and a feedback folder per student into the --report folder.")
-    private Path submissions;
+        @ArgGroup(exclusive = false, multiplicity = "1")
+        private Cohort cohort;
+    }
 
-    @Option(names = "--worksheet", paramLabel = "FILE.csv",
-            description = "With --submissions: the grading worksheet downloaded from the assignment; grades.csv is "
-                    + "that worksheet with the grades and feedback filled in. The file itself is never changed.")
-    private Path worksheet;
+    /** {@code --sphere} and {@code --renderer}, both needed. */
+    static final class OneStudent {
+        @Option(names = "--sphere", paramLabel = "Sphere.java", required = true,
+                description = "The student's Sphere.java.")
+        private Path sphere;
 
-    @Option(names = "--jobs", paramLabel = "N",
-            description = "With --submissions: how many submissions to grade at once, each in a sandbox of its own "
-                    + "(default: the number of cores, ${DEFAULT-VALUE} here).")
-    private int jobs = Runtime.getRuntime().availableProcessors();
+        @Option(names = "--renderer", paramLabel = "Renderer.java", required = true,
+                description = "The student's Renderer.java.")
+        private Path renderer;
+    }
 
-    @Option(names = "--max-grade", paramLabel = "G", defaultValue = "1",
-            description = "With --submissions: the grade for a pass; a fail is 0 (default: ${DEFAULT-VALUE}).")
-    private double maxGrade;
+    /** {@code --submissions} and the options that go only with it. */
+    static final class Cohort {
+        @Option(names = "--submissions", paramLabel = "PATH", required = true,
+                description = "Grade a whole cohort instead: PATH is Moodle's \"Download all submissions\" zip, or "
+                        + "the folder it unpacks to, with one folder per student. Writes grades.csv (Moodle's "
+                        + "grading worksheet), index.html and a feedback folder per student into the --report "
+                        + "folder.")
+        private Path submissions;
 
-    @Option(names = "--per-scene",
-            description = "With --submissions: the grade is the share of scenes passed times --max-grade.")
-    private boolean perScene;
+        @Option(names = "--worksheet", paramLabel = "FILE.csv",
+                description = "With --submissions: the grading worksheet downloaded from the assignment; grades.csv "
+                        + "is that worksheet with the grades and feedback filled in. It is read and checked before "
+                        + "anything is graded; the file itself is never changed.")
+        private Path worksheet;
+
+        @Option(names = "--jobs", paramLabel = "N",
+                description = "With --submissions: how many submissions to grade at once, each in a sandbox of its "
+                        + "own (default: the number of cores).")
+        private int jobs = Runtime.getRuntime().availableProcessors();
+
+        @Option(names = "--max-grade", paramLabel = "G",
+                description = "With --submissions: the grade for a pass; a fail is 0 (default: the worksheet's "
+                        + "Maximum Grade with --worksheet, else 1). A submission whose files could not be used "
+                        + "gets a blank grade, for you to look at first.")
+        private Double maxGrade;
+
+        @Option(names = "--per-scene",
+                description = "With --submissions: the grade is the share of scenes passed times --max-grade.")
+        private boolean perScene;
+    }
 
     @Option(names = "--scenes", paramLabel = "DIR",
             description = "Grade on tick1.xml and every *.xml in DIR instead of tick1.xml and the built-in hidden "
@@ -148,33 +175,26 @@ public final class GradeCommand implements Callable<Integer> {
             try {
                 sandbox = Sandbox.confined();
             } catch (Sandbox.Unavailable e) {
-                err.println("tick1 grade: " + e.getMessage() + ": install the " + Sandbox.PACKAGE
+                throw new CommandFailure(EXIT_USAGE, e.getMessage() + ": install the " + Sandbox.PACKAGE
                         + " package (apt-get install " + Sandbox.PACKAGE + "), or give --no-sandbox to grade "
                         + "without a sandbox");
-                return EXIT_USAGE;
             }
         }
-        if (submissions != null) {
+        if (target.cohort != null) {
             return new CohortCommand(this, sandbox, out, err).call();
         }
         Path work = Files.createTempDirectory("tick1-grade");
         StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), memoryMegabytes);
-        // Ctrl-C or SIGTERM: stop the student's process and delete the work folder, scenes and all.
-        Thread cleanUp = new Thread(() -> {
+        // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
+        // scenes and all.
+        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
             process.stop();
             reportUndeleted(WorkFolder.delete(work), err);
         });
-        Runtime.getRuntime().addShutdownHook(cleanUp);
         try {
             return grade(work, sandbox, process, out, err);
         } finally {
-            process.stop();
-            reportUndeleted(WorkFolder.delete(work), err);
-            try {
-                Runtime.getRuntime().removeShutdownHook(cleanUp);
-            } catch (IllegalStateException e) {
-                // The JVM is shutting down: the hook runs (or ran) anyway.
-            }
+            cleanUp.now();
         }
     }
 
@@ -186,17 +206,11 @@ public final class GradeCommand implements Callable<Integer> {
     }
 
     private String checkOptions() {
-        if (submissions == null && (sphere == null || renderer == null)) {
+        if (target == null) {
             return "give --sphere and --renderer (one student), or --submissions (a cohort)";
         }
-        if (submissions != null && (sphere != null || renderer != null)) {
-            return "--submissions grades a cohort: give it without --sphere and --renderer";
-        }
-        if (submissions == null && (worksheet != null || perScene
-                || spec.commandLine().getParseResult().hasMatchedOption("--jobs")
-                || spec.commandLine().getParseResult().hasMatchedOption("--max-grade"))) {
-            return "--worksheet, --jobs, --max-grade and --per-scene go with --submissions";
-        }
+        int jobs = jobs();
+        double maxGrade = maxGrade() == null ? 1 : maxGrade();
         if (jobs < 1 || jobs > Sandbox.MOST_JOBS) {
             return "--jobs " + jobs + ": must be from 1 to " + Sandbox.MOST_JOBS;
         }
@@ -223,14 +237,12 @@ public final class GradeCommand implements Callable<Integer> {
             sandbox.checkReachable(work);
             grading = Grading.prepare(work, scenesFolder, limits());
             grading.copyScenes(work);
-            submission = new Submission("", "", "", studentFile(sphere), studentFile(renderer), null);
+            submission = StudentFiles.of(target.student.sphere, target.student.renderer, err);
             WorkFolder.removeEarlierReport(reportFolder);
         } catch (SceneException e) {
-            err.println("tick1 grade: " + e.getMessage());
-            return EXIT_USAGE;
+            throw new CommandFailure(EXIT_USAGE, e.getMessage());
         } catch (IOException e) {
-            err.println("tick1 grade: " + IoErrors.describe(e));
-            return EXIT_USAGE;
+            throw new CommandFailure(EXIT_USAGE, IoErrors.describe(e));
         }
         StudentProcess.writeHarness(Files.createDirectory(work.resolve("harness")));
         SubmissionGrader.Graded graded = new SubmissionGrader(grading, sandbox, process, work)
@@ -250,23 +262,25 @@ public final class GradeCommand implements Callable<Integer> {
     }
 
     Path submissions() {
-        return submissions;
+        return target.cohort.submissions;
     }
 
     Path worksheet() {
-        return worksheet;
+        return target.cohort == null ? null : target.cohort.worksheet;
     }
 
     int jobs() {
-        return jobs;
+        return target == null || target.cohort == null ? Runtime.getRuntime().availableProcessors()
+                : target.cohort.jobs;
     }
 
-    double maxGrade() {
-        return maxGrade;
+    /** The --max-grade given, or null: the worksheet's maximum, else 1. */
+    Double maxGrade() {
+        return target == null || target.cohort == null ? null : target.cohort.maxGrade;
     }
 
     boolean perScene() {
-        return perScene;
+        return target.cohort.perScene;
     }
 
     /** The limits and sizes of this grade. */
@@ -274,12 +288,4 @@ public final class GradeCommand implements Callable<Integer> {
         return new Grading.Limits(width, height, Duration.ofMillis(Math.round(timeLimitSeconds * 1000)),
                 memoryMegabytes, referenceChoice);
     }
-
-    /** The student's file as given, read and checked as UTF-8 here, so that a file that is not is exit status 2. */
-    private static Submission.SourceFile studentFile(Path file) throws IOException {
-        byte[] content = Files.readAllBytes(file);
-        StudentFile.decode(file.toString(), content);
-        return new Submission.SourceFile(file.toString(), content);
-    }
-
 }

@@ -1,17 +1,14 @@
 package gfx.tick1.image;
 
+import gfx.tick1.io.AtomicFile;
 import gfx.tick1.io.IoErrors;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.AccessDeniedException;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.attribute.FileAttribute;
-import java.nio.file.attribute.PosixFilePermissions;
 import javax.imageio.IIOException;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
@@ -23,7 +20,7 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
 /**
  * Writes PNG files through javax.imageio's PNG writer, so that a failure never leaves a
  * half-written image: the PNG goes to a temporary file beside the target and is renamed over it
- * only once complete. A rename within one directory is atomic on POSIX file systems, so readers
+ * only once complete ({@link AtomicFile}). A rename within one directory is atomic on POSIX file systems, so readers
  * see the old file or the new one.
  *
  * <p>If the write fails (a full disk, say) the temporary file is deleted and the exception
@@ -79,55 +76,16 @@ public final class PngOutput {
         if (!Files.isDirectory(directory)) {
             throw new IOException(directory + " is not a directory");
         }
-        Path temporary = createTemporary(directory, absolute.getFileName().toString());
-        Thread deleteOnShutdown = new Thread(() -> deleteQuietly(temporary), "tick1-delete-temporary-png");
-        Runtime.getRuntime().addShutdownHook(deleteOnShutdown);
-        try {
-            try (OutputStream out = Files.newOutputStream(temporary)) {
-                encoder.encode(image, out);
-            }
-            try {
-                Files.move(temporary, absolute, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temporary, absolute, StandardCopyOption.REPLACE_EXISTING);
-            }
-        } finally {
-            deleteQuietly(temporary);
-            try {
-                Runtime.getRuntime().removeShutdownHook(deleteOnShutdown);
-            } catch (IllegalStateException e) {
-                // The JVM is already shutting down: the hook runs anyway, and deletes nothing twice.
-            }
-        }
+        AtomicFile.write(absolute, out -> encoder.encode(image, out), e -> cannotCreate(directory, e));
     }
 
-    /**
-     * An empty hidden file beside the target. Files.createTempFile alone would make it readable
-     * by its owner only, and the finished PNG would keep that; asking for rw-rw-rw- gives what
-     * any new file gets, as the operating system's umask trims it (usually to rw-r--r--).
-     */
-    private static Path createTemporary(Path directory, String name) throws IOException {
-        String prefix = "." + name + ".";
-        try {
-            FileAttribute<?> ordinary =
-                    PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-rw-rw-"));
-            return Files.createTempFile(directory, prefix, ".tmp", ordinary);
-        } catch (UnsupportedOperationException e) {
-            return Files.createTempFile(directory, prefix, ".tmp"); // not a POSIX file system
-        } catch (FileSystemException e) {
-            // Most of these name only the file; say the reason where one is known.
-            boolean known = e instanceof AccessDeniedException || e.getReason() != null;
-            String reason = known ? " (" + IoErrors.reason(e) + ")" : "";
-            throw new IOException("cannot create a file in " + directory + reason);
+    /** Most failures to create a file name only the file; say the reason where one is known. */
+    private static IOException cannotCreate(Path directory, IOException e) {
+        if (!(e instanceof FileSystemException)) {
+            return e;
         }
-    }
-
-    private static void deleteQuietly(Path file) {
-        try {
-            Files.deleteIfExists(file);
-        } catch (IOException e) {
-            // Nothing more can be done; the name starts with a dot and ends in .tmp.
-        }
+        boolean known = e instanceof AccessDeniedException || ((FileSystemException) e).getReason() != null;
+        return new IOException("cannot create a file in " + directory + (known ? " (" + IoErrors.reason(e) + ")" : ""));
     }
 
     /**

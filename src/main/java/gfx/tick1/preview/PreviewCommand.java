@@ -1,5 +1,6 @@
 package gfx.tick1.preview;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.cli.ExitStatuses;
 import gfx.tick1.io.IoErrors;
@@ -95,12 +96,10 @@ public final class PreviewCommand implements Callable<Integer> {
             }
             stopped.await();
         } catch (BindException e) {
-            err.println("tick1 preview: cannot use port " + port + ": " + e.getMessage()
+            throw new CommandFailure(EXIT_USAGE, "cannot use port " + port + ": " + e.getMessage()
                     + " (choose another with --port, or --port 0 for any free one)");
-            return EXIT_USAGE;
         } catch (IOException e) {
-            err.println("tick1 preview: cannot start the server: " + IoErrors.describe(e));
-            return EXIT_USAGE;
+            throw new CommandFailure(EXIT_USAGE, "cannot start the server: " + IoErrors.describe(e));
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

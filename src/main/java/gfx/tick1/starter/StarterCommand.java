@@ -1,5 +1,6 @@
 package gfx.tick1.starter;
 
+import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.io.IoErrors;
 import gfx.tick1.starter.StarterKit.KitFile;
@@ -41,30 +42,28 @@ public final class StarterCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        PrintWriter err = spec.commandLine().getErr();
         List<KitFile> files = StarterKit.files();
         if (!force) {
             for (KitFile file : files) {
                 Path target = folder.resolve(file.path());
                 if (Files.exists(target)) {
-                    err.println("tick1 starter: " + target + " already exists; use --force to overwrite the kit");
-                    return EXIT_WOULD_OVERWRITE;
+                    throw new CommandFailure(EXIT_WOULD_OVERWRITE, target
+                            + " already exists; use --force to overwrite the kit");
                 }
             }
         }
         try {
             Files.createDirectories(folder);
         } catch (IOException e) {
-            err.println("tick1 starter: cannot create the folder " + folder + ": " + IoErrors.reason(e));
-            return EXIT_CANNOT_WRITE;
+            throw new CommandFailure(EXIT_CANNOT_WRITE, "cannot create the folder " + folder + ": "
+                    + IoErrors.reason(e));
         }
         try {
             for (KitFile file : files) {
                 file.writeUnder(folder);
             }
         } catch (IOException e) {
-            err.println("tick1 starter: cannot write the kit: " + IoErrors.describe(e));
-            return EXIT_CANNOT_WRITE;
+            throw new CommandFailure(EXIT_CANNOT_WRITE, "cannot write the kit: " + IoErrors.describe(e));
         }
         PrintWriter out = spec.commandLine().getOut();
         out.println("Wrote the starter kit to " + folder + ":");

@@ -203,7 +203,10 @@ class GradeCohortTest {
             List<String> row = rows.get("Participant " + student.id());
             assertThat(row).as(student.name()).isNotNull();
             assertThat(row.get(1)).isEqualTo(student.name());
-            assertThat(row.get(4)).as(student.name() + ": " + row.get(9)).isEqualTo(student.passes() ? "1.00" : "0.00");
+            // A submission whose files could not be used is never run: its grade is left blank for staff.
+            boolean unusable = student.name().equals("Missing Renderer") || student.name().equals("Two Spheres");
+            assertThat(row.get(4)).as(student.name() + ": " + row.get(9))
+                    .isEqualTo(student.passes() ? "1.00" : unusable ? "" : "0.00");
             assertThat(row.get(5)).isEqualTo("1.00");
         }
     }
@@ -433,6 +436,62 @@ class GradeCohortTest {
         CliRun run = CliRun.of("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
                 "--jobs", "2");
         assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
-        assertThat(run.err()).contains("go with --submissions");
+        // picocli's argument groups say it: the cohort's options need --submissions.
+        assertThat(run.err().lines()).singleElement().asString()
+                .contains("Missing required argument(s): --submissions=PATH");
+    }
+
+    private static final String WORKSHEET_HEADER = String.join(",", Worksheet.HEADER);
+
+    private static String worksheetRow(int id, String name, String maximum) {
+        return "Participant " + id + "," + name + ",,Submitted for grading,," + maximum + ",Yes,,,\r\n";
+    }
+
+    @Test
+    void aBadWorksheetStopsTheGradeBeforeAnythingIsGradedOrWritten(@TempDir Path dir) throws IOException {
+        Path download = moodleZip(dir.resolve("a.zip"), List.of(new Student("Right", 1,
+                files(StudentSolution.correct()), true)));
+        Path report = dir.resolve("report");
+        CliRun run = CliRun.of(gradeArguments(download, report, "--worksheet", download.toString()));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines()).singleElement().asString()
+                .startsWith("tick1 grade: " + download + ": a zip archive, not a worksheet");
+        assertThat(report).doesNotExist();
+    }
+
+    @Test
+    void aMaxGradeOtherThanTheWorksheetsIsOneLineBeforeAnythingIsGraded(@TempDir Path dir) throws IOException {
+        Path download = moodleZip(dir.resolve("a.zip"), List.of(new Student("Right", 1,
+                files(StudentSolution.correct()), true)));
+        Path worksheet = Files.writeString(dir.resolve("w.csv"), WORKSHEET_HEADER + "\r\n"
+                + worksheetRow(1, "Right", "10.00"));
+        Path report = dir.resolve("report");
+        CliRun run = CliRun.of(gradeArguments(download, report, "--worksheet", worksheet.toString(),
+                "--max-grade", "1"));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err()).isEqualTo("tick1 grade: --max-grade 1.00 differs from the Maximum Grade 10.00 of "
+                + worksheet + ": leave --max-grade out to grade out of 10.00, or change the assignment's maximum "
+                + "in Moodle first" + System.lineSeparator());
+        assertThat(report).doesNotExist();
+    }
+
+    @Test
+    void theWorksheetsMaximumIsTheDefaultAndAParticipantInTwoFoldersIsOneLineAndABlankFailingRow(@TempDir Path dir)
+            throws IOException {
+        StudentSolution correct = StudentSolution.correct();
+        Path download = moodleZip(dir.resolve("a.zip"), List.of(new Student("Right", 1, files(correct), true),
+                new Student("Twin", 5, files(correct), false), new Student("Twin Again", 5, files(correct), false)));
+        Path worksheet = Files.writeString(dir.resolve("w.csv"), WORKSHEET_HEADER + "\r\n"
+                + worksheetRow(1, "Right", "10.00") + worksheetRow(5, "Twin", "10.00"));
+        Path report = dir.resolve("report");
+        CliRun run = CliRun.of(gradeArguments(download, report, "--worksheet", worksheet.toString()));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.err().lines().filter(line -> line.contains("participant 5"))).singleElement().asString()
+                .contains("Twin Again_5_assignsubmission_file_", "Twin_5_assignsubmission_file_");
+        Map<String, List<String>> rows = rows(report);
+        assertThat(rows.get("Participant 1")).element(4).isEqualTo("10.00");
+        assertThat(rows.get("Participant 5")).element(4).isEqualTo("");
+        assertThat(rows.get("Participant 5")).element(9).asString().contains("two folders");
+        assertThat(Files.readString(report.resolve("index.html"))).contains("Twin Again", "Twin<");
     }
 }

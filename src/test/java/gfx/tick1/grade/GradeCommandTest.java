@@ -391,4 +391,52 @@ class GradeCommandTest {
             System.clearProperty(property);
         }
     }
+
+    @Test
+    void swappedFilesAreKnownByTheirClassGradedTheRightWayRoundAndSaidSo() throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        List<String> args = new java.util.ArrayList<>(List.of("grade", "--sphere", files[1].toString(),
+                "--renderer", files[0].toString(), "--report", dir.resolve("report").toString()));
+        args.addAll(List.of(SMALL));
+        CliRun run = CliRun.of(args.toArray(String[]::new));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.err()).isEqualTo("tick1 grade: note: " + files[1] + " declares class Renderer and " + files[0]
+                + " class Sphere: graded the other way round" + System.lineSeparator());
+    }
+
+    @Test
+    void aFolderGivenAsAFileIsNamedWithWhatTheOptionWants() throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        CliRun run = CliRun.of("grade", "--sphere", dir.toString(), "--renderer", files[1].toString());
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err()).isEqualTo("tick1 grade: " + dir + ": a folder, not a file: --sphere wants the "
+                + "student's Sphere.java" + System.lineSeparator());
+    }
+
+    @Test
+    void neitherOneStudentNorACohortIsOneLineSayingWhatToGive() {
+        CliRun run = CliRun.of("grade");
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines().findFirst()).hasValueSatisfying(line -> assertThat(line)
+                .contains("give --sphere and --renderer (one student), or --submissions (a cohort)"));
+    }
+
+    @Test
+    void oneFileOfTwoIsOneLineNamingTheOther() throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        CliRun run = CliRun.of("grade", "--sphere", files[0].toString());
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines().findFirst()).hasValueSatisfying(line -> assertThat(line)
+                .contains("--renderer"));
+    }
+
+    @Test
+    void oneStudentAndACohortAtOnceAreRefused() throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        CliRun run = CliRun.of("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
+                "--submissions", dir.toString());
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines().findFirst()).hasValueSatisfying(line -> assertThat(line)
+                .contains("--submissions", "--sphere"));
+    }
 }

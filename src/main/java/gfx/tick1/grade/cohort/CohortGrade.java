@@ -7,12 +7,14 @@ import gfx.tick1.grade.model.Submission;
 import gfx.tick1.grade.sandbox.Sandbox;
 import gfx.tick1.grade.sandbox.StudentProcess;
 import gfx.tick1.grade.sandbox.WorkFolder;
+import gfx.tick1.io.ProgressLine;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.HashMap;
@@ -238,6 +240,7 @@ public final class CohortGrade {
 
     /** One updating line on the terminal: how many are graded, of how many, and how many failed. */
     private final class Progress {
+        private final ProgressLine line = new ProgressLine(err, showProgress, Duration.ZERO, Duration.ZERO);
         private final int total;
         private int done, failed;
 
@@ -248,17 +251,11 @@ public final class CohortGrade {
         synchronized void done(boolean passed) {
             done++;
             failed += passed ? 0 : 1;
-            if (showProgress) {
-                err.printf("\rgrading: %d of %d (%d failed)", done, total, failed);
-                err.flush();
-            }
+            line.show("grading: " + done + " of " + total + " (" + failed + " failed)");
         }
 
-        synchronized void finish() {
-            if (showProgress && done > 0) {
-                err.print("\r" + " ".repeat(48) + "\r");
-                err.flush();
-            }
+        void finish() {
+            line.finish();
         }
     }
 }

@@ -20,7 +20,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
-import java.util.stream.Collectors;
+import org.apache.commons.compress.utils.SeekableInMemoryByteChannel;
 
 /**
  * The intake: a cohort's download from Moodle (the "Download all submissions" zip, or the folder it unpacks to) read
@@ -76,6 +76,12 @@ public final class Submissions {
         if (!Files.isRegularFile(path)) {
             throw new CohortInputException(path + ": no such file or folder");
         }
+        String notZip = FileKind.unlessZip(path);
+        if (notZip != null) {
+            throw new CohortInputException(path + ": " + notZip + ", not a zip: --submissions wants Moodle's "
+                    + "\"Download all submissions\" zip, or the folder it unpacks to (a grading worksheet goes to "
+                    + "--worksheet)");
+        }
         // The zip's entries are read while its channel is open: the submissions are resolved inside.
         try (FileChannel channel = FileChannel.open(path, StandardOpenOption.READ)) {
             return intake.resolveAll(intake.readZip(path, channel));
@@ -91,7 +97,26 @@ public final class Submissions {
         for (Student student : students.values()) {
             submissions.add(resolve(student));
         }
-        return List.copyOf(submissions);
+        Map<String, List<String>> shared = sharedIds(submissions);
+        return submissions.stream().map(submission -> !shared.containsKey(submission.id()) ? submission
+                : new Submission(submission.folder(), submission.id(), submission.fullName(), null, null,
+                        "participant " + submission.id() + " has " + Listing.count(shared.get(submission.id()).size(),
+                                "folder") + " in the download (" + Listing.some(shared.get(submission.id()))
+                        + "): tick1 cannot tell which to grade, so it grades none of them"))
+                .toList();
+    }
+
+    /**
+     * The participant ids that more than one folder of the download carries, each with its folders
+     * in order: Moodle gives a participant one folder, so two mean a download put together by hand,
+     * and grading either would be a guess.
+     */
+    public static Map<String, List<String>> sharedIds(List<Submission> submissions) {
+        Map<String, List<String>> folders = new TreeMap<>();
+        submissions.forEach(submission -> folders.computeIfAbsent(submission.id(), id -> new ArrayList<>())
+                .add(submission.folder()));
+        folders.values().removeIf(list -> list.size() < 2);
+        return folders;
     }
 
     // ---------------------------------------------------------------------------------------------- the zip
@@ -99,7 +124,7 @@ public final class Submissions {
     private Map<String, Student> readZip(Path path, FileChannel channel) throws IOException {
         ZipArchive zip;
         try {
-            zip = ZipArchive.open(ZipArchive.Source.of(channel), limits.maxEntries());
+            zip = ZipArchive.open(channel, limits.maxEntries());
         } catch (ZipArchive.Refused e) {
             throw new CohortInputException(path + ": " + e.getMessage());
         }
@@ -270,6 +295,8 @@ public final class Submissions {
         final List<Candidate> renderers = new ArrayList<>();
         final List<String> refusals = new ArrayList<>();
         final List<String> unopened = new ArrayList<>();
+        /** The .java files of other names, for a message when a file the tick asks for is missing. */
+        final List<String> otherJava = new ArrayList<>();
         int entries;
         int files;
         long read;
@@ -300,6 +327,8 @@ public final class Submissions {
                 (name.equals(SPHERE) ? spheres : renderers).add(new Candidate(path, reader));
             } else if (isZip(name)) {
                 openNested(path, reader);
+            } else if (isJava(name)) {
+                otherJava.add(path);
             }
         }
 
@@ -307,7 +336,7 @@ public final class Submissions {
         private void openNested(String path, Reader reader) throws IOException {
             ZipArchive zip;
             try {
-                zip = ZipArchive.open(ZipArchive.Source.of(charge(reader.read(limits.maxNestedZipBytes()))),
+                zip = ZipArchive.open(new SeekableInMemoryByteChannel(charge(reader.read(limits.maxNestedZipBytes()))),
                         limits.maxEntries());
             } catch (ZipArchive.TooLarge e) {
                 refuse(path + " is larger than " + IntakeLimits.size(limits.maxNestedZipBytes())
@@ -331,6 +360,8 @@ public final class Submissions {
                     same.add(new Candidate(inner, same.isEmpty() ? inflatedNow(zip, entry) : null));
                 } else if (isZip(name)) {
                     unopened.add(inner);
+                } else if (isJava(name)) {
+                    otherJava.add(inner);
                 }
             }
         }
@@ -354,6 +385,10 @@ public final class Submissions {
 
     private static boolean candidate(String fileName) {
         return fileName.equals(SPHERE) || fileName.equals(RENDERER);
+    }
+
+    private static boolean isJava(String fileName) {
+        return fileName.toLowerCase(Locale.ROOT).endsWith(".java");
     }
 
     private static boolean isZip(String fileName) {
@@ -395,8 +430,8 @@ public final class Submissions {
             }
             for (List<Candidate> candidates : List.of(student.spheres, student.renderers)) {
                 if (candidates.size() > 1) {
-                    problems.add("two files could be " + fileName(candidates.get(0)) + ": " + candidates.stream()
-                            .map(Candidate::path).collect(Collectors.joining(" and ")));
+                    problems.add(Listing.count(candidates.size(), "file") + " could be " + fileName(candidates.get(0))
+                            + ": " + Listing.some(candidates.stream().map(Candidate::path).toList()));
                 }
             }
         }
@@ -426,8 +461,13 @@ public final class Submissions {
             return null;
         }
         String line = "no " + String.join(" or ", absent) + " in the submission";
+        if (!student.otherJava.isEmpty()) {
+            line += "; found " + Listing.some(student.otherJava) + ", but the tick's files must be named "
+                    + SPHERE + " and " + RENDERER + " exactly (letter case too)";
+        }
         if (!student.unopened.isEmpty()) {
-            line += " (" + String.join(", ", student.unopened) + " is a zip inside a zip, which tick1 does not open)";
+            line += " (" + Listing.some(student.unopened) + (student.unopened.size() == 1 ? " is a zip" : " are zips")
+                    + " inside a zip, which tick1 does not open)";
         }
         return line;
     }

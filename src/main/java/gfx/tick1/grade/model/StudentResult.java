@@ -2,6 +2,8 @@ package gfx.tick1.grade.model;
 
 import java.time.Duration;
 import java.util.List;
+import java.util.Objects;
+import java.util.stream.Stream;
 
 /**
  * How one submission fared: what the cohort's gradebook, feedback files and report page say of it.
@@ -35,5 +37,10 @@ public record StudentResult(Submission submission, boolean passed, int scenesPas
      */
     public record SceneResult(String name, boolean hidden, boolean passed, List<String> explanation,
             String heatMap, String yours, String expected) {
+
+        /** The images named, in the order a page shows them: heat map, yours, expected; a null is left out. */
+        public List<String> images() {
+            return Stream.of(heatMap, yours, expected).filter(Objects::nonNull).toList();
+        }
     }
 }

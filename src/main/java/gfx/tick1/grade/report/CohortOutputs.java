@@ -24,17 +24,28 @@ public final class CohortOutputs {
     private CohortOutputs() {
     }
 
-    /** The mark for {@code result}: the pass mark, or with {@code perScene} the share of scenes passed of it. */
-    public static double grade(StudentResult result, double maxGrade, boolean perScene) {
+    /** The most characters of a reason the report keeps: a few hundred, whatever the student's files held. */
+    static final int MAX_REASON = 500;
+    /** The most characters of one explanation line, and the most lines of one scene's explanation. */
+    static final int MAX_LINE = 300;
+    static final int MAX_LINES = 60;
+    /** The most characters of a name or id shown. */
+    static final int MAX_NAME = 200;
+
+    /**
+     * The mark for {@code result}: the pass mark, or with {@code perScene} the share of scenes passed of it; null
+     * (a blank Grade, which Moodle's upload skips) for a submission never run because of a problem with its files
+     * (a missing or misnamed file, two candidates, a refused zip, a participant id in two folders): staff look
+     * at those first, and a 0.00 would read as a verdict on code that was never tried.
+     */
+    public static Double grade(StudentResult result, double maxGrade, boolean perScene) {
+        if (result.submission().problem() != null) {
+            return null;
+        }
         if (perScene) {
             return result.scenesTotal() == 0 ? 0 : maxGrade * result.scenesPassed() / result.scenesTotal();
         }
         return result.passed() ? maxGrade : 0;
-    }
-
-    /** The feedback folder of {@code result} in {@code report}: feedback/ and the download's folder name. */
-    static Path feedbackFolder(Path report, StudentResult result) {
-        return report.resolve("feedback").resolve(safe(result.submission().folder()));
     }
 
     /**
@@ -43,11 +54,12 @@ public final class CohortOutputs {
      */
     public static void placeImages(List<StudentResult> results, List<Path> images, Path report) throws IOException {
         for (int i = 0; i < results.size(); i++) {
-            Path folder = Files.createDirectories(feedbackFolder(report, results.get(i)));
+            Path folder = Files.createDirectories(ReportFiles.feedbackFolder(report,
+                    results.get(i).submission().folder()));
             removeImagesNotNamed(folder, results.get(i));
             for (SceneResult scene : results.get(i).scenes()) {
-                for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
-                    if (image != null && images.get(i) != null) {
+                for (String image : scene.images()) {
+                    if (images.get(i) != null) {
                         Path stored = images.get(i).resolve(image);
                         ReportFiles.write(folder.resolve(image), out -> Files.copy(stored, out));
                     }
@@ -63,11 +75,7 @@ public final class CohortOutputs {
     private static void removeImagesNotNamed(Path folder, StudentResult result) throws IOException {
         Set<String> named = new HashSet<>();
         for (SceneResult scene : result.scenes()) {
-            for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
-                if (image != null) {
-                    named.add(image);
-                }
-            }
+            named.addAll(scene.images());
         }
         try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "*.png")) {
             for (Path file : files) {
@@ -79,30 +87,44 @@ public final class CohortOutputs {
     }
 
     /**
-     * The results with each submission's folder name made one plain path element, different from
-     * the others': a name from a download can hold a backslash or a control character, and after
-     * that change two names could meet. Moodle's own names pass unchanged.
+     * The results as the report takes them: each submission's folder name made one plain path
+     * element ({@link ReportFiles#plainName}), different from the others' (a name from a download
+     * can hold a backslash or a control character, and after that change two names could meet;
+     * Moodle's own names pass unchanged), and every text bounded: the reason to {@link #MAX_REASON}
+     * characters, the name and id to {@link #MAX_NAME}, each explanation to {@link #MAX_LINES}
+     * lines of {@link #MAX_LINE}; so no cell, page or file of the report grows with what a
+     * student's archive holds.
      */
-    public static List<StudentResult> withPlainFolders(List<StudentResult> results) {
+    public static List<StudentResult> forReport(List<StudentResult> results) {
         Set<String> taken = new HashSet<>();
         List<StudentResult> plain = new ArrayList<>();
         for (StudentResult result : results) {
             Submission submission = result.submission();
-            String folder = safe(submission.folder());
+            String folder = ReportFiles.plainName(submission.folder());
             for (int n = 2; !taken.add(folder); n++) {
-                folder = safe(submission.folder()) + "_" + n;
+                folder = ReportFiles.plainName(submission.folder()) + "_" + n;
             }
-            plain.add(new StudentResult(new Submission(folder, submission.id(), submission.fullName(),
-                    submission.sphere(), submission.renderer(), submission.problem()), result.passed(),
-                    result.scenesPassed(), result.scenesTotal(), result.diagnosis(), result.reason(), result.scenes(),
-                    result.time()));
+            List<SceneResult> scenes = result.scenes().stream().map(scene -> new SceneResult(
+                    CellText.bounded(scene.name(), MAX_NAME), scene.hidden(), scene.passed(),
+                    bounded(scene.explanation()), scene.heatMap(), scene.yours(), scene.expected())).toList();
+            plain.add(new StudentResult(new Submission(folder, CellText.bounded(submission.id(), MAX_NAME),
+                    CellText.bounded(submission.fullName(), MAX_NAME), submission.sphere(), submission.renderer(),
+                    submission.problem()), result.passed(), result.scenesPassed(), result.scenesTotal(),
+                    CellText.bounded(result.diagnosis(), MAX_NAME), CellText.bounded(result.reason(), MAX_REASON),
+                    scenes, result.time()));
         }
         return plain;
     }
 
-    /** A folder name from the download, as a single safe path element. */
-    static String safe(String folder) {
-        String name = folder.replaceAll("[/\\\\\\x00-\\x1f]", "_");
-        return name.isEmpty() || name.equals(".") || name.equals("..") ? "_" + name : name;
+
+    private static List<String> bounded(List<String> lines) {
+        List<String> kept = new ArrayList<>();
+        for (int i = 0; i < Math.min(lines.size(), MAX_LINES); i++) {
+            kept.add(CellText.bounded(lines.get(i), MAX_LINE));
+        }
+        if (lines.size() > MAX_LINES) {
+            kept.add(String.format(java.util.Locale.ROOT, "(and %,d more lines)", lines.size() - MAX_LINES));
+        }
+        return List.copyOf(kept);
     }
 }

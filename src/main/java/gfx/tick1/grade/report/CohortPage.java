@@ -84,7 +84,8 @@ final class CohortPage {
                 .append("<td data-sort=\"").append(Html.escape(grade)).append("\">").append(Html.escape(grade))
                 .append("</td>")
                 .append("<td>").append(Html.escape(DiagnosisChart.label(result))).append("</td>")
-                .append("<td class=\"reason\">").append(Html.escape(result.reason())).append("</td>")
+                .append("<td class=\"reason\" title=\"").append(Html.escape(CellText.prose(result.reason())))
+                .append("\">").append(Html.escape(CellText.shortReason(result.reason()))).append("</td>")
                 .append("<td class=\"time\" data-sort=\"").append(result.time().toMillis()).append("\">")
                 .append(duration(result.time())).append("</td>");
         List<String> titles = FeedbackPage.sceneTitles(result.scenes());
@@ -96,7 +97,8 @@ final class CohortPage {
                 maps++;
                 thumbnails.append("<a href=\"").append(feedback).append("\"><img class=\"thumbnail\" src=\"")
                         .append(Html.relativeUrl(ReportFiles.FEEDBACK, student.folder(), scene.heatMap()))
-                        .append("\" loading=\"lazy\" decoding=\"async\" width=\"80\" height=\"60\" alt=\"heat map of ")
+                        .append("\" loading=\"lazy\" decoding=\"async\" width=\"160\" height=\"120\" ")
+                        .append("alt=\"heat map of ")
                         .append(Html.escape(titles.get(i))).append("\"></a>");
             }
         }

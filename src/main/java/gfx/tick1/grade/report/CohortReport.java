@@ -28,9 +28,6 @@ public final class CohortReport {
     /** The report folder's page of the whole cohort. */
     public static final String INDEX = "index.html";
 
-    /** The gradebook the grader writes beside the index; the index links to it when it is there. */
-    static final String GRADES = "grades.csv";
-
     private CohortReport() {
     }
 
@@ -59,8 +56,8 @@ public final class CohortReport {
         }
         ReportFiles.write(reportFolder.resolve(FeedbackZip.NAME), out -> FeedbackZip.write(reportFolder, results, out));
         List<String> beside = new ArrayList<>(List.of(FeedbackZip.NAME));
-        if (Files.isRegularFile(reportFolder.resolve(GRADES))) {
-            beside.add(GRADES);
+        if (Files.isRegularFile(reportFolder.resolve(ReportFiles.GRADES))) {
+            beside.add(ReportFiles.GRADES);
         }
         ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grades, beside));
     }
@@ -74,8 +71,8 @@ public final class CohortReport {
                         + (ReportFiles.isPlainName(folder) ? "two results share it" : "not one plain folder name"));
             }
             for (SceneResult scene : result.scenes()) {
-                for (String image : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
-                    if (image != null && (!ReportFiles.isPlainName(image) || isFeedbackFile(image))) {
+                for (String image : scene.images()) {
+                    if (!ReportFiles.isPlainName(image) || isFeedbackFile(image)) {
                         throw new IllegalArgumentException("image \"" + image + "\" of " + folder
                                 + ": not a plain file name of its own");
                     }

@@ -45,15 +45,7 @@ final class FeedbackPage {
 
     /** The images of a scene that a student may see, as file names in the feedback folder. */
     static List<String> images(SceneResult scene) {
-        List<String> files = new ArrayList<>();
-        if (!scene.hidden()) {
-            for (String file : new String[] {scene.heatMap(), scene.yours(), scene.expected()}) {
-                if (file != null) {
-                    files.add(file);
-                }
-            }
-        }
-        return files;
+        return scene.hidden() ? List.of() : scene.images();
     }
 
     /** "passed", or "not passed: 1 of 2 scenes matched" (or the like when nothing could run). */
@@ -96,7 +88,8 @@ final class FeedbackPage {
                 .append("<p class=\"id\">Participant <bdi>").append(Html.escape(student.id())).append("</bdi></p>\n")
                 .append("<p class=\"verdict ").append(result.passed() ? "pass" : "fail").append("\">")
                 .append(Html.escape(capitalised(verdict(result)))).append("</p>\n")
-                .append("<h2>Why</h2>\n<p class=\"reason\">").append(Html.escape(result.reason())).append("</p>\n");
+                .append("<h2>Why</h2>\n<p class=\"reason\">")
+                .append(Html.escape(CellText.prose(result.reason()))).append("</p>\n");
         List<String> rereading = rereading(result);
         if (!rereading.isEmpty()) {
             out.append("<h2>What to reread</h2>\n<ul class=\"reread\">\n");
@@ -149,7 +142,7 @@ final class FeedbackPage {
         StringBuilder out = new StringBuilder(4096);
         out.append("Tick 1 feedback for ").append(Html.plain(student.fullName())).append(" (participant ")
                 .append(Html.plain(student.id())).append(")\n\nResult: ").append(verdict(result))
-                .append("\n\nWhy\n").append(indented(Html.plain(result.reason())));
+                .append("\n\nWhy\n").append(indented(Html.plain(CellText.prose(result.reason()))));
         List<String> rereading = rereading(result);
         if (!rereading.isEmpty()) {
             out.append("\nWhat to reread\n");

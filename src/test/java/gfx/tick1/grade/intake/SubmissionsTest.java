@@ -335,10 +335,19 @@ class SubmissionsTest {
 
     @Test
     void aFileThatIsNotAZipIsOneLineNamingIt() throws IOException {
-        Path download = write("grades.zip", "not a zip at all, though long enough".getBytes(StandardCharsets.UTF_8));
+        Path download = write("grades.zip", "\u0001 binary, not a zip\u0002".repeat(2)
+                .getBytes(StandardCharsets.UTF_8));
 
         assertThatThrownBy(() -> Submissions.read(download)).isInstanceOf(CohortInputException.class)
                 .hasMessage(download + ": not a zip (no end of central directory)");
+    }
+
+    @Test
+    void aTextFileGivenAsTheDownloadIsNamedForWhatItIs() throws IOException {
+        Path download = write("notes.zip", "not a zip at all, though long enough".getBytes(StandardCharsets.UTF_8));
+
+        assertThatThrownBy(() -> Submissions.read(download)).isInstanceOf(CohortInputException.class)
+                .hasMessageStartingWith(download + ": a CSV file, not a zip: --submissions wants");
     }
 
     @Test
@@ -346,5 +355,58 @@ class SubmissionsTest {
         Path download = temp.resolve("nowhere.zip");
 
         assertThatThrownBy(() -> Submissions.read(download)).hasMessage(download + ": no such file or folder");
+    }
+
+    @Test
+    void aNestedZipOfTwentyThousandSpheresGivesAReasonOfAFewHundredCharactersThatCountsTheRest() throws IOException {
+        Object[] spheres = new Object[2 * 20_000];
+        for (int i = 0; i < 20_000; i++) {
+            spheres[2 * i] = "copy" + i + "/Sphere.java";
+            spheres[2 * i + 1] = SPHERE;
+        }
+        byte[] nested = zip(entries(spheres));
+        List<Submission> cohort = readZip(entries("s/work.zip", nested, "s/Renderer.java", RENDERER));
+
+        assertThat(cohort.get(0).problem()).hasSizeLessThan(500)
+                .startsWith("20,000 files could be Sphere.java: work.zip!/copy0/Sphere.java, ")
+                .endsWith(" and 19,997 more");
+    }
+
+    @Test
+    void misnamedFilesAreListedWithTheNamesTheTickExpects() throws IOException {
+        List<Submission> cohort = readZip(entries("s/Sphere (1).java", SPHERE, "s/src/renderer.java", RENDERER));
+
+        assertThat(cohort.get(0).problem()).isEqualTo("no Sphere.java or Renderer.java in the submission; found "
+                + "Sphere (1).java and src/renderer.java, but the tick's files must be named Sphere.java and "
+                + "Renderer.java exactly (letter case too)");
+    }
+
+    @Test
+    void aCsvGivenAsTheDownloadSaysWhatItIsAndWhatWasExpected() throws IOException {
+        Path csv = write("grades.csv", "Identifier,Full name,Grade\r\nParticipant 1,A,1.00\r\n"
+                .getBytes(StandardCharsets.UTF_8));
+
+        assertThatThrownBy(() -> Submissions.read(csv)).isInstanceOf(CohortInputException.class)
+                .hasMessage(csv + ": a CSV file, not a zip: --submissions wants Moodle's \"Download all "
+                        + "submissions\" zip, or the folder it unpacks to (a grading worksheet goes to --worksheet)");
+    }
+
+    @Test
+    void twoFoldersWithOneParticipantIdAreEachAProblemNamingBoth() throws IOException {
+        List<Submission> cohort = readZip(entries("Ann_7_assignsubmission_file_/Sphere.java", SPHERE,
+                "Ann_7_assignsubmission_file_/Renderer.java", RENDERER,
+                "Ann Copy_7_assignsubmission_file_/Sphere.java", SPHERE,
+                "Ann Copy_7_assignsubmission_file_/Renderer.java", RENDERER,
+                "Bob_8_assignsubmission_file_/Sphere.java", SPHERE, "Bob_8_assignsubmission_file_/Renderer.java",
+                RENDERER));
+
+        assertThat(Submissions.sharedIds(cohort)).containsOnlyKeys("7");
+        assertThat(cohort).filteredOn(submission -> submission.id().equals("7")).hasSize(2)
+                .allSatisfy(submission -> assertThat(submission.problem()).isEqualTo("participant 7 has two "
+                        + "folders in the download (Ann Copy_7_assignsubmission_file_ and "
+                        + "Ann_7_assignsubmission_file_): tick1 cannot tell which to grade, so it grades none of "
+                        + "them"));
+        assertThat(cohort).filteredOn(submission -> submission.id().equals("8")).singleElement()
+                .extracting(Submission::problem).isNull();
     }
 }

@@ -329,4 +329,62 @@ class CohortReportTest {
         assertThat(CohortPage.duration(Duration.ofMillis(4200))).isEqualTo("4.2 s");
         assertThat(CohortPage.duration(Duration.ofMillis(61_000))).isEqualTo("1 min 01 s");
     }
+
+    @Test
+    void theReasonColumnIsShortWithoutTheTerminalsPaddingAndTheWholeReasonInItsTitle() throws IOException {
+        String reason = "FAILED: tick1.xml: ( 67.838% of pixels exact,  99.1% within 1 level) " + "word ".repeat(200);
+        Submission wordy = new Submission("Lee_1006_assignsubmission_file_", "1006", "Lee", null, null, null);
+        StudentResult result = new StudentResult(wordy, false, 0, 1, "unrecognised", reason, List.of(),
+                Duration.ofMillis(10));
+        CohortReport.write(report, List.of(result), SmallCohort::grade);
+
+        Matcher cell = Pattern.compile("<td class=\"reason\" title=\"([^\"]*)\">([^<]*)</td>").matcher(index());
+        assertThat(cell.find()).as("a reason cell").isTrue();
+        assertThat(cell.group(2)).startsWith("FAILED: tick1.xml: (67.838% of pixels exact, 99.1% within")
+                .endsWith("\u2026").hasSizeLessThanOrEqualTo(CellText.MAX_SHORT);
+        assertThat(cell.group(1)).doesNotContain("  ", "( ").endsWith("word");
+    }
+
+    @Test
+    void thumbnailsAreLargeEnoughToSeeAMistake() throws IOException {
+        Matcher thumbnail = Pattern.compile("<img class=\"thumbnail\"[^>]* width=\"(\\d+)\"").matcher(index());
+        assertThat(thumbnail.find()).as("a thumbnail").isTrue();
+        assertThat(Integer.parseInt(thumbnail.group(1))).isGreaterThanOrEqualTo(160);
+    }
+
+    @Test
+    void everyTextOfAResultIsBoundedBeforeTheReportWritesIt() {
+        String huge = "Sphere.java and ".repeat(1_000_000);
+        Submission big = new Submission("x_1_assignsubmission_file_", huge, huge, null, null, huge);
+        StudentResult result = new StudentResult(big, false, 0, 1, huge, huge, List.of(new StudentResult.SceneResult(
+                huge, false, false, java.util.Collections.nCopies(20_000, huge), null, null, null)), Duration.ZERO);
+
+        StudentResult bounded = CohortOutputs.forReport(List.of(result)).get(0);
+
+        assertThat(bounded.reason()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_REASON);
+        assertThat(bounded.submission().fullName()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_NAME);
+        assertThat(bounded.submission().id()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_NAME);
+        assertThat(bounded.diagnosis()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_NAME);
+        assertThat(bounded.scenes().get(0).explanation()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_LINES + 1)
+                .allSatisfy(line -> assertThat(line).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_LINE));
+    }
+
+    @Test
+    void aC1ControlOrABidiMarkInAFolderNameBecomesAnUnderscoreInTheFeedbackFolderAndTheZip() throws IOException {
+        Submission csi = new Submission("Eve\u009b2J\u202e_1007_assignsubmission_file_", "1007", "Eve", null, null,
+                "no Sphere.java in the submission");
+        StudentResult result = new StudentResult(csi, false, 0, 0, "missing file", "FAILED", List.of(),
+                Duration.ZERO);
+
+        List<StudentResult> plain = CohortOutputs.forReport(List.of(result));
+        CohortReport.write(report, plain, SmallCohort::grade);
+
+        assertThat(plain.get(0).submission().folder()).isEqualTo("Eve_2J__1007_assignsubmission_file_");
+        assertThat(report.resolve("feedback").resolve("Eve_2J__1007_assignsubmission_file_")).isDirectory();
+        try (ZipInputStream zip = new ZipInputStream(Files.newInputStream(report.resolve("feedback.zip")))) {
+            for (ZipEntry entry = zip.getNextEntry(); entry != null; entry = zip.getNextEntry()) {
+                assertThat(entry.getName()).doesNotContain("\u009b", "\u202e");
+            }
+        }
+    }
 }

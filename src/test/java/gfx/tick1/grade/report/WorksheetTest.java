@@ -110,9 +110,9 @@ class WorksheetTest {
                 + "Grade,Maximum Grade,Grade can be changed,Last modified (submission),Last modified (grade),"
                 + "Feedback comments\r\n"
                 + "Participant 42,Zoë Ünal,,Submitted for grading,1.00,1.00,Yes,,"
-                + "\"Tuesday, 1 December 2026, 6:11 PM\",Passed.\r\n"
+                + "\"Tuesday, 1 December 2026, 6:11 PM +00:00\",Passed.\r\n"
                 + "Participant 43,\"Smith, John\",,Submitted for grading,0.00,1.00,Yes,,"
-                + "\"Tuesday, 1 December 2026, 6:11 PM\",\"It said \"\"hi\"\",\nthen stopped.\"\r\n");
+                + "\"Tuesday, 1 December 2026, 6:11 PM +00:00\",\"It said \"\"hi\"\", then stopped.\"\r\n");
     }
 
     @Test
@@ -183,5 +183,104 @@ class WorksheetTest {
     void aGradedRowTooShortForItsCellsIsOneLine() {
         assertThatThrownBy(() -> Worksheet.fill("w.csv", utf8(HEADER + "\r\nParticipant 101,Zoë\r\n"), MARKS))
                 .hasMessage("w.csv:2: the row has 2 cells, too few for its Grade and Feedback comments columns");
+    }
+
+    /** The cells of a fresh worksheet's rows after the header, read back. */
+    private static List<List<String>> freshRows(List<Worksheet.Mark> marks) throws Exception {
+        byte[] csv = Worksheet.fresh(marks, 1, ZonedDateTime.of(2026, 1, 2, 3, 4, 5, 0, ZoneId.of("UTC")));
+        List<List<String>> rows = new ArrayList<>();
+        for (CsvRecords.Row row : CsvRecords.read(csv).subList(1, marks.size() + 1)) {
+            rows.add(row.cells().stream().map(CsvRecords.Cell::value).toList());
+        }
+        return rows;
+    }
+
+    @Test
+    void aCellThatAStudentNamedLikeAFormulaStartsWithAQuoteAsMoodleWritesIt() throws Exception {
+        List<String> names = List.of("=SUM(1+1)", "@cmd", "+1", "-2+3", "\tTab", "\rReturn");
+        List<Worksheet.Mark> marks = new ArrayList<>();
+        for (int i = 0; i < names.size(); i++) {
+            marks.add(new Worksheet.Mark(String.valueOf(i), names.get(i), 0, names.get(i)));
+        }
+
+        List<List<String>> rows = freshRows(marks);
+
+        for (int i = 0; i < names.size(); i++) {
+            assertThat(rows.get(i).get(1)).as("Full name of " + names.get(i)).isEqualTo("'" + names.get(i));
+            assertThat(rows.get(i).get(9)).as("Feedback of " + names.get(i)).doesNotStartWith("=")
+                    .doesNotStartWith("+").doesNotStartWith("-").doesNotStartWith("@").doesNotStartWith("\t")
+                    .doesNotStartWith("\r");
+        }
+    }
+
+    @Test
+    void aFilledFeedbackCellThatStartsLikeAFormulaStartsWithAQuote() throws Exception {
+        String input = HEADER + "\r\nParticipant 101,Zoë Ünal,,Submitted for grading,,1.00,Yes,,,,Maths\r\n";
+
+        byte[] output = Worksheet.fill("w.csv", utf8(input),
+                List.of(new Worksheet.Mark("101", "Zoë Ünal", 0, "=HYPERLINK(\"http://x\")"))).bytes();
+
+        assertThat(CsvRecords.read(output).get(1).value(9)).isEqualTo("'=HYPERLINK(\"http://x\")");
+    }
+
+    @Test
+    void feedbackIsPlainTextSafeToStoreAsHtmlOnOneLine() throws Exception {
+        List<List<String>> rows = freshRows(List.of(new Worksheet.Mark("1", "A", 0,
+                "src/<img src=x onerror=alert(1)>.zip & more\nsecond line   ( 67.838% of pixels exact)")));
+
+        assertThat(rows.get(0).get(9)).isEqualTo(
+                "src/&lt;img src=x onerror=alert(1)&gt;.zip &amp; more second line (67.838% of pixels exact)");
+    }
+
+    @Test
+    void everyCellIsBoundedWhateverAStudentsArchiveHeld() throws Exception {
+        String huge = "x".repeat(5_000_000);
+
+        List<List<String>> rows = freshRows(List.of(new Worksheet.Mark(huge, huge, 0, huge)));
+
+        assertThat(rows.get(0)).allSatisfy(cell -> assertThat(cell.length()).isLessThanOrEqualTo(CellText.MAX_CELL));
+    }
+
+    @Test
+    void aFreshWorksheetsDateCarriesItsZoneSoMoodleReadsTheRightMoment() {
+        ZonedDateTime gradedAt = ZonedDateTime.of(2026, 7, 1, 18, 11, 0, 0, ZoneId.of("Europe/London"));
+
+        String csv = new String(Worksheet.fresh(MARKS, 1, gradedAt), StandardCharsets.UTF_8);
+
+        assertThat(csv).contains("\"Wednesday, 1 July 2026, 6:11 PM +01:00\"");
+    }
+
+    @Test
+    void aMarkWithoutAGradeLeavesTheGradeCellBlank() throws Exception {
+        List<List<String>> rows = freshRows(List.of(new Worksheet.Mark("1", "A", null, "no Renderer.java")));
+
+        assertThat(rows.get(0).get(4)).isEmpty();
+        assertThat(rows.get(0).get(5)).isEqualTo("1.00");
+    }
+
+    @Test
+    void theWorksheetsMaximumGradeIsTheOneItsRowsShare() throws Exception {
+        String input = HEADER + "\r\nParticipant 1,A,,,,10.00,Yes,,,,x\r\nParticipant 2,B,,,,10.00,Yes,,,,x\r\n";
+
+        assertThat(Worksheet.parse("w.csv", utf8(input)).maximumGrade()).isEqualTo(10.0);
+        assertThat(Worksheet.parse("w.csv", utf8(HEADER + "\r\n")).maximumGrade()).isNull();
+    }
+
+    @Test
+    void rowsWithDifferentMaximumGradesAreOneLine() {
+        String input = HEADER + "\r\nParticipant 1,A,,,,10.00,Yes,,,,x\r\nParticipant 2,B,,,,5.00,Yes,,,,x\r\n";
+
+        assertThatThrownBy(() -> Worksheet.parse("w.csv", utf8(input)).maximumGrade())
+                .hasMessage("w.csv:3: the row's Maximum Grade 5.00 differs from the rows above (10.00)");
+    }
+
+    @Test
+    void aZipGivenAsTheWorksheetSaysWhatItIsAndWhatWasExpected() {
+        byte[] zip = {'P', 'K', 3, 4, 20, 0, 0, 0, (byte) 0x81, 1, 2};
+
+        assertThatThrownBy(() -> Worksheet.parse("download.zip", zip)).isInstanceOf(CohortInputException.class)
+                .hasMessageStartingWith("download.zip: a zip archive, not a worksheet: --worksheet wants the grading "
+                        + "worksheet downloaded from the assignment, as CSV")
+                .hasMessageNotContaining("\n");
     }
 }

@@ -1,0 +1,102 @@
+package gfx.tick1;
+
+import java.io.PrintStream;
+import java.util.HashMap;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import org.junit.platform.engine.TestExecutionResult;
+import org.junit.platform.engine.support.descriptor.ClassSource;
+import org.junit.platform.launcher.TestExecutionListener;
+import org.junit.platform.launcher.TestIdentifier;
+import org.junit.platform.launcher.TestPlan;
+
+/**
+ * One line per test class as it finishes (its tests, failures, skips and seconds), and each failure as it happens,
+ * so that a long test run shows where it is. The JUnit console launcher that runs the tests on Gradle 4.4.1 prints
+ * its tree only once every test has run; Gradle 9's own test logging streams already, so this prints only when the
+ * system property {@code tick1.testProgress} is {@code true}. Found by the JUnit Platform through
+ * {@code META-INF/services}.
+ */
+public final class TestClassProgress implements TestExecutionListener {
+
+    private static final boolean ON = Boolean.getBoolean("tick1.testProgress");
+
+    private final PrintStream out = System.out;
+    private final Map<String, long[]> counts = new HashMap<>();   // class id -> {tests, failed, skipped, start}
+    private TestPlan plan;
+    private int classesDone;
+
+    @Override
+    public void testPlanExecutionStarted(TestPlan testPlan) {
+        plan = testPlan;
+    }
+
+    @Override
+    public void executionStarted(TestIdentifier id) {
+        if (ON && isTestClass(id)) {
+            counts.put(id.getUniqueId(), new long[] {0, 0, 0, System.nanoTime()});
+        }
+    }
+
+    @Override
+    public void executionSkipped(TestIdentifier id, String reason) {
+        if (ON) {
+            testClassOf(id).ifPresent(c -> counts.computeIfAbsent(c.getUniqueId(), k -> new long[4])[2] +=
+                    id.isTest() ? 1 : Math.max(1, plan.getDescendants(id).stream().filter(TestIdentifier::isTest)
+                            .count()));
+            if (isTestClass(id)) {
+                print(id);
+            }
+        }
+    }
+
+    @Override
+    public void executionFinished(TestIdentifier id, TestExecutionResult result) {
+        if (!ON) {
+            return;
+        }
+        boolean failed = result.getStatus() != TestExecutionResult.Status.SUCCESSFUL;
+        if (id.isTest()) {
+            testClassOf(id).ifPresent(c -> {
+                long[] count = counts.computeIfAbsent(c.getUniqueId(), k -> new long[4]);
+                count[0]++;
+                count[1] += failed ? 1 : 0;
+            });
+        }
+        if (failed) {
+            out.println("  FAILED " + id.getDisplayName() + ": " + result.getThrowable()
+                    .map(t -> String.valueOf(t.getMessage()).strip().lines().findFirst().orElse(""))
+                    .orElse(""));
+        }
+        if (isTestClass(id)) {
+            print(id);
+        }
+    }
+
+    private void print(TestIdentifier testClass) {
+        long[] count = counts.getOrDefault(testClass.getUniqueId(), new long[4]);
+        double seconds = count[3] == 0 ? 0 : (System.nanoTime() - count[3]) / 1e9;
+        classesDone++;
+        out.println(String.format(Locale.ROOT, "%4d  %-58s %4d test%s%s%s %7.1f s", classesDone,
+                ((ClassSource) testClass.getSource().orElseThrow()).getClassName().replace("gfx.tick1.", ""),
+                count[0], count[0] == 1 ? " " : "s", count[1] > 0 ? ", " + count[1] + " FAILED" : "",
+                count[2] > 0 ? ", " + count[2] + " skipped" : "", seconds));
+        out.flush();
+    }
+
+    /** A top-level test class (not a nested one, whose tests count for the class around it). */
+    private boolean isTestClass(TestIdentifier id) {
+        return id.getSource().filter(ClassSource.class::isInstance).isPresent()
+                && plan.getParent(id).flatMap(TestIdentifier::getSource).filter(ClassSource.class::isInstance)
+                        .isEmpty();
+    }
+
+    private Optional<TestIdentifier> testClassOf(TestIdentifier id) {
+        Optional<TestIdentifier> at = Optional.of(id);
+        while (at.isPresent() && !isTestClass(at.get())) {
+            at = plan.getParent(at.get());
+        }
+        return at;
+    }
+}
