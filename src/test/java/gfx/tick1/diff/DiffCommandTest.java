@@ -276,8 +276,9 @@ class DiffCommandTest {
     void aMistakeExitsOneNamesItsMethodAndGivesItsProbesHints(Variant mistake, String className, String method,
             String text, String replacement) throws IOException, InterruptedException {
         org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
-        String source = ours(className);
-        assertThat(source).as("the edit's text must be in our " + className).containsOnlyOnce(text);
+        // The student's correct solution (ours is the engine's, in its own packages): it compiles with the kit.
+        String source = Files.readString(Path.of("src/test/resources/students/correct/" + className + ".java"));
+        assertThat(source).as("the edit's text must be in the correct " + className).containsOnlyOnce(text);
         Path file = write(className + ".java", source.replace(text, replacement));
         CliRun run = CliRun.of("diff", file.toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
