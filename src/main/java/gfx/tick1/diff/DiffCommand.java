@@ -2,7 +2,6 @@ package gfx.tick1.diff;
 
 import gfx.tick1.cli.CommandFailure;
 import gfx.tick1.cli.ExitStatus;
-import gfx.tick1.diagnose.Variant;
 import gfx.tick1.io.IoErrors;
 import gfx.tick1.starter.StarterKit;
 import java.io.IOException;
@@ -13,8 +12,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
@@ -30,8 +31,8 @@ import picocli.CommandLine.Spec;
  * sides are parsed; comments, layout, the package, imports and the order of members are set
  * aside, members are matched by signature, a member that means the same as ours (or, where the
  * starter code gives it whole, as the starter's) is left out ({@link SameMeaning}), and what still
- * differs is shown as a unified diff, member by member, with a hint where a change looks like a
- * mistake of the diagnose catalogue.
+ * differs is shown as a unified diff, member by member. The hints after it come only from probes
+ * of the student's own methods, run in the sandbox as {@code grade} runs them ({@link Hints}).
  */
 @Command(name = "diff",
         description = {"Shows where your Sphere.java and Renderer.java differ from ours in meaning.",
@@ -40,9 +41,11 @@ import picocli.CommandLine.Spec;
                     + "field, parentheses that do not change the expression, and the order of declarations that "
                     + "do not depend on each other. Fields, constructors and methods are matched by signature; each "
                     + "one that still differs from ours (and, for what the starter code gives whole, from the "
-                    + "starter's) is shown as a unified diff (- ours, + yours), with a one-line hint and the "
-                    + "handout section to reread where the change looks like a common mistake. A file is "
-                    + "recognised by its class. Colour on a terminal only."})
+                    + "starter's) is shown as a unified diff (- ours, + yours). When something differs and the "
+                    + "files compile, your intersectionWith and illuminate are run in the sandbox on fixed inputs, "
+                    + "and each property they get wrong is a hint with the handout section to reread; without the "
+                    + "sandbox there are no hints, and a line says why. A file is recognised by its class. Colour "
+                    + "on a terminal only."})
 public final class DiffCommand implements Callable<Integer> {
 
     @ExitStatus("nothing differs in meaning (and nothing is printed)")
@@ -119,7 +122,33 @@ public final class DiffCommand implements Callable<Integer> {
             report.forEach(out::println);
             differs |= !report.isEmpty();
         }
+        if (differs) {
+            hints(theirs, out, colours);
+        }
         return differs ? EXIT_DIFFERENT : EXIT_SAME;
+    }
+
+    /** The hints of the probes of their methods, or the one line that says why there are none. */
+    private void hints(List<JavaMembers> theirs, PrintWriter out, Colours colours) {
+        Map<String, String> given = new LinkedHashMap<>(), starter = new LinkedHashMap<>();
+        for (int i = 0; i < theirs.size(); i++) {
+            try {
+                given.put(theirs.get(i).className(), read(files.get(i)));
+            } catch (IOException e) {
+                out.println(colours.yellow("no hints: " + files.get(i) + ": " + IoErrors.reason(e)));
+                return;
+            }
+        }
+        // A file not given is the starter kit's: its methods' probes are not reported.
+        for (String className : StarterKit.STUDENT_CLASSES) {
+            starter.put(className, StarterKit.source(className));
+        }
+        try {
+            Hints.of(given, starter).forEach(line -> out.println(colours.yellow(line)));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            out.println(colours.yellow("no hints: stopped before the probes of your methods had run"));
+        }
     }
 
     /**
@@ -152,45 +181,43 @@ public final class DiffCommand implements Callable<Integer> {
                 lines.add(colours.bold("+++ yours: " + file));
             }
             lines.addAll(member(signature, a.isEmpty() ? " (only in yours)" : b.isEmpty() ? " (missing from yours)"
-                    : "", hunks, b, colours));
+                    : "", hunks, colours));
         }
         return lines;
     }
 
-    /** One member's hunks, each headed by its signature, and the hints on what changed. */
+    /** One member's hunks, each headed by its signature. */
     private static List<String> member(String signature, String note, List<List<LineDiff.Line>> hunks,
-            List<String> theirs, Colours colours) {
+            Colours colours) {
         List<String> lines = new ArrayList<>();
-        List<String> removed = new ArrayList<>(), added = new ArrayList<>();
         for (List<LineDiff.Line> hunk : hunks) {
             lines.add(colours.cyan("@@ " + signature + note + " @@"));
             for (LineDiff.Line line : hunk) {
                 String text = line.kind() + line.text();
                 lines.add(line.kind() == '-' ? colours.red(text) : line.kind() == '+' ? colours.green(text) : text);
-                if (line.kind() == '-') {
-                    removed.add(line.text().strip());
-                } else if (line.kind() == '+') {
-                    added.add(line.text().strip());
-                }
             }
-        }
-        for (Variant hint : Hints.of(new Hints.Change(signature, removed, added, theirs))) {
-            lines.add(colours.yellow("hint: this looks like \"" + hint.title() + "\": reread handout "
-                    + hint.reread() + "."));
         }
         return lines;
     }
 
-    /** Our Sphere.java or Renderer.java, as the build copies their source into the program. */
-    static JavaMembers ours(String className) {
+    /** The source of our Sphere.java or Renderer.java, as the build copies it into the program. */
+    private static String ourSource(String className) {
         String name = className + ".java";
         try (InputStream in = DiffCommand.class.getResourceAsStream("/gfx/tick1/diff/reference/" + name)) {
             if (in == null) {
                 throw new IllegalStateException("the program is missing our " + name + " (a broken build)");
             }
-            return JavaMembers.parse(name, new String(in.readAllBytes(), StandardCharsets.UTF_8));
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
+        }
+    }
+
+    /** Our Sphere.java or Renderer.java, parsed. */
+    static JavaMembers ours(String className) {
+        String name = className + ".java";
+        try {
+            return JavaMembers.parse(name, ourSource(className));
         } catch (JavaMembers.ParseException e) {
             throw new IllegalStateException("our own " + name + " does not parse: " + e.getMessage(), e);
         }

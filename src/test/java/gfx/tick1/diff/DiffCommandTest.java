@@ -208,31 +208,91 @@ class DiffCommandTest {
         assertThat(report).as(String.join("\n", report)).contains("@@ todo() @@").doesNotContain("@@ given() @@");
     }
 
-    /** The kit's files as handed out: the two stages before any code is written. */
+    /** Whether the sandbox, where diff runs the probes that make its hints, can be made here. */
+    private static boolean sandboxHere() throws InterruptedException {
+        try {
+            gfx.tick1.grade.sandbox.Sandbox.confined();
+            return true;
+        } catch (gfx.tick1.grade.sandbox.Sandbox.Unavailable e) {
+            return false;
+        }
+    }
+
+    private static java.util.List<String> hints(CliRun run) {
+        return run.out().lines().filter(line -> line.startsWith("hint: ") || line.startsWith("no hints: ")).toList();
+    }
+
+    /**
+     * The kit's files as handed out: the two stages before any code is written, each named by the
+     * probe of the method the kit leaves to write (the other file is ours).
+     */
     @ParameterizedTest(name = "{0}")
-    @CsvSource({"BACKGROUND_ONLY, Sphere, intersectionWith(Ray)",
-        "FLAT_COLOUR, Renderer, 'illuminate(Scene, Sphere, Vector3, Vector3)'"})
-    void theUntouchedKitExitsOneWithTheStagesHint(Variant stage, String className, String method) throws IOException {
+    @CsvSource({"Sphere, intersectionWith(Ray), 'hint: your intersectionWith finds no hit for a ray that meets a "
+            + "sphere in front of it: reread handout section 4'",
+        "Renderer, 'illuminate(Scene, Sphere, Vector3, Vector3)', 'hint: your illuminate returns the sphere''s colour "
+            + "C_diff whatever the light (the starter code''s placeholder): reread handout section 5'"})
+    void theUntouchedKitExitsOneWithTheHintOfItsProbe(String className, String method, String hint)
+            throws IOException, InterruptedException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
         Path file = write(className + ".java", StarterKit.source(className));
         CliRun run = CliRun.of("diff", file.toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
-        assertThat(run.out()).as(run.transcript()).contains("@@ " + method + " @@",
-                "hint: this looks like \"" + stage.title() + "\": reread handout " + stage.reread() + ".");
-        assertThat(run.out().lines().filter(line -> line.startsWith("hint: "))).as(run.transcript()).hasSize(1);
+        assertThat(run.out()).as(run.transcript()).contains("@@ " + method + " @@");
+        assertThat(hints(run)).as(run.transcript()).hasSize(1).allMatch(line -> line.startsWith(hint));
+    }
+
+    /** Hints rest on probes of the code: a correct solution, however written, gets none. */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("otherCode")
+    void aCorrectSolutionWrittenAnotherWayGetsNoHint(CorrectStyles.Style style)
+            throws IOException, InterruptedException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
+        Path[] files = style.writeTo(dir.resolve("style"));
+        CliRun run = CliRun.of("diff", files[0].toString(), files[1].toString());
+        assertThat(hints(run)).as(run.transcript()).isEmpty();
+    }
+
+    @Test
+    void withoutTheSandboxThereAreNoHintsAndOneLineSaysWhy() throws IOException {
+        Path file = write("Renderer.java", StarterKit.source("Renderer"));
+        String bwrap = System.getProperty("tick1.grade.bwrap");
+        System.setProperty("tick1.grade.bwrap", "/nonexistent/bwrap");
+        try {
+            CliRun run = CliRun.of("diff", file.toString());
+            assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+            assertThat(hints(run)).as(run.transcript()).hasSize(1)
+                    .allMatch(line -> line.startsWith("no hints: they come from running your methods in the sandbox"));
+        } finally {
+            if (bwrap == null) {
+                System.clearProperty("tick1.grade.bwrap");
+            } else {
+                System.setProperty("tick1.grade.bwrap", bwrap);
+            }
+        }
     }
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("mistakes")
-    void aMistakeExitsOneNamesItsMethodAndGivesItsHint(Variant mistake, String className, String method,
-            String text, String replacement) throws IOException {
-        String source = ours(className);
-        assertThat(source).as("the edit's text must be in our " + className).containsOnlyOnce(text);
+    void aMistakeExitsOneNamesItsMethodAndGivesItsProbesHints(Variant mistake, String className, String method,
+            String text, String replacement) throws IOException, InterruptedException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
+        // The student's correct solution (ours is the engine's, in its own packages): it compiles with the kit.
+        String source = Files.readString(Path.of("src/test/resources/students/correct/" + className + ".java"));
+        assertThat(source).as("the edit's text must be in the correct " + className).containsOnlyOnce(text);
         Path file = write(className + ".java", source.replace(text, replacement));
         CliRun run = CliRun.of("diff", file.toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
-        assertThat(run.out()).as(run.transcript()).contains("@@ " + method + " @@",
-                "hint: this looks like \"" + mistake.title() + "\": reread handout " + mistake.reread() + ".");
-        assertThat(run.out().lines().filter(line -> line.startsWith("hint: "))).as(run.transcript()).hasSize(1);
+        assertThat(run.out()).as(run.transcript()).contains("@@ " + method + " @@");
+        // A mistake of render's, or one that changes nothing the method returns (sqrt of a negative
+        // discriminant is NaN, and NaN > 0 is false), gives no hint: no probe fails.
+        if (method.equals(RENDER) || mistake == Variant.UNCHECKED_NEGATIVE_SQUARE_ROOT) {
+            assertThat(hints(run)).as(run.transcript()).isEmpty();
+        } else {
+            String called = className.equals("Sphere") ? "intersectionWith" : "illuminate";
+            assertThat(hints(run)).as(run.transcript()).isNotEmpty().allMatch(line -> line.startsWith("hint: ")
+                    && line.contains(" " + called + " ") && line.contains(": reread handout section ")
+                    && line.endsWith("."));
+        }
         assertThat(run.out()).doesNotContain("\u001B[");
     }
 

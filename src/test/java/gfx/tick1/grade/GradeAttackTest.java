@@ -169,6 +169,49 @@ class GradeAttackTest {
                 "ClassNotFoundException: gfx.tick1.scene.SceneLoader");
     }
 
+    /**
+     * The built-in scenes are public, so their reference images can be made by anyone and carried in
+     * the code: an untouched Sphere (no ray ever hits) and a Renderer whose render returns the
+     * reference image of the scene, chosen by the light's x. The images match; traced through the
+     * student's own intersectionWith and illuminate, the sampled pixels do not.
+     */
+    @Test
+    void imagesCarriedInTheCodeInsteadOfTracedFailAsNotComingFromIt() throws Exception {
+        StringBuilder images = new StringBuilder();
+        for (String name : gfx.tick1.scene.BundledScenes.GRADING) {
+            java.io.ByteArrayOutputStream png = new java.io.ByteArrayOutputStream();
+            gfx.tick1.image.PngOutput.write(new gfx.tick1.render.ReferenceRenderer(160, 120)
+                    .render(gfx.tick1.scene.BundledScenes.load(name)), png);
+            images.append("    private static final String ").append(name.equals("tick1.xml") ? "TICK1" : "HIDDEN")
+                    .append(" = \"").append(java.util.Base64.getEncoder().encodeToString(png.toByteArray()))
+                    .append("\";\n");
+        }
+        String renderer = StarterKit.source("Renderer")
+                .replace("public class Renderer {\n", "public class Renderer {\n" + images)
+                .replace("    public BufferedImage render(Scene scene) {\n", """
+                    public BufferedImage render(Scene scene) {
+                        String png = scene.getPointLight().getPosition().x > 0 ? TICK1 : HIDDEN;
+                        try {
+                            return javax.imageio.ImageIO.read(new java.io.ByteArrayInputStream(
+                                    java.util.Base64.getDecoder().decode(png)));
+                        } catch (java.io.IOException e) {
+                            throw new java.io.UncheckedIOException(e);
+                        }
+                    }
+
+                    public BufferedImage unused(Scene scene) {
+                """);
+        Path student = Files.createDirectories(dir.resolve("embedded-images"));
+        Path sphereFile = Files.writeString(student.resolve("Sphere.java"), StarterKit.source("Sphere"));
+        Path rendererFile = Files.writeString(student.resolve("Renderer.java"), renderer);
+        Grade grade = gradeFiles(sphereFile, rendererFile);
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("the copied tick1.xml").contains("tick1.xml: FAIL: "
+                + SubmissionGrader.NOT_FROM_THE_CODE + ": traced through your own intersectionWith and illuminate");
+        assertThat(grade.output()).as("the copied hidden scene, in fixed words")
+                .contains(": FAIL: " + SubmissionGrader.NOT_FROM_THE_CODE + " (checked on sampled pixels)");
+    }
+
     @Test
     void codeThatStealsSecretsFindsNoneAndCannotSendThem() throws Exception {
         Grade grade = grade("steal-secrets");

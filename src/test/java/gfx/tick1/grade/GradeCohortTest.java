@@ -223,13 +223,17 @@ class GradeCohortTest {
         Map<String, String> reasons = new LinkedHashMap<>();
         cohort.forEach(student -> reasons.put(student.name(), rows.get("Participant " + student.id()).get(9)));
         assertThat(reasons.get("Correct Student 0")).isEqualTo(SubmissionGrader.CONGRATULATIONS);
+        assertThat(reasons.get("Inside Sphere")).as("a pass with a note").startsWith(SubmissionGrader.CONGRATULATIONS)
+                .contains("Note: your intersectionWith finds no hit for a ray that starts inside a sphere");
         assertThat(reasons.get("Missing Renderer")).contains("Renderer.java");
         assertThat(reasons.get("Does Not Compile")).contains("does not compile", "Sphere.java:");
         assertThat(reasons.get("Loops Forever")).contains("time limit");
         assertThat(reasons.get("Copies The Reference")).contains("ClassNotFoundException");
         assertThat(reasons.get("Other Package")).contains("package gfx.tick1");
         assertThat(reasons.get("Latin One")).contains("not UTF-8");
-        assertThat(reasons.get("Mistake UNCLAMPED N DOT L")).contains("closest: " + Variant.UNCLAMPED_N_DOT_L.title());
+        // The reason names the property the probes found wrong, not the closest picture.
+        assertThat(reasons.get("Mistake UNCLAMPED N DOT L"))
+                .contains("Your illuminate gives negative diffuse light when N.L < 0");
         assertThat(reasons.values()).allMatch(reason -> !reason.contains("\n"));
     }
 

@@ -75,6 +75,25 @@ public final class SubmissionGrader {
         final List<SceneResult> scenes = new ArrayList<>();
         long compileNanos, renderNanos, compareNanos;
         boolean imagesUnwritable;
+        /** What the probes found, once the public scenes' run is over. */
+        ProbeFindings probes = ProbeFindings.of(null);
+        /** Whether the probes' lines are placed in a scene's explanation yet. */
+        boolean probesShown;
+        /** The label and verdict of the first image a catalogue entry explains exactly, for a row's reason. */
+        String exactly;
+    }
+
+    /** The student's two files as text. */
+    private record Sources(String sphere, String renderer) {
+    }
+
+    /** How compiling went, and when the public scenes ran in the compiler's JVM, what they gave. */
+    private record Started(StudentProcess.Compiled compiled, StudentProcess.Result publicResult, Path classes,
+            long renderStart) {
+    }
+
+    /** Every scene's outcome and traced samples in grading order, the probes' log, and what the code printed. */
+    private record Rendered(List<Outcome> outcomes, List<String> traces, String probes, String publicPrinted) {
     }
 
     /**
@@ -88,58 +107,25 @@ public final class SubmissionGrader {
         if (submission.problem() != null) {
             return failed(grade, submission, out, SUBMISSION_PROBLEM, submission.problem());
         }
-        Submission.SourceFile sphere = submission.sphere(), renderer = submission.renderer();
-        String sphereCode, rendererCode;
+        Sources code;
         try {
-            sphereCode = StudentFile.decode(sphere.path(), sphere.content());
-            rendererCode = StudentFile.decode(renderer.path(), renderer.content());
+            code = new Sources(StudentFile.decode(submission.sphere().path(), submission.sphere().content()),
+                    StudentFile.decode(submission.renderer().path(), submission.renderer().content()));
         } catch (StudentFile.NotUtf8Exception e) {
             return failed(grade, submission, out, NOT_UTF8, e.getMessage());
         }
-        for (String problem : new String[] {StudentFile.packageProblem(sphere.path(), sphereCode),
-                StudentFile.packageProblem(renderer.path(), rendererCode)}) {
+        for (String problem : new String[] {StudentFile.packageProblem(submission.sphere().path(), code.sphere()),
+                StudentFile.packageProblem(submission.renderer().path(), code.renderer())}) {
             if (problem != null) {
                 return failed(grade, submission, out, WRONG_PACKAGE, problem);
             }
         }
-
-        Path sources = Files.createDirectory(work.resolve("sources"));
-        Files.writeString(sources.resolve("Sphere.java"), sphereCode, StandardCharsets.UTF_8);
-        Files.writeString(sources.resolve("Renderer.java"), rendererCode, StandardCharsets.UTF_8);
-        for (String given : StarterKit.GIVEN_CLASSES) {
-            Files.writeString(sources.resolve(given + ".java"), StarterKit.source(given), StandardCharsets.UTF_8);
-        }
-        sandbox.share(work, false);
-        Grading.Limits limits = grading.limits();
-        Duration timeLimit = limits.timeLimit();
-        List<GradingScene> publicScenes = grading.batch(false);
-
-        // The public scenes and the hidden ones run separately, so that what the student's code
-        // prints while it has a hidden scene open is never shown. Where the heap allows, the
-        // public scenes run in the compiler's JVM: one JVM start fewer.
-        Path publicOutput = childFolder(work, "public-output");
+        Path sources = writeSources(work, code);
         long phaseStart = System.nanoTime();
-        StudentProcess.Compiled compiled;
-        StudentProcess.Result publicResult = null;
-        long renderStart;
-        Path classes;
-        if (process.compilesAndRendersInOneRun() && !publicScenes.isEmpty()) {
-            StudentProcess.CompiledAndRendered run = process.compileAndRender(sources,
-                    Grading.batchScenes(scenes, false), sceneFiles(publicScenes.size()), publicOutput,
-                    sphere.path(), renderer.path(), limits.width(), limits.height(), timeLimit);
-            compiled = run.compiled();
-            publicResult = run.rendered();
-            renderStart = phaseStart + run.compileNanos();
-            classes = publicOutput.resolve(StudentHarness.CLASSES_FOLDER);
-        } else {
-            Path compiledFolder = childFolder(work, "compiled");
-            compiled = process.compile(sources, compiledFolder, sphere.path(), renderer.path(), timeLimit);
-            renderStart = System.nanoTime();
-            classes = compiledFolder.resolve(StudentHarness.CLASSES_FOLDER);
-        }
-        grade.compileNanos = renderStart - phaseStart;
+        Started started = start(submission, sources, work);
+        grade.compileNanos = started.renderStart() - phaseStart;
+        StudentProcess.Compiled compiled = started.compiled();
         if (compiled.failure() != null) {
-            grade.renderNanos = 0;
             return failed(grade, submission, out, DOES_NOT_COMPILE, "the code could not be compiled: "
                     + compiled.failure());
         }
@@ -151,81 +137,156 @@ public final class SubmissionGrader {
                     "FAILED: " + heading + ": " + compiled.errors().get(0).lines().findFirst().orElse("")),
                     false, phases(grade));
         }
-        out.println("Compiled " + sphere.path() + " and " + renderer.path() + " with the starter code.");
+        out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
+                + " with the starter code.");
+        Rendered rendered = renderAll(started, work);
+        long compareStart = System.nanoTime();
+        grade.renderNanos = compareStart - started.renderStart();
+        grade.probes = ProbeFindings.of(rendered.probes());
+        Graded graded = compare(grade, submission, code, started.classes(), rendered, images, out, err);
+        return graded;
+    }
 
-        long deadline = renderStart + timeLimit.toNanos();
+    /** The two files and the starter kit's others in {@code work}/sources, shared with the sandbox. */
+    private Path writeSources(Path work, Sources code) throws IOException {
+        Path sources = Files.createDirectory(work.resolve("sources"));
+        Files.writeString(sources.resolve("Sphere.java"), code.sphere(), StandardCharsets.UTF_8);
+        Files.writeString(sources.resolve("Renderer.java"), code.renderer(), StandardCharsets.UTF_8);
+        for (String given : StarterKit.GIVEN_CLASSES) {
+            Files.writeString(sources.resolve(given + ".java"), StarterKit.source(given), StandardCharsets.UTF_8);
+        }
+        sandbox.share(work, false);
+        return sources;
+    }
+
+    /**
+     * Compiles. Where the heap allows, the public scenes (and the probes) run in the compiler's
+     * JVM: one JVM start fewer.
+     */
+    private Started start(Submission submission, Path sources, Path work) throws IOException, InterruptedException {
+        Grading.Limits limits = grading.limits();
+        List<GradingScene> publicScenes = grading.batch(false);
+        long phaseStart = System.nanoTime();
+        if (process.compilesAndRendersInOneRun() && !publicScenes.isEmpty()) {
+            Path publicOutput = childFolder(work, "public-output");
+            StudentProcess.CompiledAndRendered run = process.compileAndRender(sources,
+                    Grading.batchScenes(scenes, false), sceneFiles(publicScenes.size()), publicOutput,
+                    submission.sphere().path(), submission.renderer().path(), limits.width(), limits.height(),
+                    limits.timeLimit(), true);
+            return new Started(run.compiled(), run.rendered(), publicOutput.resolve(StudentHarness.CLASSES_FOLDER),
+                    phaseStart + run.compileNanos());
+        }
+        Path compiledFolder = childFolder(work, "compiled");
+        StudentProcess.Compiled compiled = process.compile(sources, compiledFolder, submission.sphere().path(),
+                submission.renderer().path(), limits.timeLimit());
+        return new Started(compiled, null, compiledFolder.resolve(StudentHarness.CLASSES_FOLDER), System.nanoTime());
+    }
+
+    /**
+     * Runs what is left to run: the public scenes (with the probes) unless they ran with the
+     * compiler, then the hidden ones, separately, so that what the student's code prints while it
+     * has a hidden scene open is never shown. All within the one time limit.
+     */
+    private Rendered renderAll(Started started, Path work) throws IOException, InterruptedException {
+        Grading.Limits limits = grading.limits();
+        long deadline = started.renderStart() + limits.timeLimit().toNanos();
         List<Outcome> outcomes = new ArrayList<>();
-        String publicPrinted = "";
+        List<String> traces = new ArrayList<>();
+        String probes = null, publicPrinted = "";
         for (boolean hidden : new boolean[] {false, true}) {
             List<GradingScene> batch = grading.batch(hidden);
             if (batch.isEmpty()) {
                 continue;
             }
-            if (!hidden && publicResult != null) {
-                outcomes.addAll(publicResult.outcomes());
-                publicPrinted = publicResult.outputTail();
-                continue;
-            }
+            StudentProcess.Result result = !hidden && started.publicResult() != null ? started.publicResult()
+                    : null;
             Duration left = Duration.ofNanos(deadline - System.nanoTime());
-            if (left.toMillis() < 1) {
+            if (result == null && left.toMillis() < 1) {
                 batch.forEach(scene -> outcomes.add(new Outcome.Failed(
                         "not rendered: the time limit was used up by the earlier scenes")));
+                batch.forEach(scene -> traces.add(null));
                 continue;
             }
-            String folder = hidden ? "hidden" : "public";
-            StudentProcess.Result result = process.render(classes, Grading.batchScenes(scenes, hidden),
-                    sceneFiles(batch.size()), childFolder(work, folder + "-run"), limits.width(), limits.height(),
-                    left, timeLimit);
+            if (result == null) {
+                result = process.render(started.classes(), Grading.batchScenes(scenes, hidden),
+                        sceneFiles(batch.size()), childFolder(work, (hidden ? "hidden" : "public") + "-run"),
+                        limits.width(), limits.height(), left, limits.timeLimit(), !hidden);
+            }
             outcomes.addAll(result.outcomes());
+            traces.addAll(result.traces());
             if (!hidden) {
                 publicPrinted = result.outputTail();
+                probes = result.probes();
             }
         }
-        long compareStart = System.nanoTime();
-        grade.renderNanos = compareStart - renderStart;
+        return new Rendered(outcomes, traces, probes, publicPrinted);
+    }
 
+    /** Compares every scene's outcome, then gives the verdict with its reasons. */
+    private Graded compare(Grade grade, Submission submission, Sources code, Path classes, Rendered rendered,
+            Path images, PrintWriter out, PrintWriter err) {
+        long compareStart = System.nanoTime();
         HiddenScenes hiddenScenes = new HiddenScenes(classes);
-        List<GradingScene> ordered = new ArrayList<>(publicScenes);
+        List<GradingScene> ordered = new ArrayList<>(grading.batch(false));
         ordered.addAll(grading.batch(true));
         int failures = 0;
         String diagnosis = null;
         boolean crashed = false;
         for (int i = 0; i < ordered.size(); i++) {
             GradingScene scene = ordered.get(i);
-            Outcome outcome = outcomes.get(i);
             String label;
-            if (outcome instanceof Outcome.Failed failedScene) {
+            if (rendered.outcomes().get(i) instanceof Outcome.Failed failedScene) {
                 crashed = true;
-                String reason = scene.hidden() ? hiddenScenes.withoutMessages(failedScene.reason())
-                        : failedScene.reason();
-                out.println(scene.name() + ": FAIL: " + indent(reason));
-                grade.scenes.add(new SceneResult(scene.name(), scene.hidden(), false, reason.lines().toList(),
-                        null, null, null));
-                label = reason.contains("time limit") ? TIME_LIMIT
-                        : reason.startsWith("the code threw") ? EXCEPTION : CRASHED;
+                label = notRendered(grade, scene, failedScene, hiddenScenes, out);
             } else {
-                label = checkImage(grade, i + 1, scene, ((Outcome.Rendered) outcome).image(), images, out, err);
+                label = checkImage(grade, i + 1, scene, ((Outcome.Rendered) rendered.outcomes().get(i)).image(),
+                        rendered.traces().get(i), images, out, err);
             }
             if (label != null) {
                 failures++;
                 diagnosis = diagnosis == null ? label : diagnosis;
             }
         }
-        if (crashed && !publicPrinted.isBlank()) {
+        String printed = rendered.publicPrinted();
+        if (crashed && !printed.isBlank()) {
             out.println("The last lines the code printed (while rendering the scenes that are not hidden):");
-            publicPrinted.lines().skip(Math.max(0, publicPrinted.lines().count() - 5))
-                    .forEach(line -> out.println("  " + line));
+            printed.lines().skip(Math.max(0, printed.lines().count() - 5)).forEach(line -> out.println("  " + line));
         }
         grade.compareNanos = System.nanoTime() - compareStart;
+        return verdict(grade, submission, ordered.size(), failures, diagnosis, out);
+    }
+
+    /** A scene the code gave no image for: why, with nothing of the code's own words for a hidden scene. */
+    private static String notRendered(Grade grade, GradingScene scene, Outcome.Failed failedScene,
+            HiddenScenes hiddenScenes, PrintWriter out) {
+        String reason = scene.hidden() ? hiddenScenes.withoutMessages(failedScene.reason()) : failedScene.reason();
+        out.println(scene.name() + ": FAIL: " + indent(reason));
+        grade.scenes.add(new SceneResult(scene.name(), scene.hidden(), false, reason.lines().toList(),
+                null, null, null));
+        return reason.contains("time limit") ? TIME_LIMIT : reason.startsWith("the code threw") ? EXCEPTION : CRASHED;
+    }
+
+    /** The verdict line, the notes of a pass, and the result with its row's reason. */
+    private Graded verdict(Grade grade, Submission submission, int scenes, int failures, String diagnosis,
+            PrintWriter out) {
         if (failures > 0) {
-            String verdict = "FAILED: " + failures + " of " + count(ordered.size(), "scene") + " wrong.";
+            String verdict = "FAILED: " + failures + " of " + count(scenes, "scene") + " wrong.";
             out.println(verdict);
-            return new Graded(result(grade, submission, false, ordered.size() - failures, diagnosis,
-                    verdict + reasons(grade.scenes)), grade.imagesUnwritable, phases(grade));
+            return new Graded(result(grade, submission, false, scenes - failures, diagnosis,
+                    verdict + reasons(grade)), grade.imagesUnwritable, phases(grade));
         }
         out.println(CONGRATULATIONS);
-        return new Graded(result(grade, submission, true, ordered.size(), PASSED, CONGRATULATIONS),
-                false, phases(grade));
+        List<String> notes = grade.probes.notes();
+        notes.forEach(note -> out.println("Note: " + note));
+        if (!notes.isEmpty() && !grade.scenes.isEmpty()) {
+            // The notes live in the explanation of the first scene, whose run made them.
+            SceneResult first = grade.scenes.get(0);
+            grade.scenes.set(0, new SceneResult(first.name(), first.hidden(), true,
+                    notes.stream().map(note -> "note: " + note).toList(), null, null, null));
+        }
+        String reason = notes.isEmpty() ? CONGRATULATIONS : CONGRATULATIONS + " Note: "
+                + String.join("; ", grade.probes.facts()) + " (the course's scenes do not test this).";
+        return new Graded(result(grade, submission, true, scenes, PASSED, reason), false, phases(grade));
     }
 
     /** A submission that fails before any scene is run: one line saying why. */
@@ -275,34 +336,51 @@ public final class SubmissionGrader {
     }
 
     /**
-     * The failing scenes' first lines, their closest mistake and what to reread, for the gradebook's
-     * comment. A hidden scene is "hidden scene N", as on the feedback page: its file name may tell
-     * what it holds, and the comment goes to the student.
+     * A failure's reasons for the gradebook's row, in one sentence: the scenes that gave no image
+     * or an image their code does not give, by their first lines; then the failed probes' facts;
+     * failing those, an exact match with a catalogue entry, or that tick1 is unsure. A hidden
+     * scene is "hidden scene N", as on the feedback page: its file name may tell what it holds.
      */
-    private static String reasons(List<SceneResult> scenes) {
+    private static String reasons(Grade grade) {
         StringBuilder text = new StringBuilder();
         int hidden = 0;
-        for (SceneResult scene : scenes) {
+        boolean wrongImage = false;
+        for (SceneResult scene : grade.scenes) {
             String name = scene.hidden() ? "hidden scene " + ++hidden : scene.name();
             if (scene.passed()) {
                 continue;
             }
-            text.append(' ').append(name).append(": ").append(scene.explanation().get(0));
-            scene.explanation().stream().filter(line -> line.startsWith("closest: ") || line.startsWith("reread: "))
-                    .forEach(line -> text.append("; ").append(line));
-            text.append('.');
+            if (scene.explanation().stream().anyMatch(line -> line.startsWith("mean difference"))) {
+                wrongImage = true;
+                continue;
+            }
+            text.append(' ').append(name).append(": ").append(scene.explanation().get(0)).append('.');
+        }
+        if (grade.probes.anyFailed()) {
+            text.append(' ').append(grade.probes.sentence());
+        } else if (wrongImage) {
+            text.append(' ').append(grade.exactly != null ? grade.exactly
+                    : grade.probes.ran() ? UNSURE_WITH_PROBES : UNSURE_WITHOUT_PROBES);
         }
         return text.toString().replace("..", ".");
     }
 
+    /** Why a wrong image has no cause to name, when every probe holds. */
+    static final String UNSURE_WITH_PROBES = "Every probe of your intersectionWith and illuminate holds, so tick1 "
+            + "is unsure what makes the difference (see the feedback).";
+    /** Why a wrong image has no cause to name, when the probes did not run. */
+    static final String UNSURE_WITHOUT_PROBES = "The probes of your intersectionWith and illuminate did not run, "
+            + "so tick1 is unsure what makes the difference (see the feedback).";
+
     /**
-     * Compares one student image with the references --reference allows; explains the difference
-     * when it matches none, and, for a scene that is not hidden, writes the images.
+     * Compares one student image with the references --reference allows, and, when it matches,
+     * with what their own methods give for the sampled pixels; explains a difference, and, for a
+     * scene that is not hidden, writes the images.
      *
      * @return null for a pass, else the label of the failure for the cohort's chart
      */
-    private String checkImage(Grade grade, int number, GradingScene scene, BufferedImage image, Path images,
-            PrintWriter out, PrintWriter err) {
+    private String checkImage(Grade grade, int number, GradingScene scene, BufferedImage image, String trace,
+            Path images, PrintWriter out, PrintWriter err) {
         ReferenceChoice choice = grading.limits().referenceChoice();
         BufferedImage handout = choice == ReferenceChoice.robust ? null
                 : grading.reference(scene, Intersection.HANDOUT);
@@ -312,6 +390,10 @@ public final class SubmissionGrader {
         boolean robustMatched = robust != null && samePixels(robust, image);
         boolean referencesAgree = handout != null && robust != null && samePixels(handout, robust);
         if (handoutMatched || robustMatched) {
+            SampleCheck.Result check = SampleCheck.check(image, trace);
+            if (check != SampleCheck.Result.AGREES) {
+                return notFromTheCode(grade, scene, check, out);
+            }
             String which = "the reference", other = "";
             if (handout != null && robust != null && !referencesAgree) {
                 which = handoutMatched ? "the handout-arithmetic reference" : "the robust reference";
@@ -329,26 +411,74 @@ public final class SubmissionGrader {
         boolean againstHandout = toRobust == null
                 || toHandout != null && toHandout.differingPixels() < toRobust.differingPixels();
         ImageDifference difference = againstHandout ? toHandout : toRobust;
-        BufferedImage expected = againstHandout ? handout : robust;
         List<String> lines = new ArrayList<>();
         lines.add(difference.summary());
         if (handout != null && robust != null && !referencesAgree) {
             lines.add("(compared with the " + (againstHandout ? "handout-arithmetic" : "robust")
                     + " reference, the closer of the two, which differ on this scene)");
         }
+        String label = explain(grade, scene, image, difference, lines);
+        out.println(scene.name() + ": FAIL: " + lines.get(0));
+        lines.subList(1, lines.size()).forEach(line -> out.println("  " + line));
+        writeImages(grade, number, scene, image, difference, againstHandout ? handout : robust, lines, images, out,
+                err);
+        return label;
+    }
+
+    /** Why a matching image fails: their own methods give other colours, or could not be asked. */
+    private static String notFromTheCode(Grade grade, GradingScene scene, SampleCheck.Result check, PrintWriter out) {
+        String reason = check == SampleCheck.Result.DISAGREES ? NOT_FROM_THE_CODE + ": traced through your own "
+                + "intersectionWith and illuminate, its sampled pixels have other colours"
+                : NOT_FROM_THE_CODE + "? Its sampled pixels could not be traced through your intersectionWith and "
+                + "illuminate (they did not return in time, or the harness's record of them is missing)";
+        String shown = scene.hidden() ? NOT_FROM_THE_CODE + " (checked on sampled pixels)" : reason;
+        out.println(scene.name() + ": FAIL: " + shown);
+        grade.scenes.add(new SceneResult(scene.name(), scene.hidden(), false, List.of(shown), null, null, null));
+        return NOT_FROM_CODE_LABEL;
+    }
+
+    /** The words of a matching image that their methods do not give. */
+    public static final String NOT_FROM_THE_CODE = "the image does not come from your Sphere and Renderer";
+    static final String NOT_FROM_CODE_LABEL = "image not from the code";
+
+    /**
+     * The figures and the diagnosis of a wrong image, then the failed probes (the first wrong image
+     * only) and what to reread; the label for the cohort's chart.
+     */
+    private static String explain(Grade grade, GradingScene scene, BufferedImage image, ImageDifference difference,
+            List<String> lines) {
         double[] mean = difference.meanPerChannel();
         lines.add(String.format("mean difference R %.3f, G %.3f, B %.3f levels; PSNR %.2f dB", mean[0], mean[1],
                 mean[2], difference.psnr()));
         Diagnosis diagnosis = new Diagnoser().diagnose(image, scene.scene());
-        lines.addAll(diagnosis.report());
-        String label = diagnosis.verdict() == Diagnosis.Verdict.EXPLAINED
-                ? diagnosis.explaining().get(0).variant().title() : UNRECOGNISED;
-        out.println(scene.name() + ": FAIL: " + lines.get(0));
-        lines.subList(1, lines.size()).forEach(line -> out.println("  " + line));
+        boolean exact = diagnosis.verdict() == Diagnosis.Verdict.EXPLAINED;
+        boolean probesSay = grade.probes.anyFailed();
+        // What to reread comes from the failed probes; the image's own entry only when it matches exactly.
+        diagnosis.report().stream().filter(line -> !line.startsWith("reread:") || exact && !probesSay)
+                .forEach(lines::add);
+        if (probesSay && !grade.probesShown) {
+            lines.addAll(grade.probes.failureLines());
+            grade.probesShown = true;
+        } else if (!probesSay && !exact) {
+            lines.add(grade.probes.ran() ? "probes: every probe of your intersectionWith and illuminate holds"
+                    : "probes: they did not run");
+        }
+        if (exact && grade.exactly == null) {
+            grade.exactly = (scene.hidden() ? "A hidden scene" : scene.name()) + " is exactly the image of \""
+                    + diagnosis.explaining().get(0).variant().title() + "\".";
+        }
+        return probesSay ? grade.probes.failedProbes().get(0).label()
+                : exact ? diagnosis.explaining().get(0).variant().title() : UNRECOGNISED;
+    }
+
+    /** Writes the images of a scene that is not hidden: heat map, theirs, the reference. */
+    private void writeImages(Grade grade, int number, GradingScene scene, BufferedImage image,
+            ImageDifference difference, BufferedImage expected, List<String> lines, Path images, PrintWriter out,
+            PrintWriter err) {
         if (scene.hidden()) {
             out.println("  (a hidden scene: no images are written for it)");
             grade.scenes.add(new SceneResult(scene.name(), true, false, lines, null, null, null));
-            return label;
+            return;
         }
         String stem = number + "-" + scene.name().replaceAll("[^A-Za-z0-9._-]", "_").replaceAll("\\.xml$", "");
         String heatMap = stem + "-diff.png", yours = stem + "-yours.png", reference = stem + "-expected.png";
@@ -364,7 +494,6 @@ public final class SubmissionGrader {
             grade.imagesUnwritable = true;
             grade.scenes.add(new SceneResult(scene.name(), false, false, lines, null, null, null));
         }
-        return label;
     }
 
     /** Whether two images of the same size have the same pixels: the pass path needs no difference figures. */

@@ -33,6 +33,11 @@ import javax.imageio.ImageIO;
  *       writes {@code OUTPUT/<index>.png}, or {@code OUTPUT/<index>.error} with what went wrong.
  *       {@code OUTPUT/progress} logs "start i" and "end i" lines, so that whoever stops this
  *       process (on a time limit) or sees it die (System.exit, a crash) knows which scene it was on.
+ *       After each image is written, a grid of its pixels is traced again through the student's
+ *       own methods into {@code OUTPUT/<index>.trace} ({@link SampleTrace}).
+ *   <li>{@code render --probes ...}: as either form of {@code render}, and after the last scene
+ *       calls the student's two methods on the fixed inputs of {@link ProbeCalls}, logging what
+ *       they return in {@code OUTPUT/probes} ({@link ProbeRunner}).
  * </ul>
  *
  * <p>Everything this process writes is written while the student's code runs in it, so
@@ -49,11 +54,24 @@ public final class StudentHarness {
     public static final String COMPILE_FIRST = "--compile";
     /** The line of the progress log that says compiling is over and the student's code may run. */
     public static final String COMPILED = "compiled";
+    /** The option of {@code render}, before any other, that runs the probes after the scenes. */
+    public static final String PROBES = "--probes";
+    /** The log of the probes, in the output folder. */
+    public static final String PROBES_FILE = ProbeRunner.PROBES_FILE;
+    /** The file of a scene's traced samples, beside its image: {@code <index>.trace}. */
+    public static final String TRACE_SUFFIX = ".trace";
+
+    /** The classes of the harness's jar: these and their nested classes are all of tick1 the child sees. */
+    public static final List<Class<?>> CLASSES = List.of(StudentHarness.class, StudentCompiler.class,
+            StudentFile.class, StarterApi.class, ProbeCalls.class, ProbeRunner.class, SampleTrace.class,
+            Bounded.class);
 
     private StudentHarness() {
     }
 
-    public static void main(String[] args) throws Exception {
+    public static void main(String[] arguments) throws Exception {
+        boolean probes = arguments.length > 1 && arguments[1].equals(PROBES);
+        String[] args = probes ? dropSecond(arguments) : arguments;
         if (args[0].equals("compile")) {
             System.exit(compile(Path.of(args[1]), Path.of(args[2]), args[3], args[4]));
         }
@@ -65,11 +83,17 @@ public final class StudentHarness {
             }
             log(output.resolve(PROGRESS_FILE), COMPILED);
             render(output.resolve(CLASSES_FOLDER), output, Integer.parseInt(args[6]), Integer.parseInt(args[7]),
-                    List.of(args).subList(8, args.length));
+                    List.of(args).subList(8, args.length), probes);
             return;
         }
         render(Path.of(args[1]), Path.of(args[2]), Integer.parseInt(args[3]), Integer.parseInt(args[4]),
-                List.of(args).subList(5, args.length));
+                List.of(args).subList(5, args.length), probes);
+    }
+
+    private static String[] dropSecond(String[] args) {
+        List<String> rest = new ArrayList<>(List.of(args));
+        rest.remove(1);
+        return rest.toArray(new String[0]);
     }
 
     private static int compile(Path sources, Path output, String sphereName, String rendererName) throws Exception {
@@ -94,8 +118,8 @@ public final class StudentHarness {
         return 0;
     }
 
-    private static void render(Path classes, Path output, int width, int height, List<String> scenes)
-            throws IOException {
+    private static void render(Path classes, Path output, int width, int height, List<String> scenes,
+            boolean probes) throws IOException {
         Path progress = output.resolve(PROGRESS_FILE);
         try (URLClassLoader student = new URLClassLoader(new URL[] {classes.toUri().toURL()},
                 ClassLoader.getPlatformClassLoader())) {
@@ -104,14 +128,32 @@ public final class StudentHarness {
                 try {
                     BufferedImage image = render(student, scenes.get(index), width, height);
                     ImageIO.write(image, "png", output.resolve(index + ".png").toFile());
+                    trace(student, scenes.get(index), width, height, output.resolve(index + TRACE_SUFFIX));
                 } catch (Throwable failure) { // the student's code may throw anything, errors included
                     Files.writeString(output.resolve(index + ".error"), describe(failure), StandardCharsets.UTF_8);
                 }
                 log(progress, "end " + index);
             }
+            if (probes) {
+                ProbeRunner.probe(student, output.resolve(PROBES_FILE));
+            }
         }
         // Student code may have left threads running; the results are written, so stop here.
         Runtime.getRuntime().halt(0);
+    }
+
+    /** Traces the samples of a scene whose image is written; without the starter's API, none. */
+    private static void trace(ClassLoader student, String scenePath, int width, int height, Path file)
+            throws IOException {
+        try {
+            StarterApi api = new StarterApi(student);
+            Class<?> loaderClass = student.loadClass("gfx.tick1.SceneLoader");
+            Object scene = loaderClass.getMethod("getScene")
+                    .invoke(loaderClass.getConstructor(String.class).newInstance(scenePath));
+            SampleTrace.trace(api, scene, width, height, file);
+        } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
+            // No trace file: the grader cannot check the image against the methods, and says so.
+        }
     }
 
     private static BufferedImage render(ClassLoader student, String scenePath, int width, int height)

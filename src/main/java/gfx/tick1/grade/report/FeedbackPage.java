@@ -6,7 +6,6 @@ import gfx.tick1.grade.model.Submission;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Locale;
 import java.util.Set;
 
 /**
@@ -26,6 +25,8 @@ final class FeedbackPage {
 
     /** How an explanation line that names what to reread begins (gfx.tick1.diagnose's report). */
     private static final String REREAD = "reread:";
+    /** The most sections a feedback page asks to reread. */
+    static final int MOST_TO_REREAD = 3;
 
     private static final String STYLE = Html.resource("report.css");
 
@@ -57,9 +58,10 @@ final class FeedbackPage {
     }
 
     /**
-     * What the explanation lines say to reread, each once, in the order they come: a line "reread:
-     * handout 3.2." as "Handout 3.2.", one that gives a condition ("if it is ...: reread handout
-     * 3.2.") as it stands.
+     * What the explanation lines say to reread, each once, in the order they come, at most
+     * {@value #MOST_TO_REREAD}: a line "reread: handout section 5." as "Handout section 5.". Only
+     * such lines count: the grader writes them for the properties its probes found wrong (or for
+     * an image a catalogue entry matches exactly), never for a candidate it is unsure of.
      */
     static List<String> rereading(StudentResult result) {
         Set<String> lines = new LinkedHashSet<>();
@@ -68,12 +70,10 @@ final class FeedbackPage {
                 String item = line.strip();
                 if (item.startsWith(REREAD)) {
                     lines.add(capitalised(item.substring(REREAD.length()).strip()));
-                } else if (item.toLowerCase(Locale.ROOT).contains("reread")) {
-                    lines.add(capitalised(item));
                 }
             }
         }
-        return List.copyOf(lines);
+        return lines.stream().limit(MOST_TO_REREAD).toList();
     }
 
     static String html(StudentResult result) {

@@ -62,8 +62,12 @@ public final class StudentProcess {
         }
     }
 
-    /** The outcome of every scene in order, and the last of what the student's code printed. */
-    public record Result(List<Outcome> outcomes, String outputTail) {
+    /**
+     * The outcome of every scene in order, and the last of what the student's code printed; each
+     * scene's traced samples and the probes' log as the child wrote them (capped and printable, null
+     * when there is none), for the grader to parse and judge.
+     */
+    public record Result(List<Outcome> outcomes, String outputTail, List<String> traces, String probes) {
     }
 
     /** What compiling gave: the errors, or a reason the compiler did not finish, or neither (it compiled). */
@@ -126,10 +130,13 @@ public final class StudentProcess {
      * compiled classes stay in the output folder the code can write.
      */
     public CompiledAndRendered compileAndRender(Path sources, Path scenes, List<String> sceneFiles, Path output,
-            String sphereName, String rendererName, int width, int height, Duration timeLimit)
+            String sphereName, String rendererName, int width, int height, Duration timeLimit, boolean probes)
             throws IOException, InterruptedException {
         List<String> arguments = new ArrayList<>(List.of("render", StudentHarness.COMPILE_FIRST, SOURCES,
                 sphereName, rendererName, OUTPUT, Integer.toString(width), Integer.toString(height)));
+        if (probes) {
+            arguments.add(1, StudentHarness.PROBES);
+        }
         sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
         Run run = run(new Request(arguments, List.of(new Bind(sources, SOURCES, false),
                 new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), timeLimit,
@@ -180,12 +187,15 @@ public final class StudentProcess {
     /**
      * Renders each scene with the compiled classes in {@code classes}; {@code output} is an empty
      * folder for the child's images and logs. The run may take {@code timeLeft}, what is left of
-     * the grade's {@code timeLimit}.
+     * the grade's {@code timeLimit}. With {@code probes}, the harness also runs the probes.
      */
     public Result render(Path classes, Path scenes, List<String> sceneFiles, Path output, int width, int height,
-            Duration timeLeft, Duration timeLimit) throws IOException, InterruptedException {
+            Duration timeLeft, Duration timeLimit, boolean probes) throws IOException, InterruptedException {
         List<String> arguments = new ArrayList<>(List.of("render", CLASSES, OUTPUT,
                 Integer.toString(width), Integer.toString(height)));
+        if (probes) {
+            arguments.add(1, StudentHarness.PROBES);
+        }
         sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
         Run run = run(new Request(arguments, List.of(new Bind(classes, CLASSES, false),
                 new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), timeLeft, null, Duration.ZERO,
@@ -204,8 +214,13 @@ public final class StudentProcess {
                     : outcome(output, i, progressText == null ? List.of() : progressText.lines().toList(), run,
                             width, height, timeLimit));
         }
+        List<String> traces = new ArrayList<>();
+        for (int i = 0; i < sceneFiles.size(); i++) {
+            traces.add(ChildOutput.readText(output.resolve(i + StudentHarness.TRACE_SUFFIX)));
+        }
         return new Result(run.limitReached() == null ? outcomes
-                : outcomes.stream().map(outcome -> withLimit(outcome, run.limitReached())).toList(), run.outputTail());
+                : outcomes.stream().map(outcome -> withLimit(outcome, run.limitReached())).toList(), run.outputTail(),
+                traces, ChildOutput.readText(output.resolve(StudentHarness.PROBES_FILE)));
     }
 
     /**
@@ -223,13 +238,14 @@ public final class StudentProcess {
 
     /**
      * Writes the harness's class path into {@code folder}, as {@value #HARNESS_JAR}: the class
-     * files of {@link StudentHarness}, {@link StudentCompiler} and {@link StudentFile}, their nested
-     * classes, and nothing else of this program (no reference renderer, no scenes, no images for
+     * files of {@link StudentHarness#CLASSES} ({@link StudentHarness}, {@link StudentCompiler},
+     * {@link StudentFile}, and those that call the student's methods), their nested classes, and
+     * nothing else of this program (no reference renderer, no scenes, no images for
      * the student's code to use). A jar, not a folder, as Java's class data sharing needs one.
      */
     public static void writeHarness(Path folder) throws IOException {
         try (JarOutputStream jar = new JarOutputStream(Files.newOutputStream(folder.resolve(HARNESS_JAR)))) {
-            for (Class<?> top : List.of(StudentHarness.class, StudentCompiler.class, StudentFile.class)) {
+            for (Class<?> top : StudentHarness.CLASSES) {
                 for (Class<?> type : top.getNestMembers()) {
                     String file = type.getName().replace('.', '/') + ".class";
                     try (InputStream in = type.getResourceAsStream("/" + file)) {
@@ -269,8 +285,10 @@ public final class StudentProcess {
         sandbox.share(work, false);
         Path output = Files.createDirectory(work.resolve("output"));
         sandbox.share(output, true);
-        Run run = run(new Request(List.of("render", StudentHarness.COMPILE_FIRST, SOURCES, "Sphere.java",
-                "Renderer.java", OUTPUT, "8", "6", SCENES + "/0.xml"), List.of(new Bind(sources, SOURCES, false),
+        // With the probes, so that the classes they load are in the archive too.
+        Run run = run(new Request(List.of("render", StudentHarness.PROBES, StudentHarness.COMPILE_FIRST, SOURCES,
+                "Sphere.java", "Renderer.java", OUTPUT, "8", "6", SCENES + "/0.xml"),
+                List.of(new Bind(sources, SOURCES, false),
                 new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), ARCHIVE_TIME_LIMIT, null,
                 Duration.ZERO, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false,
                 List.of("-XX:ArchiveClassesAtExit=" + inside(output, OUTPUT) + "/" + SHARED_ARCHIVE), output));

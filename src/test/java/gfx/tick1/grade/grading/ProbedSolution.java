@@ -1,0 +1,113 @@
+package gfx.tick1.grade.grading;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gfx.tick1.grade.harness.ProbeRunner;
+import gfx.tick1.grade.harness.StudentCompiler;
+import gfx.tick1.starter.StarterKit;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A student's two files for the probe tests: the correct solution of the test resources, edited
+ * (each edit must find its text exactly once), compiled in memory with the starter kit and probed
+ * in this JVM by the harness's own {@link ProbeRunner}, as the sandbox's JVM would.
+ */
+record ProbedSolution(String sphere, String renderer) {
+
+    static ProbedSolution correct() {
+        return new ProbedSolution(resource("Sphere.java"), resource("Renderer.java"));
+    }
+
+    ProbedSolution sphere(String text, String replacement) {
+        return new ProbedSolution(replaceOnce(sphere, text, replacement), renderer);
+    }
+
+    ProbedSolution renderer(String text, String replacement) {
+        return new ProbedSolution(sphere, replaceOnce(renderer, text, replacement));
+    }
+
+    /** The correct solution with the body of intersectionWith after a, b and c written as {@code body}. */
+    ProbedSolution intersection(String body) {
+        int from = sphere.indexOf("        // A negative discriminant");
+        String end = "        // Currently returning empty RaycastHit for no intersection\n"
+                + "        return new RaycastHit();\n";
+        int to = sphere.indexOf(end);
+        assertThat(from).as("the correct Sphere's intersection").isPositive();
+        assertThat(to).isGreaterThan(from);
+        return new ProbedSolution(sphere.substring(0, from) + body + sphere.substring(to + end.length()), renderer);
+    }
+
+    /** The correct solution with the body of illuminate after n is read written as {@code body}. */
+    ProbedSolution shading(String body) {
+        int from = renderer.indexOf("        // L and V, unit vectors");
+        String end = "return ambient.add(diffuse).add(specular);\n";
+        int to = renderer.indexOf(end);
+        assertThat(from).as("the correct Renderer's shading").isPositive();
+        assertThat(to).isGreaterThan(from);
+        return new ProbedSolution(sphere, renderer.substring(0, from) + body + renderer.substring(to + end.length()));
+    }
+
+    /** The probes' log of these two files. */
+    String probeLog(Path folder) throws Exception {
+        List<StudentCompiler.Source> sources = new ArrayList<>();
+        sources.add(new StudentCompiler.Source("Sphere", "Sphere.java", sphere));
+        sources.add(new StudentCompiler.Source("Renderer", "Renderer.java", renderer));
+        for (String given : StarterKit.GIVEN_CLASSES) {
+            sources.add(new StudentCompiler.Source(given, given + ".java", StarterKit.source(given)));
+        }
+        StudentCompiler.Result compiled = new StudentCompiler().compile(sources);
+        assertThat(compiled.errors()).as("the solution compiles").isEmpty();
+        Path log = Files.createTempFile(folder, "probes", ".log");
+        Files.delete(log);
+        ProbeRunner.probe(new InMemory(compiled.classes()), log);
+        return Files.readString(log);
+    }
+
+    /** The probes these two files fail. */
+    List<Probe> failedProbes(Path folder) throws Exception {
+        return ProbeFindings.of(probeLog(folder)).failedProbes();
+    }
+
+    private static String replaceOnce(String source, String text, String replacement) {
+        int first = source.indexOf(text);
+        assertThat(first).as("the edit's text \"%s\" must be in the solution", text).isNotNegative();
+        assertThat(source.indexOf(text, first + 1)).as("the edit's text \"%s\" must occur once", text).isNegative();
+        return source.replace(text, replacement);
+    }
+
+    private static String resource(String name) {
+        try (InputStream in = ProbedSolution.class.getResourceAsStream("/students/correct/" + name)) {
+            assertThat(in).as("test resource students/correct/" + name).isNotNull();
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /** The compiled classes, loaded from memory, beside the JDK only. */
+    private static final class InMemory extends ClassLoader {
+        private final Map<String, byte[]> classes;
+
+        InMemory(Map<String, byte[]> classes) {
+            super(ClassLoader.getPlatformClassLoader());
+            this.classes = classes;
+        }
+
+        @Override
+        protected Class<?> findClass(String name) throws ClassNotFoundException {
+            byte[] bytes = classes.get(name);
+            if (bytes == null) {
+                throw new ClassNotFoundException(name);
+            }
+            return defineClass(name, bytes, 0, bytes.length);
+        }
+    }
+}
