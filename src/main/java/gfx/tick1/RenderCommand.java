@@ -173,45 +173,22 @@ public final class RenderCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         timings.end("command line");
         RenderOptions options = options();
-        String usage = options.problem();
-        RenderJob job = ahead != null && ahead.options().equals(options) ? ahead : null;
-        if (ahead != null && job == null) {
+        // A render begun on a guess at the command line counts only if picocli read the same options.
+        RenderJob guessed = ahead != null && ahead.options().equals(options) ? ahead : null;
+        String usage = usageProblem(options);
+        if (ahead != null && (guessed == null || usage != null || wouldReplaceAnUnnamedFile())) {
             ahead.cancel();
         }
-        if (usage == null && ImageFormat.ofName(output).filter(format -> format != ImageFormat.PNG).isPresent()) {
-            usage = "--output " + output + ": tick1 writes PNG images only (every pixel exact); name it "
-                    + ImageFormat.asPng(output);
-        }
         if (usage != null) {
-            if (job != null) {
-                job.cancel();
-            }
             throw new ParameterException(spec.commandLine(), usage);
         }
         if (wouldReplaceAnUnnamedFile()) {
-            if (job != null) {
-                job.cancel();
-            }
             err.println("tick1: " + output + " already exists (it may be your own render) and -o was not given; "
                     + "-o " + output + " replaces it, -o OTHER.png writes another");
             return EXIT_USAGE;
         }
-        if (job == null) {
-            job = RenderJob.start(options);
-        }
-
-        try {
-            SceneLoader loader = job.scene();
-            if (!quiet) {
-                loader.getWarnings().forEach(err::println);
-            }
-        } catch (InvalidPathException e) {
-            err.println("tick1: " + input + ": not a valid file name");
-            return EXIT_BAD_SCENE;
-        } catch (SceneException e) {
-            boolean defaultSceneMissing = inputIsTheDefault() && !Files.exists(Path.of(input));
-            String hint = defaultSceneMissing ? " (give a scene with -i SCENE.xml; see tick1 --help)" : "";
-            err.println("tick1: " + e.getMessage() + hint);
+        RenderJob job = guessed != null ? guessed : RenderJob.start(options);
+        if (!sceneLoaded(job, err)) {
             return EXIT_BAD_SCENE;
         }
 
@@ -231,6 +208,34 @@ public final class RenderCommand implements Callable<Integer> {
             timings.print(err, (job == ahead ? "rendered while the command line was read: " : "") + job.stages());
         }
         return status;
+    }
+
+    /** What is wrong with the command line beyond what picocli's types check, or null. */
+    private String usageProblem(RenderOptions options) {
+        String problem = options.problem();
+        if (problem == null && ImageFormat.ofName(output).filter(format -> format != ImageFormat.PNG).isPresent()) {
+            return "--output " + output + ": tick1 writes PNG images only (every pixel exact); name it "
+                    + ImageFormat.asPng(output);
+        }
+        return problem;
+    }
+
+    /** Waits for the scene, prints its warnings, and says why it cannot be rendered if it cannot. */
+    private boolean sceneLoaded(RenderJob job, PrintWriter err) {
+        try {
+            SceneLoader loader = job.scene();
+            if (!quiet) {
+                loader.getWarnings().forEach(err::println);
+            }
+            return true;
+        } catch (InvalidPathException e) {
+            err.println("tick1: " + input + ": not a valid file name");
+        } catch (SceneException e) {
+            boolean defaultSceneMissing = inputIsTheDefault() && !Files.exists(Path.of(input));
+            String hint = defaultSceneMissing ? " (give a scene with -i SCENE.xml; see tick1 --help)" : "";
+            err.println("tick1: " + e.getMessage() + hint);
+        }
+        return false;
     }
 
     private int write(RenderJob job, PrintWriter err) {

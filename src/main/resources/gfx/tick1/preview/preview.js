@@ -118,6 +118,7 @@ function build(description) {
     ...(light ? [Math.abs(light.position[0]), Math.abs(light.position[2])] : []));
 
   content.add(grid(groundY, reach));
+  content.add(viewLights(light));
   content.add(cameraPyramid());
   for (const sphere of spheres) {
     content.add(sphereMesh(sphere));
@@ -129,11 +130,32 @@ function build(description) {
   draw();
 }
 
+/**
+ * A sphere twice over: shaded for the 3D view, so that its depth reads at a glance, and flat for
+ * the camera view, which shows where each sphere lies in the tick's image, not how it is lit.
+ */
 function sphereMesh({ position, radius, colour }) {
-  const mesh = new THREE.Mesh(new THREE.SphereGeometry(radius, 64, 32), new THREE.MeshBasicMaterial({ color: colour }));
-  mesh.position.copy(toThree(position));
-  mesh.layers.enable(CAMERA_LAYER);
-  return mesh;
+  const group = new THREE.Group();
+  const geometry = new THREE.SphereGeometry(radius, 64, 32);
+  const shaded = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({ color: colour }));
+  const flat = new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({ color: colour }));
+  flat.layers.set(CAMERA_LAYER);
+  group.add(shaded, flat);
+  group.position.copy(toThree(position));
+  return group;
+}
+
+/**
+ * The 3D view's lighting: a white light where the scene's point light is (above and behind the
+ * camera without one), with no fall-off, and a soft ambient light so that no side is black.
+ */
+function viewLights(light) {
+  const group = new THREE.Group();
+  group.add(new THREE.AmbientLight(0xffffff, 0.9));
+  const lamp = new THREE.PointLight(0xffffff, 2.2, 0, 0);
+  lamp.position.copy(toThree(light ? light.position : [-2, 4, -2]));
+  group.add(lamp);
+  return group;
 }
 
 /** A square grid of unit cells (coarser for big scenes) centred under the origin, well beyond the scene. */

@@ -290,7 +290,7 @@ class DiffCommandTest {
         } else {
             String called = className.equals("Sphere") ? "intersectionWith" : "illuminate";
             assertThat(hints(run)).as(run.transcript()).isNotEmpty().allMatch(line -> line.startsWith("hint: ")
-                    && line.contains(" " + called + " ") && line.contains(": reread handout section ")
+                    && line.contains("your " + called) && line.contains(": reread handout section ")
                     && line.endsWith("."));
         }
         assertThat(run.out()).doesNotContain("\u001B[");

@@ -112,7 +112,7 @@ class PreviewPageTest {
     }
 
     @Test
-    void theThreeDViewIsNotBlankAndShowsEverySphereInItsFlatColour() {
+    void theThreeDViewIsNotBlankAndShowsEverySphereShadedInItsColour() {
         dropAndWaitForTheViews(TICK1_XML);
         BufferedImage view = browser.pixelsOf(element("#view canvas"));
 
@@ -121,9 +121,39 @@ class PreviewPageTest {
         assertThat(pixels - background).as("pixels of the 3D view that are not its grey background")
                 .isGreaterThan(pixels / 50);
         for (Sphere sphere : tick1Scene().getObjects()) {
-            assertThat(count(view, rgb(sphere.getColour())))
-                    .as("pixels of the 3D view in the flat colour of %s", sphere).isGreaterThan(100);
+            double[] shades = shadesOf(view, rgb(sphere.getColour()));
+            assertThat(shades.length).as("pixels of the 3D view in a shade of the colour of %s", sphere)
+                    .isGreaterThan(100);
+            // Lit from one side, a sphere goes from a dark shade to a bright one: a flat disc would be one shade.
+            assertThat(shades[shades.length - 1] - shades[0])
+                    .as("the range of brightness of %s in the 3D view, as a fraction of its colour", sphere)
+                    .isGreaterThan(0.3);
         }
+    }
+
+    /**
+     * The brightness, sorted, of each pixel that is a shade of {@code rgb}: its channels in the colour's proportions
+     * (within a few levels), as lighting scales a colour; a pixel where lighting has saturated a channel is left out.
+     */
+    private static double[] shadesOf(BufferedImage image, int rgb) {
+        int[] colour = {rgb >> 16 & 0xFF, rgb >> 8 & 0xFF, rgb & 0xFF};
+        int brightest = Math.max(colour[0], Math.max(colour[1], colour[2]));
+        java.util.List<Double> shades = new java.util.ArrayList<>();
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int p = image.getRGB(x, y);
+                int[] pixel = {p >> 16 & 0xFF, p >> 8 & 0xFF, p & 0xFF};
+                double k = (double) Math.max(pixel[0], Math.max(pixel[1], pixel[2])) / brightest;
+                boolean proportional = k > 0.05;
+                for (int c = 0; c < 3 && proportional; c++) {
+                    proportional = pixel[c] < 255 && Math.abs(pixel[c] - k * colour[c]) <= 12;
+                }
+                if (proportional && (p & 0xFFFFFF) != 0x555555) {
+                    shades.add(k);
+                }
+            }
+        }
+        return shades.stream().mapToDouble(Double::doubleValue).sorted().toArray();
     }
 
     @Test
@@ -176,8 +206,10 @@ class PreviewPageTest {
         cli.setErr(new PrintWriter(err, true));
         assertThat(cli.execute("--input", broken.toString(), "--output", dir.resolve("out.png").toString()))
                 .isEqualTo(RenderCommand.EXIT_BAD_SCENE);
-        // The CLI names the file as it was given; the page knows only the dropped file's name.
-        String expected = err.toString().strip().replace(broken.toString(), "broken.xml");
+        // The CLI names itself and the file as it was given; the page knows only the dropped file's name.
+        String said = err.toString().strip();
+        assertThat(said).startsWith("tick1: ");
+        String expected = said.substring("tick1: ".length()).replace(broken.toString(), "broken.xml");
 
         pick(broken);
         browser.waitUpTo(PATIENCE).until(ExpectedConditions.attributeToBe(By.tagName("body"), "data-status", "error"));
