@@ -231,9 +231,10 @@ class GradeCohortTest {
         assertThat(reasons.get("Copies The Reference")).contains("ClassNotFoundException");
         assertThat(reasons.get("Other Package")).contains("package gfx.tick1");
         assertThat(reasons.get("Latin One")).contains("not UTF-8");
-        // The reason names the property the probes found wrong, not the closest picture.
+        // The reason names the property the probes found wrong, not the closest picture; Moodle keeps the cell as
+        // HTML, so its "<" is written as "&lt;".
         assertThat(reasons.get("Mistake UNCLAMPED N DOT L"))
-                .contains("Your illuminate gives negative diffuse light when N.L < 0");
+                .contains("Your illuminate gives negative diffuse light when N.L &lt; 0");
         assertThat(reasons.values()).allMatch(reason -> !reason.contains("\n"));
     }
 

@@ -15,7 +15,7 @@ import java.nio.file.Path;
  * or the starter kit's untouched files, with one slip edited in the way a student would make it.
  * Every edit must find its text exactly once, so that an edit can never silently do nothing.
  */
-record StudentSolution(String sphere, String renderer) {
+public record StudentSolution(String sphere, String renderer) {
 
     static StudentSolution correct() {
         return new StudentSolution(resource("Sphere.java"), resource("Renderer.java"));
@@ -58,14 +58,16 @@ record StudentSolution(String sphere, String renderer) {
         return new Path[] {s, r};
     }
 
-    private static String replaceOnce(String source, String text, String replacement) {
+    /** {@code source} with its one {@code text} replaced; a text that is not there once fails the test. */
+    public static String replaceOnce(String source, String text, String replacement) {
         int first = source.indexOf(text);
         assertThat(first).as("the edit's text \"%s\" must be in the solution", text).isNotNegative();
         assertThat(source.indexOf(text, first + 1)).as("the edit's text \"%s\" must occur once", text).isNegative();
         return source.replace(text, replacement);
     }
 
-    private static String resource(String name) {
+    /** A file of the tests' correct solution, {@code students/correct/NAME}. */
+    public static String resource(String name) {
         try (InputStream in = StudentSolution.class.getResourceAsStream("/students/correct/" + name)) {
             assertThat(in).as("test resource students/correct/" + name).isNotNull();
             return new String(in.readAllBytes(), StandardCharsets.UTF_8);

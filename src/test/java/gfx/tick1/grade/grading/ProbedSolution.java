@@ -2,13 +2,10 @@ package gfx.tick1.grade.grading;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.grade.StudentSolution;
 import gfx.tick1.grade.harness.ProbeRunner;
 import gfx.tick1.grade.harness.StudentCompiler;
 import gfx.tick1.starter.StarterKit;
-import java.io.IOException;
-import java.io.InputStream;
-import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -23,15 +20,15 @@ import java.util.Map;
 record ProbedSolution(String sphere, String renderer) {
 
     static ProbedSolution correct() {
-        return new ProbedSolution(resource("Sphere.java"), resource("Renderer.java"));
+        return new ProbedSolution(StudentSolution.resource("Sphere.java"), StudentSolution.resource("Renderer.java"));
     }
 
     ProbedSolution sphere(String text, String replacement) {
-        return new ProbedSolution(replaceOnce(sphere, text, replacement), renderer);
+        return new ProbedSolution(StudentSolution.replaceOnce(sphere, text, replacement), renderer);
     }
 
     ProbedSolution renderer(String text, String replacement) {
-        return new ProbedSolution(sphere, replaceOnce(renderer, text, replacement));
+        return new ProbedSolution(sphere, StudentSolution.replaceOnce(renderer, text, replacement));
     }
 
     /** The correct solution with the body of intersectionWith after a, b and c written as {@code body}. */
@@ -74,22 +71,6 @@ record ProbedSolution(String sphere, String renderer) {
     /** The probes these two files fail. */
     List<Probe> failedProbes(Path folder) throws Exception {
         return ProbeFindings.of(probeLog(folder)).failedProbes();
-    }
-
-    private static String replaceOnce(String source, String text, String replacement) {
-        int first = source.indexOf(text);
-        assertThat(first).as("the edit's text \"%s\" must be in the solution", text).isNotNegative();
-        assertThat(source.indexOf(text, first + 1)).as("the edit's text \"%s\" must occur once", text).isNegative();
-        return source.replace(text, replacement);
-    }
-
-    private static String resource(String name) {
-        try (InputStream in = ProbedSolution.class.getResourceAsStream("/students/correct/" + name)) {
-            assertThat(in).as("test resource students/correct/" + name).isNotNull();
-            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
     }
 
     /** The compiled classes, loaded from memory, beside the JDK only. */
