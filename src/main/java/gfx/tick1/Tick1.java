@@ -9,6 +9,7 @@ import gfx.tick1.diagnose.DiagnoseCommand;
 import gfx.tick1.diff.DiffCommand;
 import gfx.tick1.grade.GradeCommand;
 import gfx.tick1.preview.PreviewCommand;
+import gfx.tick1.scene.Misspelling;
 import gfx.tick1.starter.StarterCommand;
 import java.io.PrintWriter;
 import java.util.ArrayList;
@@ -196,26 +197,8 @@ public final class Tick1 {
         }
         String word = unmatched.getUnmatched().get(0);
         List<String> close = unmatched.getSuggestions().stream()
-                .filter(candidate -> editDistance(word, candidate) <= Math.max(2, candidate.length() / 3)).toList();
+                .filter(candidate -> Misspelling.distance(word, candidate) <= Math.max(2, candidate.length() / 3))
+                .toList();
         return close.isEmpty() ? "" : "; did you mean " + String.join(" or ", close) + "?";
-    }
-
-    /** Levenshtein's distance: the fewest insertions, deletions and substitutions from a to b. */
-    static int editDistance(String a, String b) {
-        int[] previous = new int[b.length() + 1], current = new int[b.length() + 1];
-        for (int j = 0; j <= b.length(); j++) {
-            previous[j] = j;
-        }
-        for (int i = 1; i <= a.length(); i++) {
-            current[0] = i;
-            for (int j = 1; j <= b.length(); j++) {
-                int substitution = previous[j - 1] + (a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1);
-                current[j] = Math.min(substitution, Math.min(previous[j], current[j - 1]) + 1);
-            }
-            int[] swap = previous;
-            previous = current;
-            current = swap;
-        }
-        return previous[b.length()];
     }
 }

@@ -10,7 +10,7 @@ import java.util.Optional;
  * swaps of two neighbouring letters. A name counts as meant only within a third of its length,
  * so that a short name (x, y, z) is never offered for an unrelated word.
  */
-final class Misspelling {
+public final class Misspelling {
 
     private Misspelling() {
     }
@@ -22,7 +22,8 @@ final class Misspelling {
                 .min(Comparator.comparingInt((String name) -> distance(word, name)).thenComparing(name -> name));
     }
 
-    static int distance(String a, String b) {
+    /** The optimal string alignment distance from {@code a} to {@code b}: each edit, or swap of neighbours, is one. */
+    public static int distance(String a, String b) {
         int[][] d = new int[a.length() + 1][b.length() + 1];
         for (int i = 0; i <= a.length(); i++) {
             d[i][0] = i;
