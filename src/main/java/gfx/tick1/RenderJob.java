@@ -65,13 +65,20 @@ final class RenderJob {
     /** Stops the work of a job that is not wanted after all. */
     void cancel() {
         cancelled = true;
+        stopRows(new CancellationException("not the render asked for"), "not the render asked for");
+    }
+
+    /**
+     * No thread starts another row; and the PNG thread, waiting for the image or its rows, is told
+     * that neither will come, and why.
+     */
+    private void stopRows(Throwable cause, String why) {
         RowsInOrder current = rows;
         if (current != null) {
             current.cancel();
         }
-        // The PNG thread is waiting for the image or its rows: neither will come.
-        started.completeExceptionally(new CancellationException("not the render asked for"));
-        started.thenAccept(image -> image.abandon("not the render asked for"));
+        started.completeExceptionally(cause);
+        started.thenAccept(image -> image.abandon(why));
     }
 
     private void loadAndRender() {
@@ -124,12 +131,7 @@ final class RenderJob {
 
     private void fail(Throwable e) {
         rendered.completeExceptionally(e);
-        started.completeExceptionally(e);
-        RowsInOrder current = rows;
-        if (current != null) {
-            current.cancel();
-        }
-        started.thenAccept(image -> image.abandon(e.toString()));
+        stopRows(e, e.toString());
     }
 
     /** Encodes the rows into PNG bytes as they are finished. */
