@@ -69,12 +69,7 @@ class CompilingTest {
 
     @Test
     void whatARunWritesBesideItsClassesNeverReachesTheHiddenScenesRun() throws IOException {
-        StudentSolution marking = StudentSolution.correct().editRenderer("return image;", LEAVES_A_MARK);
-        Path sphere = Files.writeString(dir.resolve("Sphere.java"), marking.sphere());
-        Path renderer = Files.writeString(dir.resolve("Renderer.java"), marking.renderer());
-
-        CliRun grade = CliRun.of(withSmall("grade", "--sphere", sphere.toString(), "--renderer", renderer.toString(),
-                "--report", dir.resolve("report").toString()));
+        CliRun grade = gradeAlone(StudentSolution.correct().editRenderer("return image;", LEAVES_A_MARK));
 
         assertThat(grade.out()).as(grade.transcript()).contains("hidden.xml: PASS")
                 .contains("Congratulations! Your code passed the tester.");
@@ -114,10 +109,7 @@ class CompilingTest {
     @Test
     void aJobsWarmCompilerTakesNothingOfTheStudentsProcessLimit() throws IOException {
         StudentSolution counting = StudentSolution.correct().editRenderer("return image;", COUNTS_ITS_THREADS);
-        Path sphere = Files.writeString(dir.resolve("Sphere.java"), counting.sphere());
-        Path renderer = Files.writeString(dir.resolve("Renderer.java"), counting.renderer());
-        CliRun alone = CliRun.of(withSmall("grade", "--sphere", sphere.toString(), "--renderer", renderer.toString(),
-                "--report", dir.resolve("alone").toString()));
+        CliRun alone = gradeAlone(counting);
         java.util.regex.Matcher count = java.util.regex.Pattern.compile("started (\\d+) threads")
                 .matcher(alone.out());
         assertThat(count.find()).as(alone.transcript()).isTrue();
@@ -132,6 +124,14 @@ class CompilingTest {
         // a compiler under the student's user takes the dozen or more threads it has.
         assertThat(Integer.parseInt(count.group(1))).as("threads with the job's compiler alive beside it: " + row)
                 .isGreaterThanOrEqualTo(aloneCount - 2);
+    }
+
+    /** Grades one student's files with {@code tick1 grade --sphere --renderer}. */
+    private CliRun gradeAlone(StudentSolution solution) throws IOException {
+        Path sphere = Files.writeString(dir.resolve("Sphere.java"), solution.sphere());
+        Path renderer = Files.writeString(dir.resolve("Renderer.java"), solution.renderer());
+        return CliRun.of(withSmall("grade", "--sphere", sphere.toString(), "--renderer", renderer.toString(),
+                "--report", dir.resolve("alone").toString()));
     }
 
     /** Grades the cohort with one job, so that one warm compiler compiles every submission in order. */
