@@ -31,6 +31,8 @@ import java.util.jar.JarOutputStream;
  */
 public final class StudentProcess implements AutoCloseable {
 
+    /** The first heap of every JVM the harness runs in; it grows up to -Xmx as the code needs. */
+    private static final int FIRST_HEAP_MEGABYTES = 32;
     /** The compiler's heap when --memory is less: javac needs about this much for the starter code. */
     private static final int COMPILER_HEAP_MEGABYTES = 256;
 
@@ -435,6 +437,9 @@ public final class StudentProcess implements AutoCloseable {
         List<String> command = new ArrayList<>(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx" + request.heapMegabytes() + "m",
+                // A small first heap: the default (a 64th of the machine's memory) is fresh pages that fault in
+                // as the render allocates; its 640 x 480 render took 0.34 CPU seconds against 0.28 with this.
+                "-Xms" + Math.min(FIRST_HEAP_MEGABYTES, request.heapMegabytes()) + "m",
                 "-XX:MaxDirectMemorySize=32m",
                 "-XX:CompressedClassSpaceSize=64m",
                 "-XX:ReservedCodeCacheSize=64m",
