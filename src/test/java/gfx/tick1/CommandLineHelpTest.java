@@ -138,6 +138,35 @@ class CommandLineHelpTest {
         }
     }
 
+    /**
+     * Wrapping a help to a narrower terminal only moves line breaks to spaces: every word, file
+     * name and option (basic_scene.xml, index.html, docs/hard-cases.md, --width=PIXELS) reads as
+     * it does on one long line, at every width from picocli's narrowest, 55 columns, to 140.
+     */
+    @Test
+    void everyHelpBreaksLinesOnlyAtSpaces() {
+        for (String command : EVERY_HELP) {
+            CommandLine target = command(command);
+            target.setUsageHelpAutoWidth(false);
+            target.setUsageHelpWidth(1000);
+            List<String> words = words(target.getUsageMessage(CommandLine.Help.Ansi.OFF));
+            for (int width = 55; width <= 140; width++) {
+                target.setUsageHelpWidth(width);
+                List<String> wrapped = words(target.getUsageMessage(CommandLine.Help.Ansi.OFF));
+                assertThat(wrapped).as("%s --help at %d columns splits %s", ("tick1 " + command).strip(), width,
+                        firstSplit(wrapped, words)).isEqualTo(words);
+            }
+        }
+    }
+
+    @Test
+    void theHelpAsPrintedKeepsFileNamesWhole() {
+        for (String command : EVERY_HELP) {
+            assertThat(help(command)).as("%s --help", ("tick1 " + command).strip())
+                    .doesNotContainPattern("\\w\\.\\R\\s*(xml|html|png|csv|md|java|jpg)\\b");
+        }
+    }
+
     @Test
     void everyHelpStartsWithItsUsageLine() {
         for (String command : EVERY_HELP) {
@@ -193,6 +222,26 @@ class CommandLineHelpTest {
         CliRun run = command.isEmpty() ? CliRun.of("--help") : CliRun.of(command, "--help");
         assertThat(run.status()).as(run.transcript()).isZero();
         return run.out();
+    }
+
+    private static CommandLine command(String name) {
+        CommandLine commandLine = Tick1.commandLine(new RenderCommand());
+        return name.isEmpty() ? commandLine : commandLine.getSubcommands().get(name);
+    }
+
+    private static List<String> words(String text) {
+        return Arrays.asList(text.strip().split("\\s+"));
+    }
+
+    /** The first word of {@code wrapped} that is not the word in {@code whole}, and the word after it. */
+    private static String firstSplit(List<String> wrapped, List<String> whole) {
+        for (int i = 0; i < Math.min(wrapped.size(), whole.size()); i++) {
+            if (!wrapped.get(i).equals(whole.get(i))) {
+                return "'" + whole.get(i) + "' into '" + wrapped.get(i) + "' / '"
+                        + (i + 1 < wrapped.size() ? wrapped.get(i + 1) : "") + "'";
+            }
+        }
+        return "nothing";
     }
 
     /** The words of the usage lines of {@code tick1 COMMAND --help} at this width. */
