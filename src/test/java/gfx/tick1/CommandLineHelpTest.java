@@ -147,12 +147,9 @@ class CommandLineHelpTest {
     void everyHelpBreaksLinesOnlyAtSpaces() {
         for (String command : EVERY_HELP) {
             CommandLine target = command(command);
-            target.setUsageHelpAutoWidth(false);
-            target.setUsageHelpWidth(1000);
-            List<String> words = words(target.getUsageMessage(CommandLine.Help.Ansi.OFF));
+            List<String> words = words(usage(target, 1000));
             for (int width = 55; width <= 140; width++) {
-                target.setUsageHelpWidth(width);
-                List<String> wrapped = words(target.getUsageMessage(CommandLine.Help.Ansi.OFF));
+                List<String> wrapped = words(usage(target, width));
                 assertThat(wrapped).as("%s --help at %d columns splits %s", ("tick1 " + command).strip(), width,
                         firstSplit(wrapped, words)).isEqualTo(words);
             }
@@ -218,10 +215,8 @@ class CommandLineHelpTest {
     void everyHelpOpensWithASummaryOfAtMostTwoLines() {
         for (String command : COMMANDS) {
             CommandLine target = command(command);
-            target.setUsageHelpAutoWidth(false);
-            target.setUsageHelpWidth(80);
             String summary = target.getCommandSpec().usageMessage().description()[0];
-            List<String> lines = target.getUsageMessage(CommandLine.Help.Ansi.OFF).lines().toList();
+            List<String> lines = usage(target, 80).lines().toList();
             int first = 0;
             while (!lines.get(first).startsWith(summary.substring(0, 20))) {
                 first++;
@@ -252,6 +247,13 @@ class CommandLineHelpTest {
     private static CommandLine command(String name) {
         CommandLine commandLine = Tick1.commandLine(new RenderCommand());
         return name.isEmpty() ? commandLine : commandLine.getSubcommands().get(name);
+    }
+
+    /** The help of {@code target} laid out at this width, without colour. */
+    private static String usage(CommandLine target, int width) {
+        target.setUsageHelpAutoWidth(false);
+        target.setUsageHelpWidth(width);
+        return target.getUsageMessage(CommandLine.Help.Ansi.OFF);
     }
 
     private static List<String> words(String text) {
