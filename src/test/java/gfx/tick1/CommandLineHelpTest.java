@@ -156,6 +156,33 @@ class CommandLineHelpTest {
         }
     }
 
+    /**
+     * Wherever picocli's own layout splits no word, tick1's help below the usage lines is exactly
+     * picocli's: breaking only at spaces changes where a line breaks, and nothing else.
+     */
+    @Test
+    void whereNoWordIsSplitTheHelpIsPicoclisOwnLayout() {
+        int compared = 0;
+        for (String command : EVERY_HELP) {
+            CommandLine ours = command(command);
+            CommandLine picocli = command(command);
+            picocli.setHelpFactory(CommandLine.Help::new);
+            String summary = ours.getCommandSpec().usageMessage().description()[0].substring(0, 12);
+            List<String> words = words(usage(ours, 1000));
+            for (int width = 55; width <= 140; width++) {
+                String theirs = usage(picocli, width);
+                if (words(theirs).equals(words)) {
+                    String mine = usage(ours, width);
+                    assertThat(mine.substring(mine.indexOf(summary)))
+                            .as("%s --help at %d columns", ("tick1 " + command).strip(), width)
+                            .isEqualTo(theirs.substring(theirs.indexOf(summary)));
+                    compared++;
+                }
+            }
+        }
+        assertThat(compared).as("helps that picocli lays out without splitting a word").isGreaterThan(100);
+    }
+
     @Test
     void theHelpAsPrintedKeepsFileNamesWhole() {
         for (String command : EVERY_HELP) {
