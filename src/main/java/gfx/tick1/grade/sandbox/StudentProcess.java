@@ -108,7 +108,8 @@ public final class StudentProcess implements AutoCloseable {
         this.sharedArchive = sharedArchive;
         this.sandboxed = new SandboxedProcess(sandbox);
         this.compilerFolder = compilerFolder;
-        this.compiler = compilerFolder == null ? null : new CompileServer(sandbox, compilerFolder, this::startCompiler);
+        this.compiler = compilerFolder == null ? null : new CompileServer(sandbox.forCompiler(), compilerFolder,
+                this::startCompiler);
     }
 
     /**
@@ -119,7 +120,7 @@ public final class StudentProcess implements AutoCloseable {
      */
     public StudentProcess withWarmCompiler(Path folder) throws IOException {
         Files.createDirectory(folder);
-        sandbox.share(folder, true);
+        sandbox.forCompiler().share(folder, true);
         return new StudentProcess(sandbox, harness, memoryMegabytes, sharedArchive, folder);
     }
 
@@ -181,7 +182,7 @@ public final class StudentProcess implements AutoCloseable {
         }
     }
 
-    /** The compiler's JVM, for {@link CompileServer}: on the job's core, with the compiler's heap. */
+    /** The compiler's JVM, for {@link CompileServer}: on the job's core, under the compiler's user, with its heap. */
     private SandboxedProcess.Started startCompiler(Duration timeLimit) throws IOException {
         Request request = new Request(List.of(StudentHarness.COMPILE_SERVER, COMPILER),
                 List.of(new Bind(compilerFolder, COMPILER, true)), timeLimit, null, Duration.ZERO, compilerHeap(),
@@ -189,7 +190,8 @@ public final class StudentProcess implements AutoCloseable {
         // Its processor time is bounded as that of the compiles one start serves.
         int cpuSeconds = (int) Math.ceil(timeLimit.toMillis() / 1000.0) * CompileServer.COMPILES_PER_START + 1;
         Launch launch = launch(request);
-        return SandboxedProcess.start(sandbox, launch.command(), launch.binds(), cpuSeconds, compilerHeap(), true);
+        return SandboxedProcess.start(sandbox.forCompiler(), launch.command(), launch.binds(), cpuSeconds,
+                compilerHeap(), true);
     }
 
     private int compilerHeap() {
