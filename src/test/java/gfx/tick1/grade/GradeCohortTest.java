@@ -39,7 +39,7 @@ import org.openqa.selenium.support.ui.ExpectedConditions;
  */
 class GradeCohortTest {
 
-    private static final String[] SMALL = {"--width", "160", "--height", "120", "--time-limit", "10"};
+    private static final String[] SMALL = {"--width", "160", "--height", "120"};
     private static final String NEAR_ROOT = "double s = s1 > 0 ? s1 : s2;";
 
     @TempDir
@@ -62,10 +62,14 @@ class GradeCohortTest {
                 shared.resolve("report")));
     }
 
+    /** grade's arguments for a cohort: small images, and a time limit of 10 s unless {@code more} gives one. */
     private static String[] gradeArguments(Path submissions, Path report, String... more) {
         List<String> args = new ArrayList<>(List.of("grade", "--submissions", submissions.toString(),
                 "--report", report.toString()));
         args.addAll(List.of(SMALL));
+        if (!List.of(more).contains("--time-limit")) {
+            args.addAll(List.of("--time-limit", "10"));
+        }
         args.addAll(List.of(more));
         return args.toArray(String[]::new);
     }
@@ -368,10 +372,13 @@ class GradeCohortTest {
         Process grade = gradeInAJvmOfItsOwn(dir, gradeArguments(moodleZip(dir.resolve("a.zip"), looping), report,
                 "--time-limit", "600"));
         // Wait (at most two minutes) for the student's code to be running.
-        for (int i = 0; i < 1200 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
-                .contains("StudentHarness render")); i++) {
+        for (int i = 0; i < 1200 && grade.isAlive() && grade.descendants().noneMatch(p -> p.info().commandLine()
+                .orElse("").contains("StudentHarness render")); i++) {
             Thread.sleep(100);
         }
+        assertThat(grade.descendants().map(p -> p.info().commandLine().orElse("")))
+                .as("the student's code is running: " + Files.readString(dir.resolve("grade.log")))
+                .anyMatch(line -> line.contains("StudentHarness render"));
         List<ProcessHandle> running = grade.descendants().toList();
         grade.destroy();   // SIGTERM
         assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
