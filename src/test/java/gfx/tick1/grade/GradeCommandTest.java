@@ -32,10 +32,20 @@ class GradeCommandTest {
     @TempDir
     Path dir;
 
+    /** Where the one grade that several tests read is made: see {@link #unclampedNdotL}. */
+    @TempDir
+    static Path shared;
+    private static CliRun unclampedNdotL;
+
     private CliRun grade(StudentSolution solution, String... options) throws IOException {
-        Path[] files = solution.writeTo(dir.resolve("student"));
+        return grade(dir, solution, options);
+    }
+
+    /** Grades {@code solution}, written into {@code folder}/student, with its report in {@code folder}/report. */
+    private static CliRun grade(Path folder, StudentSolution solution, String... options) throws IOException {
+        Path[] files = solution.writeTo(folder.resolve("student"));
         List<String> args = new java.util.ArrayList<>(List.of("grade", "--sphere", files[0].toString(),
-                "--renderer", files[1].toString(), "--report", dir.resolve("report").toString()));
+                "--renderer", files[1].toString(), "--report", folder.resolve("report").toString()));
         args.addAll(List.of(SMALL));
         args.addAll(List.of(options));
         return CliRun.of(args.toArray(String[]::new));
@@ -126,13 +136,24 @@ class GradeCommandTest {
                         + "where it starts", "  reread: handout section 4, steps 4 to 6 (a hit is at s > 0)");
     }
 
+    /**
+     * The grade, in {@link #shared}, of a solution whose illuminate leaves N.L unclamped, which fails
+     * both scenes: graded once, on first use, for the tests that read what it printed and wrote.
+     */
+    private static synchronized CliRun unclampedNdotL() throws IOException {
+        if (unclampedNdotL == null) {
+            unclampedNdotL = grade(shared, StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
+        }
+        return unclampedNdotL;
+    }
+
     @Test
     void aFailingSceneLeavesItsHeatMapWhereTheReportSays() throws IOException {
-        CliRun run = grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
-        Path heatMap = dir.resolve("report").resolve("1-tick1-diff.png");
+        CliRun run = unclampedNdotL();
+        Path heatMap = shared.resolve("report").resolve("1-tick1-diff.png");
         assertThat(run.out()).contains("heat map: " + heatMap);
         assertThat(heatMap).exists();
-        assertThat(dir.resolve("report").resolve("1-tick1-yours.png")).exists();
+        assertThat(shared.resolve("report").resolve("1-tick1-yours.png")).exists();
     }
 
     @Test
@@ -209,7 +230,14 @@ class GradeCommandTest {
 
     @Test
     void theReportFolderShowsOnlyThisGradesImages() throws IOException {
-        grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
+        // The report folder as a failing grade left it, with the organiser's own file beside the images.
+        assertThat(unclampedNdotL().status()).isEqualTo(GradeCommand.EXIT_FAIL);
+        Files.createDirectories(dir.resolve("report"));
+        try (Stream<Path> earlier = Files.list(shared.resolve("report"))) {
+            for (Path image : earlier.toList()) {
+                Files.copy(image, dir.resolve("report").resolve(image.getFileName()));
+            }
+        }
         assertThat(dir.resolve("report").resolve("1-tick1-diff.png")).exists();
         Files.writeString(dir.resolve("report").resolve("notes.txt"), "the organiser's own file");
         CliRun run = grade(StudentSolution.correct());
@@ -221,9 +249,9 @@ class GradeCommandTest {
 
     @Test
     void aFailingHiddenSceneIsExplainedByFiguresAndDiagnosisWithoutImages() throws IOException {
-        CliRun run = grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
+        CliRun run = unclampedNdotL();
         assertThat(run.out()).contains("hidden.xml: FAIL", "(a hidden scene: no images are written for it)");
-        try (Stream<Path> files = Files.list(dir.resolve("report"))) {
+        try (Stream<Path> files = Files.list(shared.resolve("report"))) {
             assertThat(files.map(f -> f.getFileName().toString())).allMatch(name -> name.startsWith("1-tick1-"));
         }
     }
