@@ -86,8 +86,8 @@ final class CohortSection {
                 | --- | ---: |
                 | wall time per submission (whole grade / submissions) | %.3f |
                 | whole grade, wall | %.1f |
-                | median per submission: compile (the sandbox, the JVM's start, javac) | %.3f |
-                | median per submission: render (tick1.xml in the compiler's JVM, the hidden scene in another) | %.3f |
+                | median per submission: compile (by the job's warm compiler, in the sandbox) | %.3f |
+                | median per submission: render (tick1.xml with the probes, then the hidden scene) | %.3f |
                 | median per submission: compare (with the references, explanations and images of failures) | %.3f |
                 | median per submission: total, one job's view | %.3f |
                 | per submission: the control groups (%d runs, each making, joining, removing one) | %.4f |

@@ -17,7 +17,7 @@ class CohortSectionTest {
         assertThat(section).startsWith("## Grading a cohort")
                 .contains("100 correct solutions", "2 at a time", "100 of 100 passed")
                 .contains("| wall time per submission (whole grade / submissions) | 0.800 |")
-                .contains("compile (the sandbox, the JVM's start, javac) | 0.900 |")
+                .contains("compile (by the job's warm compiler, in the sandbox) | 0.900 |")
                 .contains("| 0.600 |", "| 0.050 |", "| 1.600 |")
                 .contains("the control groups (2 runs, each making, joining, removing one)", "| 0.0042 |");
     }

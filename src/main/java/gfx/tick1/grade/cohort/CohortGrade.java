@@ -211,6 +211,9 @@ public final class CohortGrade {
             } finally {
                 pool.shutdownNow();
                 pool.awaitTermination(1, TimeUnit.MINUTES);
+                synchronized (processes) {
+                    processes.forEach(StudentProcess::close);   // the jobs' warm compilers
+                }
                 progress.finish();
             }
         }
@@ -271,7 +274,10 @@ public final class CohortGrade {
                 "FAILED: not graded: " + why + "; the course staff must grade it again", List.of(), Duration.ZERO);
     }
 
-    /** One job: a folder, a sandbox user and a process of its own, made when it first grades. */
+    /**
+     * One job: a folder, a sandbox user and a process of its own, made when it first grades, with
+     * a warm compiler that compiles every submission the job grades.
+     */
     private final class Job {
         private final int number;
         private final Path folder;
@@ -292,7 +298,7 @@ public final class CohortGrade {
                 Files.createDirectory(folder);
                 grading.copyScenes(folder);
                 jobSandbox.share(folder, false);
-                StudentProcess process = shared.in(jobSandbox);
+                StudentProcess process = shared.in(jobSandbox).withWarmCompiler(folder.resolve("compiler"));
                 processes.add(process);
                 grader = new SubmissionGrader(grading, jobSandbox, process, folder);
             }

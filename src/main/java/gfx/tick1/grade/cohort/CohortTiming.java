@@ -46,7 +46,10 @@ public final class CohortTiming {
         }
     }
 
-    /** The sandbox runs of one submission: compiling with tick1.xml, and the hidden scene. */
+    /**
+     * The sandbox runs of one submission, each in a control group of its own: tick1.xml with the
+     * probes, and the hidden scene (the job's warm compiler has one group for all its compiles).
+     */
     public static final int RUNS_PER_SUBMISSION = 2;
     /** How many times the parts of a control group's cost are timed. */
     private static final int CGROUP_PROBES = 51;
@@ -68,8 +71,8 @@ public final class CohortTiming {
     }
 
     /**
-     * As above, with {@code memoryMegabytes} of heap for the student's code: under 256 MiB, the
-     * compiler's least, tick1.xml runs in a JVM of its own (three JVM starts a submission).
+     * As above, with {@code memoryMegabytes} of heap for the student's code (the compiler has at
+     * least 256 MiB whatever it is).
      */
     public static Measured measure(String sphere, String renderer, int count, int jobs, int width, int height,
             int memoryMegabytes) throws IOException, InterruptedException, Unavailable {

@@ -87,9 +87,8 @@ public final class SubmissionGrader {
     private record Sources(String sphere, String renderer) {
     }
 
-    /** How compiling went, and when the public scenes ran in the compiler's JVM, what they gave. */
-    private record Started(StudentProcess.Compiled compiled, StudentProcess.Result publicResult, Path classes,
-            long renderStart) {
+    /** How compiling went, where the classes are, and when it ended. */
+    private record Started(StudentProcess.Compiled compiled, Path classes, long renderStart) {
     }
 
     /** Every scene's outcome and traced samples in grading order, the probes' log, and what the code printed. */
@@ -160,32 +159,25 @@ public final class SubmissionGrader {
     }
 
     /**
-     * Compiles. Where the heap allows, the public scenes (and the probes) run in the compiler's
-     * JVM: one JVM start fewer.
+     * Compiles, in a JVM that runs none of the student's code (a cohort job's warm compiler, or a
+     * JVM of its own), into a folder of the grader's that every later run is given read-only: so
+     * that nothing a run of the code writes reaches the next run, the hidden scenes' above all.
      */
     private Started start(Submission submission, Path sources, Path work) throws IOException, InterruptedException {
-        Grading.Limits limits = grading.limits();
-        List<GradingScene> publicScenes = grading.batch(false);
-        long phaseStart = System.nanoTime();
-        if (process.compilesAndRendersInOneRun() && !publicScenes.isEmpty()) {
-            Path publicOutput = childFolder(work, "public-output");
-            StudentProcess.CompiledAndRendered run = process.compileAndRender(sources,
-                    Grading.batchScenes(scenes, false), sceneFiles(publicScenes.size()), publicOutput,
-                    submission.sphere().path(), submission.renderer().path(), limits.width(), limits.height(),
-                    limits.timeLimit(), true);
-            return new Started(run.compiled(), run.rendered(), publicOutput.resolve(StudentHarness.CLASSES_FOLDER),
-                    phaseStart + run.compileNanos());
-        }
         Path compiledFolder = childFolder(work, "compiled");
         StudentProcess.Compiled compiled = process.compile(sources, compiledFolder, submission.sphere().path(),
-                submission.renderer().path(), limits.timeLimit());
-        return new Started(compiled, null, compiledFolder.resolve(StudentHarness.CLASSES_FOLDER), System.nanoTime());
+                submission.renderer().path(), grading.limits().timeLimit());
+        Path classes = compiledFolder.resolve(StudentHarness.CLASSES_FOLDER);
+        if (compiled.compiled()) {
+            sandbox.share(classes, false);
+        }
+        return new Started(compiled, classes, System.nanoTime());
     }
 
     /**
-     * Runs what is left to run: the public scenes (with the probes) unless they ran with the
-     * compiler, then the hidden ones, separately, so that what the student's code prints while it
-     * has a hidden scene open is never shown. All within the one time limit.
+     * Runs the public scenes (with the probes), then the hidden ones in a JVM of their own, so that
+     * what the student's code prints while it has a hidden scene open is never shown. All within
+     * the one time limit.
      */
     private Rendered renderAll(Started started, Path work) throws IOException, InterruptedException {
         Grading.Limits limits = grading.limits();
@@ -198,20 +190,16 @@ public final class SubmissionGrader {
             if (batch.isEmpty()) {
                 continue;
             }
-            StudentProcess.Result result = !hidden && started.publicResult() != null ? started.publicResult()
-                    : null;
             Duration left = Duration.ofNanos(deadline - System.nanoTime());
-            if (result == null && left.toMillis() < 1) {
+            if (left.toMillis() < 1) {
                 batch.forEach(scene -> outcomes.add(new Outcome.Failed(
                         "not rendered: the time limit was used up by the earlier scenes")));
                 batch.forEach(scene -> traces.add(null));
                 continue;
             }
-            if (result == null) {
-                result = process.render(started.classes(), Grading.batchScenes(scenes, hidden),
-                        sceneFiles(batch.size()), childFolder(work, (hidden ? "hidden" : "public") + "-run"),
-                        limits.width(), limits.height(), left, limits.timeLimit(), !hidden);
-            }
+            StudentProcess.Result result = process.render(started.classes(), Grading.batchScenes(scenes, hidden),
+                    sceneFiles(batch.size()), childFolder(work, (hidden ? "hidden" : "public") + "-run"),
+                    limits.width(), limits.height(), left, limits.timeLimit(), !hidden);
             outcomes.addAll(result.outcomes());
             traces.addAll(result.traces());
             if (!hidden) {

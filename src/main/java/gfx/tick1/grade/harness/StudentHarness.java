@@ -2,7 +2,9 @@ package gfx.tick1.grade.harness;
 
 import gfx.tick1.grade.sandbox.ChildOutput;
 import java.awt.image.BufferedImage;
+import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStreamReader;
 import java.lang.reflect.InvocationTargetException;
 import java.net.URL;
 import java.net.URLClassLoader;
@@ -24,6 +26,12 @@ import javax.imageio.ImageIO;
  *       in SOURCES ({@code Sphere.java} and {@code Renderer.java} reported under the names given,
  *       the others as starter code) into {@code OUTPUT/classes}; exits 0, or writes the errors,
  *       separated by NUL characters, to {@code OUTPUT/errors} and exits 1.
+ *   <li>{@code compile-server FOLDER}: the warm compiler. For each line {@code N} it reads on
+ *       standard input, compiles {@code FOLDER/N/sources} into {@code FOLDER/N/output} as
+ *       {@code compile} does, with the two names given in {@code FOLDER/N/names} (separated by a
+ *       NUL character), then prints {@code compiled N STATUS} (the status {@code compile} exits
+ *       with). javac runs with {@code -proc:none}, so no code of the student's ever runs in it,
+ *       and the JIT's work on javac serves every compile after the first.
  *   <li>{@code render --compile SOURCES SPHERE-NAME RENDERER-NAME OUTPUT WIDTH HEIGHT SCENE...}:
  *       compiles as {@code compile} does, logs "compiled" in {@code OUTPUT/progress} before any
  *       code of the student's is loaded, and renders as {@code render} does with
@@ -52,6 +60,12 @@ public final class StudentHarness {
     public static final int DOES_NOT_COMPILE = 3;
     /** The option of {@code render} that compiles first. */
     public static final String COMPILE_FIRST = "--compile";
+    /** The command of the warm compiler. */
+    public static final String COMPILE_SERVER = "compile-server";
+    /** The file of a warm compile's request that names the two files, separated by a NUL character. */
+    public static final String NAMES_FILE = "names";
+    /** The request's folders for the sources and for what compiling gave. */
+    public static final String SOURCES_FOLDER = "sources", OUTPUT_FOLDER = "output";
     /** The line of the progress log that says compiling is over and the student's code may run. */
     public static final String COMPILED = "compiled";
     /** The option of {@code render}, before any other, that runs the probes after the scenes. */
@@ -72,6 +86,10 @@ public final class StudentHarness {
     public static void main(String[] arguments) throws Exception {
         boolean probes = arguments.length > 1 && arguments[1].equals(PROBES);
         String[] args = probes ? dropSecond(arguments) : arguments;
+        if (args[0].equals(COMPILE_SERVER)) {
+            serveCompiles(Path.of(args[1]));
+            return;
+        }
         if (args[0].equals("compile")) {
             System.exit(compile(Path.of(args[1]), Path.of(args[2]), args[3], args[4]));
         }
@@ -94,6 +112,21 @@ public final class StudentHarness {
         List<String> rest = new ArrayList<>(List.of(args));
         rest.remove(1);
         return rest.toArray(new String[0]);
+    }
+
+    /** The warm compiler's loop: one request a line, until standard input ends. */
+    private static void serveCompiles(Path folder) throws Exception {
+        BufferedReader requests = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
+        for (String request; (request = requests.readLine()) != null; ) {
+            if (!request.matches("[0-9]{1,9}")) {
+                throw new IllegalArgumentException("not a request number: " + request);
+            }
+            Path asked = folder.resolve(request);
+            String[] names = Files.readString(asked.resolve(NAMES_FILE), StandardCharsets.UTF_8).split("\0", 2);
+            int status = compile(asked.resolve(SOURCES_FOLDER), asked.resolve(OUTPUT_FOLDER), names[0], names[1]);
+            System.out.println(COMPILED + " " + request + " " + status);
+            System.out.flush();
+        }
     }
 
     private static int compile(Path sources, Path output, String sphereName, String rendererName) throws Exception {

@@ -1,6 +1,7 @@
 package gfx.tick1.grade.sandbox;
 
 import java.io.IOException;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -26,6 +27,10 @@ final class Cgroup implements AutoCloseable {
     private static final Path SH = Path.of("/bin/sh");
     private static final long CPU_PERIOD_MICROS = 100_000;
     private static final AtomicLong NEXT = new AtomicLong();
+    /** How many names a new group may try, when earlier processes left groups under this process id. */
+    private static final int NAME_TRIES = 1000;
+    /** How many times the removal of a group is tried, a millisecond apart. */
+    private static final int REMOVE_TRIES = 50;
 
     /** Where groups can be made: the parent of each controller's group (one folder for v2). */
     record Place(boolean v2, Map<String, Path> parents) {
@@ -119,12 +124,20 @@ final class Cgroup implements AutoCloseable {
 
     /** A new group in {@code place} held to {@code totals}. */
     static Cgroup create(Place place, Totals totals) throws IOException {
-        String name = "tick1-" + ProcessHandle.current().pid() + "-" + NEXT.incrementAndGet();
         Map<String, Path> groups = new LinkedHashMap<>();
         Cgroup cgroup = new Cgroup(place, groups, totals);
         try {
-            for (Map.Entry<String, Path> parent : place.parents().entrySet()) {
-                groups.put(parent.getKey(), Files.createDirectory(parent.getValue().resolve(name)));
+            for (int tries = 1; groups.isEmpty(); tries++) {
+                try {
+                    makeGroups(place, "tick1-" + ProcessHandle.current().pid() + "-" + NEXT.incrementAndGet(), groups);
+                } catch (FileAlreadyExistsException e) {
+                    // A group left by an earlier process with this process id: take the next name.
+                    cgroup.close();
+                    groups.clear();
+                    if (tries == NAME_TRIES) {
+                        throw e;
+                    }
+                }
             }
             cgroup.limit();
         } catch (IOException | RuntimeException e) {
@@ -132,6 +145,12 @@ final class Cgroup implements AutoCloseable {
             throw e instanceof IOException io ? io : new IOException(e);
         }
         return cgroup;
+    }
+
+    private static void makeGroups(Place place, String name, Map<String, Path> groups) throws IOException {
+        for (Map.Entry<String, Path> parent : place.parents().entrySet()) {
+            groups.put(parent.getKey(), Files.createDirectory(parent.getValue().resolve(name)));
+        }
     }
 
     private void limit() throws IOException {
@@ -211,14 +230,29 @@ final class Cgroup implements AutoCloseable {
         return 0;
     }
 
-    /** Removes the groups; the run's processes have all ended by then. */
+    /**
+     * Removes the groups; the run's processes have all ended by then. The kernel may still count
+     * a process that has just been reaped (the pids and cpu controllers refuse to remove a group
+     * until it is gone), so a refused removal is tried again for a few milliseconds.
+     */
     @Override
     public void close() {
         for (Path group : groups.values()) {
-            try {
-                Files.deleteIfExists(group);
-            } catch (IOException e) {
-                // A group that is not empty yet (a process still exiting): it is empty soon, and small.
+            for (int tries = 1; ; tries++) {
+                try {
+                    Files.deleteIfExists(group);
+                    break;
+                } catch (IOException e) {
+                    if (tries == REMOVE_TRIES) {
+                        break;   // still busy: an empty group is small, and its name is never taken again
+                    }
+                    try {
+                        Thread.sleep(1);
+                    } catch (InterruptedException interrupted) {
+                        Thread.currentThread().interrupt();
+                        break;
+                    }
+                }
             }
         }
     }

@@ -72,12 +72,9 @@ final class SandboxedProcess {
             throw new InterruptedException("the grade was stopped");
         }
         int cpuSeconds = (int) Math.ceil(request.timeLimit().plus(request.thenLimit()).toMillis() / 1000.0) + 1;
-        try (Cgroup cgroup = sandbox.cgroupFor(new Cgroup.Totals(
-                (long) (request.heapMegabytes() + TOTAL_BEYOND_HEAP_MEGABYTES) << 20, Sandbox.PROCESSES_LIMIT,
-                request.studentCode()))) {
-            Process process = Sandbox.processFor(sandbox.wrap(command, request.binds(), cpuSeconds,
-                    request.heapMegabytes() + NON_HEAP_MEGABYTES, request.studentCode(), cgroup))
-                    .redirectErrorStream(true).start();
+        try (Started started = start(sandbox, command, request.binds(), cpuSeconds, request.heapMegabytes(),
+                request.studentCode())) {
+            Process process = started.process();
             running = process;
             try {
                 if (stopped) {
@@ -93,14 +90,54 @@ final class SandboxedProcess {
                 }
                 tail.join(1000);
                 kill(process);
-                String reached = cgroup == null ? null : cgroup.limitReached();
+                String reached = started.limitReached();
                 return new Run(waited.finished() && waited.overOutputCap() == null, process.exitValue(),
                         ChildOutput.printable(tail.text()), waited.compiledAt() >= 0, waited.compileNanos(),
                         waited.overOutputCap() != null ? waited.overOutputCap() : reached);
             } finally {
-                kill(process);
                 running = null;
             }
+        }
+    }
+
+    /**
+     * A process started in the sandbox and not yet waited for, with its control group (or null);
+     * closing it kills the process and everything it started, then removes the group.
+     */
+    record Started(Process process, Cgroup cgroup) implements AutoCloseable {
+
+        /** The total the run reached, in words for the student, or null. */
+        String limitReached() {
+            return cgroup == null ? null : cgroup.limitReached();
+        }
+
+        @Override
+        public void close() {
+            kill(process);
+            if (cgroup != null) {
+                cgroup.close();
+            }
+        }
+    }
+
+    /**
+     * Starts {@code command} in {@code sandbox} with {@code binds}, at most {@code cpuSeconds} of
+     * processor time, a heap of {@code heapMegabytes} and the address space and totals that go
+     * with it; on one core when {@code oneCore}. Its standard streams are the caller's to use.
+     */
+    static Started start(Sandbox sandbox, List<String> command, List<Bind> binds, int cpuSeconds, int heapMegabytes,
+            boolean oneCore) throws IOException {
+        Cgroup cgroup = sandbox.cgroupFor(new Cgroup.Totals(
+                (long) (heapMegabytes + TOTAL_BEYOND_HEAP_MEGABYTES) << 20, Sandbox.PROCESSES_LIMIT, oneCore));
+        try {
+            Process process = Sandbox.processFor(sandbox.wrap(command, binds, cpuSeconds,
+                    heapMegabytes + NON_HEAP_MEGABYTES, oneCore, cgroup)).redirectErrorStream(true).start();
+            return new Started(process, cgroup);
+        } catch (IOException | RuntimeException e) {
+            if (cgroup != null) {
+                cgroup.close();
+            }
+            throw e;
         }
     }
 

@@ -29,14 +29,14 @@ import java.util.jar.JarOutputStream;
  * that holds the harness's classes and nothing else of this program. On the time limit the sandbox is killed,
  * and with it everything the student's code started.
  */
-public final class StudentProcess {
+public final class StudentProcess implements AutoCloseable {
 
     /** The compiler's heap when --memory is less: javac needs about this much for the starter code. */
     private static final int COMPILER_HEAP_MEGABYTES = 256;
 
     /** Where the harness's classes, the compiled classes, scenes and output appear inside the sandbox. */
     static final String HARNESS = "/harness", SOURCES = "/sources", CLASSES = "/classes", SCENES = "/scenes",
-            OUTPUT = "/output", ARCHIVE = "/archive";
+            OUTPUT = "/output", ARCHIVE = "/archive", COMPILER = "/compiler";
     /** The harness's class path, a jar in the harness folder. */
     static final String HARNESS_JAR = "harness.jar";
     /** The class data sharing archive's name in its folder. */
@@ -87,21 +87,40 @@ public final class StudentProcess {
     /** The folder holding {@value #SHARED_ARCHIVE}, or null. */
     private final Path sharedArchive;
     private final SandboxedProcess sandboxed;
+    /** The folder of the warm compiler's requests, or null. */
+    private final Path compilerFolder;
+    /** The warm compiler, or null: each compile is then a JVM of its own. */
+    private final CompileServer compiler;
 
     /**
      * Runs the harness whose classes are in {@code harness}, in {@code sandbox}, with
      * {@code memoryMegabytes} of heap.
      */
     public StudentProcess(Sandbox sandbox, Path harness, int memoryMegabytes) {
-        this(sandbox, harness, memoryMegabytes, null);
+        this(sandbox, harness, memoryMegabytes, null, null);
     }
 
-    private StudentProcess(Sandbox sandbox, Path harness, int memoryMegabytes, Path sharedArchive) {
+    private StudentProcess(Sandbox sandbox, Path harness, int memoryMegabytes, Path sharedArchive,
+            Path compilerFolder) {
         this.sandbox = sandbox;
         this.harness = harness;
         this.memoryMegabytes = memoryMegabytes;
         this.sharedArchive = sharedArchive;
         this.sandboxed = new SandboxedProcess(sandbox);
+        this.compilerFolder = compilerFolder;
+        this.compiler = compilerFolder == null ? null : new CompileServer(sandbox, compilerFolder, this::startCompiler);
+    }
+
+    /**
+     * The same process with a warm compiler of its own ({@link CompileServer}), which exchanges
+     * sources and classes through {@code folder}, a new folder: for a cohort's job, which compiles
+     * one submission after another. Every compile then runs in it, and no code runs in the JVM
+     * that compiled it; {@link #close()} ends it.
+     */
+    public StudentProcess withWarmCompiler(Path folder) throws IOException {
+        Files.createDirectory(folder);
+        sandbox.share(folder, true);
+        return new StudentProcess(sandbox, harness, memoryMegabytes, sharedArchive, folder);
     }
 
     /**
@@ -110,16 +129,79 @@ public final class StudentProcess {
      */
     public Compiled compile(Path sources, Path output, String sphereName, String rendererName, Duration timeLimit)
             throws IOException, InterruptedException {
+        if (compiler != null) {
+            return compileWarm(sources, output, sphereName, rendererName, timeLimit);
+        }
         Run run = run(new Request(List.of("compile", SOURCES, OUTPUT, sphereName, rendererName),
                 List.of(new Bind(sources, SOURCES, false), new Bind(output, OUTPUT, true)),
-                timeLimit, null, Duration.ZERO, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false,
-                archiveOption(), output));
+                timeLimit, null, Duration.ZERO, compilerHeap(), false, archiveOption(), output));
         return compiled(run, output, timeLimit);
     }
 
-    /** Whether one JVM can compile and then run the code: its heap is enough for the compiler. */
+    /**
+     * Compiles with the warm compiler, then copies the class files into {@code output}/classes, a
+     * folder of the grader's: the JVMs that run the code are given that copy, read-only, never
+     * the folder the compiler wrote.
+     */
+    private Compiled compileWarm(Path sources, Path output, String sphereName, String rendererName,
+            Duration timeLimit) throws IOException, InterruptedException {
+        Path request = compiler.newRequest();
+        try {
+            try (var files = Files.list(sources)) {
+                for (Path file : files.toList()) {
+                    Files.copy(file, request.resolve(StudentHarness.SOURCES_FOLDER).resolve(file.getFileName()));
+                }
+            }
+            Path written = request.resolve(StudentHarness.OUTPUT_FOLDER);
+            Compiled compiled = compiled(compiler.compile(request, sphereName, rendererName, timeLimit), written,
+                    timeLimit);
+            if (compiled.failure() != null) {
+                compiler.close();   // whatever stopped this compile, the next one gets a fresh compiler
+            } else if (compiled.compiled()) {
+                copyClasses(written.resolve(StudentHarness.CLASSES_FOLDER),
+                        output.resolve(StudentHarness.CLASSES_FOLDER));
+            }
+            return compiled;
+        } finally {
+            WorkFolder.delete(request);
+        }
+    }
+
+    /** Copies the regular files under {@code from} to {@code to}, folders and all; links are not followed. */
+    private static void copyClasses(Path from, Path to) throws IOException {
+        try (var files = Files.walk(from)) {
+            for (Path file : files.toList()) {
+                Path copy = to.resolve(from.relativize(file).toString());
+                if (ChildOutput.isDirectory(file)) {
+                    Files.createDirectories(copy);
+                } else if (ChildOutput.isRegularFile(file)) {
+                    Files.copy(file, copy);
+                }
+            }
+        }
+    }
+
+    /** The compiler's JVM, for {@link CompileServer}: on the job's core, with the compiler's heap. */
+    private SandboxedProcess.Started startCompiler(Duration timeLimit) throws IOException {
+        Request request = new Request(List.of(StudentHarness.COMPILE_SERVER, COMPILER),
+                List.of(new Bind(compilerFolder, COMPILER, true)), timeLimit, null, Duration.ZERO, compilerHeap(),
+                true, archiveOption(), null);
+        // Its processor time is bounded as that of the compiles one start serves.
+        int cpuSeconds = (int) Math.ceil(timeLimit.toMillis() / 1000.0) * CompileServer.COMPILES_PER_START + 1;
+        Launch launch = launch(request);
+        return SandboxedProcess.start(sandbox, launch.command(), launch.binds(), cpuSeconds, compilerHeap(), true);
+    }
+
+    private int compilerHeap() {
+        return Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES);
+    }
+
+    /**
+     * Whether one JVM compiles and then runs the code: its heap is enough for the compiler, and
+     * there is no warm compiler to compile it.
+     */
     public boolean compilesAndRendersInOneRun() {
-        return memoryMegabytes >= COMPILER_HEAP_MEGABYTES;
+        return memoryMegabytes >= COMPILER_HEAP_MEGABYTES && compiler == null;
     }
 
     /**
@@ -300,12 +382,12 @@ public final class StudentProcess {
         }
         Files.move(archive, folder.resolve(SHARED_ARCHIVE));
         Files.setPosixFilePermissions(folder.resolve(SHARED_ARCHIVE), PosixFilePermissions.fromString("r--r--r--"));
-        return new StudentProcess(sandbox, harness, memoryMegabytes, folder);
+        return new StudentProcess(sandbox, harness, memoryMegabytes, folder, compilerFolder);
     }
 
-    /** The same process for another sandbox (a job's), with the same harness and archive. */
+    /** The same process for another sandbox (a job's), with the same harness and archive, and no warm compiler. */
     public StudentProcess in(Sandbox other) {
-        return new StudentProcess(other, harness, memoryMegabytes, sharedArchive);
+        return new StudentProcess(other, harness, memoryMegabytes, sharedArchive, null);
     }
 
     /** Where {@code folder}, bound at {@code insideName}, is seen by the harness. */
@@ -313,9 +395,20 @@ public final class StudentProcess {
         return sandbox.isConfined() ? insideName : folder.toString();
     }
 
-    /** Kills the sandbox that is running, if one is (on Ctrl-C or SIGTERM). */
+    /** Kills the sandbox that is running, if one is, and the warm compiler (on Ctrl-C or SIGTERM). */
     public void stop() {
         sandboxed.stop();
+        if (compiler != null) {
+            compiler.stop();
+        }
+    }
+
+    /** Ends the warm compiler, if there is one; a later compile starts it again. */
+    @Override
+    public void close() {
+        if (compiler != null) {
+            compiler.close();
+        }
     }
 
     /** The JVM option that maps the class data sharing archive, when there is one. */
@@ -324,8 +417,19 @@ public final class StudentProcess {
                 : List.of("-XX:SharedArchiveFile=" + inside(sharedArchive, ARCHIVE) + "/" + SHARED_ARCHIVE);
     }
 
+    /** The JVM's command line and the folders bound in: the harness's jar and archive with the request's own. */
+    private record Launch(List<String> command, List<Bind> binds) {
+    }
+
     /** Runs the harness as {@code request} says, in the sandbox, with the harness's jar and archive bound in. */
     private Run run(Request request) throws IOException, InterruptedException {
+        Launch launch = launch(request);
+        return sandboxed.run(launch.command(), new Request(request.harnessArguments(), launch.binds(),
+                request.timeLimit(), request.progress(), request.thenLimit(), request.heapMegabytes(),
+                request.studentCode(), request.javaOptions(), request.output()));
+    }
+
+    private Launch launch(Request request) {
         List<String> command = new ArrayList<>(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx" + request.heapMegabytes() + "m",
@@ -348,9 +452,7 @@ public final class StudentProcess {
         if (sharedArchive != null) {
             binds.add(new Bind(sharedArchive, ARCHIVE, false));
         }
-        return sandboxed.run(command, new Request(request.harnessArguments(), binds, request.timeLimit(),
-                request.progress(), request.thenLimit(), request.heapMegabytes(), request.studentCode(),
-                request.javaOptions(), request.output()));
+        return new Launch(command, binds);
     }
 
     private static Outcome outcome(Path output, int index, List<String> progress, Run run, int width, int height,

@@ -1,0 +1,208 @@
+package gfx.tick1.grade.sandbox;
+
+import gfx.tick1.grade.harness.StudentHarness;
+import gfx.tick1.grade.sandbox.SandboxedProcess.Run;
+import gfx.tick1.grade.sandbox.SandboxedProcess.Started;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * The warm compiler of one cohort job: a JVM in the sandbox that runs the harness's
+ * {@code compile-server} and compiles submission after submission, so that javac's own warm-up
+ * (about nine tenths of a fresh JVM's compile) is paid once, not once a submission. No code of
+ * a student's runs in it ({@code -proc:none}): it reads sources and writes class files, which the
+ * grader copies out for the JVMs that run the code. It is started again after a compile that
+ * did not answer within its time limit, that ran out of memory or that killed it, and after
+ * {@value #COMPILES_PER_START} compiles, so that no compile inherits a compiler in a bad state
+ * and its processor-time limit stays that of a bounded number of compiles.
+ */
+final class CompileServer implements AutoCloseable {
+
+    /** How many compiles one start of the compiler serves. */
+    static final int COMPILES_PER_START = 100;
+    /** The most characters of one line of the compiler's output that are kept. */
+    private static final int LINE_CAP = 2000;
+    private static final Pattern ANSWER = Pattern.compile(StudentHarness.COMPILED + " ([0-9]{1,9}) ([0-9]{1,3})");
+
+    /** Starts the compiler's JVM, whose output is its answers, for compiles of at most {@code timeLimit} each. */
+    interface Launcher {
+        Started start(Duration timeLimit) throws IOException;
+    }
+
+    private final Sandbox sandbox;
+    private final Path folder;
+    private final Launcher launcher;
+    private Started running;
+    private volatile Answers answers;
+    private int compiles;
+    private int next;
+    private volatile boolean stopped;
+
+    /**
+     * A compiler in {@code sandbox} started by {@code launcher}, exchanging requests through
+     * {@code folder}, which the launcher binds writable.
+     */
+    CompileServer(Sandbox sandbox, Path folder, Launcher launcher) {
+        this.sandbox = sandbox;
+        this.folder = folder;
+        this.launcher = launcher;
+    }
+
+    /** A new request's folder, with an empty {@value StudentHarness#SOURCES_FOLDER} folder for its sources. */
+    Path newRequest() throws IOException {
+        Path request = Files.createDirectory(folder.resolve(Integer.toString(next++)));
+        Files.createDirectory(request.resolve(StudentHarness.SOURCES_FOLDER));
+        return request;
+    }
+
+    /**
+     * Compiles the request whose sources are written, the two files reported as the names given,
+     * within {@code timeLimit} (a start of the compiler included, when one is needed). The run
+     * it answers with is read as a one-off compile's is, with {@code request}'s output folder.
+     */
+    Run compile(Path request, String sphereName, String rendererName, Duration timeLimit)
+            throws IOException, InterruptedException {
+        Files.writeString(request.resolve(StudentHarness.NAMES_FILE), sphereName + "\0" + rendererName,
+                StandardCharsets.UTF_8);
+        Path output = Files.createDirectory(request.resolve(StudentHarness.OUTPUT_FOLDER));
+        sandbox.share(request, false);
+        sandbox.share(output, true);
+        // This compile's own references: stop() may end the compiler meanwhile.
+        Started compiler = ready(timeLimit);
+        Answers heard = answers;
+        String number = request.getFileName().toString();
+        try {
+            OutputStream requests = compiler.process().getOutputStream();
+            requests.write((number + "\n").getBytes(StandardCharsets.US_ASCII));
+            requests.flush();
+        } catch (IOException e) {
+            // The compiler is gone: its end, below, says how.
+        }
+        String answer = heard.await(number, timeLimit);
+        if (answer == null) {
+            close();
+            return new Run(false, -1, heard.tail(), false, 0, null);
+        }
+        if (answer.equals(Answers.ENDED)) {
+            compiler.process().waitFor(10, TimeUnit.SECONDS);
+            String reached = compiler.limitReached();
+            close();
+            return new Run(true, compiler.process().isAlive() ? -1 : compiler.process().exitValue(), heard.tail(),
+                    false, 0, reached);
+        }
+        String over = OutputCount.overCap(output);
+        if (over != null) {
+            close();
+        }
+        return new Run(over == null, Integer.parseInt(answer), heard.tail(), false, 0, over);
+    }
+
+    /** The compiler that takes the next compile: the one running, or a new one when it cannot. */
+    private synchronized Started ready(Duration timeLimit) throws IOException, InterruptedException {
+        if (stopped) {
+            throw new InterruptedException("the grade was stopped");
+        }
+        if (running == null || !running.process().isAlive() || compiles >= COMPILES_PER_START) {
+            close();
+            running = launcher.start(timeLimit);
+            answers = new Answers(running.process().getInputStream());
+            answers.start();
+            compiles = 0;
+        }
+        compiles++;
+        return running;
+    }
+
+    /** Ends the compiler, for the next compile to start another. */
+    void stop() {
+        stopped = true;
+        close();
+    }
+
+    @Override
+    public synchronized void close() {
+        if (running != null) {
+            running.close();
+            running = null;
+        }
+    }
+
+    /** Reads the compiler's output as it comes: its answers, and the end of whatever else it printed. */
+    private static final class Answers extends Thread {
+        static final String ENDED = "ended";
+        private final InputStream in;
+        private final BlockingQueue<String> answered = new LinkedBlockingQueue<>();
+        private final StringBuilder tail = new StringBuilder();
+
+        Answers(InputStream in) {
+            this.in = in;
+            setDaemon(true);
+            setName("tick1-compiler-output");
+        }
+
+        @Override
+        public void run() {
+            StringBuilder line = new StringBuilder();
+            try {
+                for (int c; (c = in.read()) >= 0; ) {
+                    if (c != '\n') {
+                        if (line.length() < LINE_CAP) {
+                            line.append((char) c);
+                        }
+                        continue;
+                    }
+                    Matcher answer = ANSWER.matcher(line);
+                    if (answer.matches()) {
+                        answered.add(answer.group(1) + " " + answer.group(2));
+                    } else {
+                        keep(line.append('\n'));
+                    }
+                    line.setLength(0);
+                }
+            } catch (IOException e) {
+                // The compiler was killed: what was read is all there is.
+            }
+            keep(line);
+            answered.add(ENDED);
+        }
+
+        private void keep(CharSequence text) {
+            synchronized (tail) {
+                tail.append(text);
+                if (tail.length() > LINE_CAP) {
+                    tail.delete(0, tail.length() - LINE_CAP);
+                }
+            }
+        }
+
+        String tail() {
+            synchronized (tail) {
+                return ChildOutput.printable(tail.toString());
+            }
+        }
+
+        /** The status the compiler answered request {@code number} with, {@link #ENDED}, or null at {@code limit}. */
+        String await(String number, Duration limit) throws InterruptedException {
+            long deadline = System.nanoTime() + limit.toNanos();
+            while (true) {
+                String answer = answered.poll(deadline - System.nanoTime(), TimeUnit.NANOSECONDS);
+                if (answer == null || answer.equals(ENDED)) {
+                    return answer;
+                }
+                if (answer.startsWith(number + " ")) {
+                    return answer.substring(number.length() + 1);
+                }
+            }
+        }
+    }
+}
