@@ -399,7 +399,8 @@ class GradeAttackTest {
     /** The user the normal-user grade runs as: nobody. */
     private static final int NORMAL_USER = 65534;
 
-    private static void copyTree(Path from, Path to) throws IOException {
+    /** Copies the folder {@code from}, with all it holds, to {@code to}. */
+    static void copyTree(Path from, Path to) throws IOException {
         try (Stream<Path> all = Files.walk(from)) {
             for (Path file : all.toList()) {
                 Files.copy(file, to.resolve(from.relativize(file).toString()));

@@ -422,22 +422,29 @@ class GradeCohortTest {
 
     @Test
     void aChangedSubmissionIsTheOnlyOneGradedAgain(@TempDir Path dir) throws IOException {
-        StudentSolution correct = StudentSolution.correct();
-        List<Student> three = new ArrayList<>(List.of(
-                new Student("First", 1, files(correct), true),
-                new Student("Second", 2, files(correct.editRenderer("L.reflectIn(N)", "N.reflectIn(L)")), false),
-                new Student("Third", 3, files("src/", correct), true)));
+        // The cohort's report folder as its grade left it, and the download again with one failure mended.
         Path report = dir.resolve("report");
-        CliRun first = CliRun.of(gradeArguments(moodleZip(dir.resolve("a.zip"), three), report));
-        assertThat(first.out()).as(first.transcript()).contains("(3 now, 0 from earlier runs)");
-        Path secondsFeedback = report.resolve("feedback").resolve(three.get(1).folder());
-        assertThat(secondsFeedback.resolve("1-tick1-diff.png")).exists();
-        three.set(1, new Student("Second", 2, files(correct.editRenderer("return image;", "return image; // mended")),
-                true));
-        CliRun second = CliRun.of(gradeArguments(moodleZip(dir.resolve("b.zip"), three), report));
-        assertThat(second.out()).as(second.transcript()).contains("(1 now, 2 from earlier runs)");
-        assertThat(rows(report).values()).extracting(row -> row.get(4)).containsOnly("1.00");
-        assertThat(secondsFeedback).as("the images of a failure since mended").isDirectoryNotContaining("glob:**.png");
+        GradeAttackTest.copyTree(shared.resolve("report"), report);
+        Student failed = student(mistakesName(Variant.R_WRONG_WAY));
+        Path feedback = report.resolve("feedback").resolve(failed.folder());
+        assertThat(feedback.resolve("1-tick1-diff.png")).exists();
+        Map<String, List<String>> before = withoutGradingTime(rows(report));
+        List<Student> mended = cohort.stream().map(student -> student.id() != failed.id() ? student : new Student(
+                failed.name(), failed.id(), files(StudentSolution.correct().editRenderer("return image;",
+                "return image; // mended")), true)).toList();
+        java.util.regex.Matcher first = java.util.regex.Pattern.compile("\\((\\d+) now, 0 from earlier runs")
+                .matcher(firstRun.out());
+        assertThat(first.find()).as(firstRun.transcript()).isTrue();
+
+        CliRun again = CliRun.of(gradeArguments(moodleZip(dir.resolve("mended.zip"), mended), report));
+
+        assertThat(again.out()).as(again.transcript())
+                .contains("(1 now, " + (Integer.parseInt(first.group(1)) - 1) + " from earlier runs");
+        Map<String, List<String>> after = withoutGradingTime(rows(report));
+        assertThat(after.remove("Participant " + failed.id())).element(4).isEqualTo("1.00");
+        before.remove("Participant " + failed.id());
+        assertThat(after).as("every other row").isEqualTo(before);
+        assertThat(feedback).as("the images of a failure since mended").isDirectoryNotContaining("glob:**.png");
     }
 
     @Test
