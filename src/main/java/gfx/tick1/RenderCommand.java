@@ -38,8 +38,9 @@ import picocli.CommandLine.TypeConversionException;
  */
 @Command(name = "tick1", scope = ScopeType.INHERIT, mixinStandardHelpOptions = true, versionProvider = Version.class,
         sortOptions = false, usageHelpAutoWidth = true, exitCodeListHeading = "%nExit status:%n",
-        description = "Renders a Tick 1 scene (spheres, an ambient light, one point light, Phong shading) "
-                + "to a PNG image, pixel for pixel as the Cambridge Computer Graphics course expects.")
+        description = {"Renders a Tick 1 scene to a PNG image, pixel for pixel as the Cambridge Computer Graphics "
+                + "course expects.",
+            "A scene is spheres, an ambient light and one point light, with Phong shading."})
 public final class RenderCommand implements Callable<Integer> {
 
     @ExitStatus("the image was written")

@@ -3,9 +3,11 @@ package gfx.tick1.bench;
 import gfx.tick1.cli.ExitStatus;
 import gfx.tick1.fast.FastRenderer;
 import gfx.tick1.grade.cohort.CohortTiming;
+import gfx.tick1.grade.sandbox.WorkFolder;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
 import gfx.tick1.io.IoErrors;
+import gfx.tick1.io.OnExit;
 import gfx.tick1.render.ReferenceRenderer;
 import gfx.tick1.render.SamplePattern;
 import gfx.tick1.render.TruthRenderer;
@@ -37,11 +39,15 @@ import picocli.CommandLine.Spec;
  * {@code tick1 bench}: every way of rendering side by side in one process, on the same scenes,
  * with the time each takes and how far its image is from the right one; then whole runs of the
  * program in fresh processes for start-up, scaling and end-to-end time. Writes report.md,
- * results.csv and speed-vs-error.png.
+ * results.csv and speed-vs-error.png (and the yardsticks' builds, in yardsticks/); the scenes it
+ * renders, tick1.xml and the generated crowds, are written to a temporary folder deleted on exit.
  */
 @Command(name = "bench",
-        description = "Measures speed against accuracy for every renderer variant and writes a report "
-                + "(report.md, results.csv, speed-vs-error.png).")
+        description = {"Measures speed against accuracy for every renderer variant and writes a report "
+                + "(report.md, results.csv, speed-vs-error.png).",
+            "Beside the report it keeps yardsticks/, the builds of the course's code and of the scalar C tracer "
+                    + "that the report compares tick1 with. The scenes it renders (tick1.xml and generated crowds "
+                    + "of spheres) are written to a temporary folder, deleted when it ends."})
 public final class BenchCommand implements Callable<Integer> {
 
     @ExitStatus("the report was written")
@@ -62,13 +68,24 @@ public final class BenchCommand implements Callable<Integer> {
 
     private PrintWriter log;
 
+    /** The scene files the runs read: tick1.xml and the crowds, about 800 KB, which are no part of the report. */
+    private Path scenes;
+
     @Override
     public Integer call() {
+        OnExit cleanUp = null;
         try {
+            scenes = Files.createTempDirectory("tick1-bench-scenes");
+            Path folder = scenes;
+            cleanUp = OnExit.run("tick1-bench-clean-up", () -> WorkFolder.delete(folder));
             return run();
         } catch (IOException e) {
             spec.commandLine().getErr().println("tick1 bench: " + IoErrors.describe(e));
             return EXIT_CANNOT_WRITE;
+        } finally {
+            if (cleanUp != null) {
+                cleanUp.now();
+            }
         }
     }
 
@@ -78,7 +95,7 @@ public final class BenchCommand implements Callable<Integer> {
         Settings settings = quick ? Settings.QUICK : Settings.FULL;
         int cores = Runtime.getRuntime().availableProcessors();
 
-        Path tick1File = BundledScenes.extract(BundledScenes.TICK1, out);
+        Path tick1File = BundledScenes.extract(BundledScenes.TICK1, scenes);
         Scene tick1 = load(tick1File);
 
         List<Result> results = new ArrayList<>();
@@ -94,7 +111,7 @@ public final class BenchCommand implements Callable<Integer> {
                     antiAliased ? "256 samples" : "truth", antiAliased ? manySamples : truth));
         }
         for (int count : settings.crowds) {
-            Path file = out.resolve("crowd-" + count + ".xml");
+            Path file = scenes.resolve("crowd-" + count + ".xml");
             Files.writeString(file, CrowdScene.xml(count));
             Scene crowd = load(file);
             BufferedImage bruteForce = new FastRenderer(settings.errorWidth, settings.errorHeight, new SamplePattern(1),
@@ -232,7 +249,7 @@ public final class BenchCommand implements Callable<Integer> {
     }
 
     private Whole wholeRuns(ProcessRuns runs, Settings settings, Path tick1File, Scene tick1) throws IOException {
-        Path image = out.resolve("whole-run.png");
+        Path image = scenes.resolve("whole-run.png");
         String scene = tick1File.toString();
         Path yardsticks = Files.createDirectories(out.resolve("yardsticks"));
         Map<String, Double> phases = runs.phases(settings.processRuns, "-q", "-i", scene, "-o", image.toString());
@@ -250,7 +267,7 @@ public final class BenchCommand implements Callable<Integer> {
         }
         Timing handoutStyle = runs.java(settings.processRuns, HandoutStyleRender.class.getName(), scene,
                 image.toString());
-        Path crowd10 = out.resolve("crowd-10.xml"), crowd10k = out.resolve("crowd-10000.xml");
+        Path crowd10 = scenes.resolve("crowd-10.xml"), crowd10k = scenes.resolve("crowd-10000.xml");
         Files.writeString(crowd10, CrowdScene.xml(10));
         Files.writeString(crowd10k, CrowdScene.xml(10_000));
         Timing ten = runs.tick1(settings.processRuns, "-q", "-i", crowd10.toString(), "-o", image.toString());

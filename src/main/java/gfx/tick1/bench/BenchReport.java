@@ -70,7 +70,9 @@ final class BenchReport {
                 + "before the JIT has seen the others); times are wall-clock per frame after warm-up "
                 + "(median, and the fastest and slowest run as the spread). Error is measured on a smaller frame "
                 + "against `truth` (the double-double TruthRenderer), against `256 samples` for anti-aliased "
-                + "variants, or against `brute force` for the BVH.\n\n");
+                + "variants, or against `brute force` for the BVH. A crowd, `crowd-N.xml`, is a generated scene of N "
+                + "spheres filling the frame (the same N always gives the same scene); the scenes are written to a "
+                + "temporary folder for the run, not kept.\n\n");
         md.append("| variant | scene | frame | threads | median ms | spread ms | Mrays/s | error against | max levels "
                 + "| pixels differing | PSNR dB |\n|---|---|---|---:|---:|---:|---:|---|---:|---:|---:|\n");
         for (Result r : results) {
@@ -95,7 +97,9 @@ final class BenchReport {
             md.append("\nA quick run uses small frames and few runs: it shows that every variant runs and what it "
                     + "draws, not how fast it is.\n");
         }
-        md.append("\n![speed against error](speed-vs-error.png)\n");
+        md.append("\n![speed against error](speed-vs-error.png)\n\nIn the plot each point carries its number in "
+                + "the legend; points that fall together share a label (\"2, 8\"). A filled marker rendered on every "
+                + "core, a hollow one on one thread.\n");
         return md.toString();
     }
 

@@ -32,14 +32,15 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "grade",
         description = {
-            "Grades a student's Sphere.java and Renderer.java as the course's tester does: compiles them with the "
-                    + "starter code (see tick1 starter), renders tick1.xml and a hidden scene (or the scenes given) "
-                    + "with them, and compares each image with the reference render, pixel for pixel. Compiling and "
-                    + "rendering run in a separate Java process inside a bubblewrap sandbox, with time, memory and "
-                    + "process limits. A failing scene is explained: the difference figures, the closest entry of "
-                    + "the diagnose catalogue, and a heat map (not for hidden scenes). The built-in hidden scene is "
-                    + "public (it is in tick1, which students have): anyone can pass it by copying its images; "
-                    + "give scenes of your own with --scenes for a grade that counts.",
+            "Grades a student's Sphere.java and Renderer.java as the course's tester does, or a whole cohort "
+                    + "from Moodle's download.",
+            "It compiles the two files with the starter code (see tick1 starter), renders tick1.xml and a hidden "
+                    + "scene (or the scenes given) with them, and compares each image with the reference render, "
+                    + "pixel for pixel. Compiling and rendering run in a separate Java process inside a bubblewrap "
+                    + "sandbox, with time, memory and process limits. A failing scene is explained: the difference "
+                    + "figures, the closest entry of the diagnose catalogue, and a heat map (not for hidden scenes). "
+                    + "The built-in hidden scene is public (it is in tick1, which students have): anyone can pass it "
+                    + "by copying its images; give scenes of your own with --scenes for a grade that counts.",
             "With --submissions it grades a whole cohort from Moodle's download: every submission in a sandbox of "
                     + "its own, several at once, into grades.csv (Moodle's grading worksheet), a feedback page per "
                     + "student and index.html. Each result is kept as soon as it is known: a grade that is stopped "

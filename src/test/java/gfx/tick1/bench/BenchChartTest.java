@@ -10,8 +10,12 @@ import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.XYStyler;
 
-/** The benchmark's plot: no two points look alike, and no panel mixes frame sizes. */
+/**
+ * The benchmark's plot: no two points look alike, no panel mixes frame sizes, and every point
+ * stands inside its frame on axes that can be read.
+ */
 class BenchChartTest {
 
     /** The rows of a full run: eleven variants of tick1.xml at 4K, and the crowds at 640 x 480. */
@@ -28,9 +32,92 @@ class BenchChartTest {
     }
 
     private static Result result(String variant, String scene, int width, int height, double millis) {
+        return result(variant, scene, width, height, millis, 2, 0);
+    }
+
+    /** A result whose image is {@code wrongLevels} off in one channel of one pixel of 16. */
+    private static Result result(String variant, String scene, int width, int height, double millis, int threads,
+            int wrongLevels) {
         BufferedImage image = new BufferedImage(4, 4, BufferedImage.TYPE_INT_RGB);
-        return new Result(variant, scene, width, height, 1, 2, Timing.of(new double[] {millis}), "truth",
-                ImageDifference.between(image, image), 4, 4);
+        BufferedImage other = new BufferedImage(4, 4, BufferedImage.TYPE_INT_RGB);
+        other.setRGB(0, 0, wrongLevels);
+        return new Result(variant, scene, width, height, 1, threads, Timing.of(new double[] {millis}), "truth",
+                ImageDifference.between(image, other), 4, 4);
+    }
+
+    /** A quick run's rows: close times, errors from 0 to a few levels, one and two threads. */
+    private static List<Result> quickRun() {
+        List<Result> results = new ArrayList<>();
+        double[] millis = {47, 10.7, 21.7, 7.1, 29.6, 110, 16.4, 16.3, 49, 28.4};
+        int[] wrong = {1, 1, 1, 1, 20, 9, 1, 1, 1, 1};
+        for (int i = 0; i < millis.length; i++) {
+            results.add(result("variant " + i, "tick1.xml", 640, 480, millis[i], i % 3 == 1 ? 1 : 2, wrong[i]));
+        }
+        results.add(result("brute force", "crowd-1000.xml", 640, 480, 633, 2, 0));
+        results.add(result("BVH", "crowd-1000.xml", 640, 480, 124, 2, 0));
+        return results;
+    }
+
+    /** Where a value lies along an axis from min to max, 0 at min and 1 at max. */
+    private static double along(double value, double min, double max, boolean logarithmic) {
+        return logarithmic ? Math.log(value / min) / Math.log(max / min) : (value - min) / (max - min);
+    }
+
+    /**
+     * Every point stands clear of its panel's frame by a tenth of the points' range or more,
+     * also where all of a panel's errors are 0 or its times lie close together.
+     */
+    @Test
+    void everyPointStandsClearOfItsPanelsFrame() {
+        for (List<Result> run : List.of(fullRun(), quickRun())) {
+            for (XYChart panel : BenchChart.panels(run, false)) {
+                XYStyler styler = panel.getStyler();
+                assertThat(styler.getXAxisMin()).as("time axis of %s", panel.getTitle()).isNotNull().isPositive();
+                assertThat(styler.getYAxisMin()).as("error axis of %s", panel.getTitle()).isNotNull();
+                for (XYSeries series : panel.getSeriesMap().values()) {
+                    double x = along(series.getXData()[0], styler.getXAxisMin(), styler.getXAxisMax(), true);
+                    double y = along(series.getYData()[0], styler.getYAxisMin(), styler.getYAxisMax(), false);
+                    assertThat(x).as("%s: %s across the time axis", panel.getTitle(), series.getName())
+                            .isBetween(0.08, 0.92);
+                    assertThat(y).as("%s: %s up the error axis", panel.getTitle(), series.getName())
+                            .isBetween(0.08, 0.92);
+                }
+            }
+        }
+    }
+
+    @Test
+    void theTimeAxisOfEveryPanelSpansAtLeastAFactorOfFourAndHasThreeLabelledTicks() {
+        for (List<Result> run : List.of(fullRun(), quickRun())) {
+            for (XYChart panel : BenchChart.panels(run, false)) {
+                XYStyler styler = panel.getStyler();
+                assertThat(styler.getXAxisMax() / styler.getXAxisMin()).as(panel.getTitle())
+                        .isGreaterThanOrEqualTo(BenchChart.LEAST_TIME_RATIO);
+                assertThat(new LogTicks(styler.getXAxisMin(), styler.getXAxisMax()).labelled())
+                        .as(panel.getTitle()).hasSizeGreaterThanOrEqualTo(3);
+            }
+        }
+    }
+
+    @Test
+    void aMarkerIsFilledOnEveryCoreAndHollowOnOneThread() {
+        List<Result> run = quickRun();
+        XYChart panel = BenchChart.panels(run, false).get(0);
+        List<XYSeries> series = new ArrayList<>(panel.getSeriesMap().values());
+        for (int i = 0; i < series.size(); i++) {
+            assertThat(((PlotMarker) series.get(i).getMarker()).filled()).as(series.get(i).getName())
+                    .isEqualTo(run.get(i).threads() > 1);
+        }
+    }
+
+    @Test
+    void eachLegendEntryStartsWithTheNumberWrittenBesideItsPoint() {
+        for (XYChart panel : BenchChart.panels(quickRun(), false)) {
+            int number = 1;
+            for (String name : panel.getSeriesMap().keySet()) {
+                assertThat(name).startsWith(number++ + "  ");
+            }
+        }
     }
 
     @Test
@@ -39,8 +126,9 @@ class BenchChartTest {
             List<XYSeries> series = new ArrayList<>(panel.getSeriesMap().values());
             assertThat(series.stream().map(XYSeries::getMarkerColor).collect(Collectors.toList()))
                     .as("marker colours of %s", panel.getTitle()).doesNotHaveDuplicates();
-            List<XYSeries> firstTen = series.subList(0, Math.min(series.size(), BenchChart.MARKERS.length));
-            assertThat(firstTen.stream().map(s -> s.getMarker().getClass()).collect(Collectors.toList()))
+            int shapes = PlotMarker.Glyph.values().length;
+            List<XYSeries> firstTen = series.subList(0, Math.min(series.size(), shapes));
+            assertThat(firstTen.stream().map(s -> ((PlotMarker) s.getMarker()).glyph()).collect(Collectors.toList()))
                     .as("marker shapes of %s", panel.getTitle()).doesNotHaveDuplicates();
         }
     }

@@ -10,6 +10,7 @@ import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -100,14 +101,24 @@ class BenchCommandTest {
         assertThat(report).doesNotContain("| yes |", "| no |");
     }
 
+    /** The scenes the run renders, about 800 KB of crowds, are inputs, not part of the report. */
+    @Test
+    void theReportFolderHoldsTheReportAndTheYardsticksOnly() throws IOException {
+        try (Stream<Path> files = Files.list(out)) {
+            assertThat(files.map(file -> file.getFileName().toString()))
+                    .as("the report folder").containsOnly("report.md", "results.csv", "speed-vs-error.png",
+                            "yardsticks");
+        }
+    }
+
     @Test
     void thePlotIsAPng() throws IOException {
         assertThat(ImageIO.read(out.resolve("speed-vs-error.png").toFile())).isNotNull();
     }
 
     @Test
-    void anUnwritableReportFolderIsOneLineAndStatusThree() throws IOException {
-        Path file = Files.writeString(out.resolve("not-a-folder"), "x");
+    void anUnwritableReportFolderIsOneLineAndStatusThree(@TempDir Path elsewhere) throws IOException {
+        Path file = Files.writeString(elsewhere.resolve("not-a-folder"), "x");
         StringWriter err = new StringWriter();
         CommandLine commandLine = Tick1.commandLine(new RenderCommand());
         commandLine.setOut(new PrintWriter(new StringWriter(), true));

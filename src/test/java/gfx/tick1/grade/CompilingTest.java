@@ -44,17 +44,32 @@ class CompilingTest {
             }
             return image;""";
 
+    /** A Renderer that starts threads until it is refused one, and says how many it had. */
+    private static final String COUNTS_ITS_THREADS = """
+            int started = 0;
+            try {
+                for (; started < 4000; started++) {
+                    Thread sleeper = new Thread(() -> {
+                        try {
+                            Thread.sleep(60_000);
+                        } catch (InterruptedException e) {
+                            return;
+                        }
+                    });
+                    sleeper.setDaemon(true);
+                    sleeper.start();
+                }
+            } catch (Throwable refused) {
+                // The limit on processes and threads.
+            }
+            throw new IllegalStateException("started " + started + " threads");""";
+
     @TempDir
     Path dir;
 
     @Test
     void whatARunWritesBesideItsClassesNeverReachesTheHiddenScenesRun() throws IOException {
-        StudentSolution marking = StudentSolution.correct().editRenderer("return image;", LEAVES_A_MARK);
-        Path sphere = Files.writeString(dir.resolve("Sphere.java"), marking.sphere());
-        Path renderer = Files.writeString(dir.resolve("Renderer.java"), marking.renderer());
-
-        CliRun grade = CliRun.of(withSmall("grade", "--sphere", sphere.toString(), "--renderer", renderer.toString(),
-                "--report", dir.resolve("report").toString()));
+        CliRun grade = gradeAlone(StudentSolution.correct().editRenderer("return image;", LEAVES_A_MARK));
 
         assertThat(grade.out()).as(grade.transcript()).contains("hidden.xml: PASS")
                 .contains("Congratulations! Your code passed the tester.");
@@ -89,6 +104,34 @@ class CompilingTest {
 
         assertThat(rows.get("1001")).contains("Congratulations!");
         assertThat(rows.get("1002")).contains("does not compile").contains("cannot find symbol");
+    }
+
+    @Test
+    void aJobsWarmCompilerTakesNothingOfTheStudentsProcessLimit() throws IOException {
+        StudentSolution counting = StudentSolution.correct().editRenderer("return image;", COUNTS_ITS_THREADS);
+        CliRun alone = gradeAlone(counting);
+        java.util.regex.Matcher count = java.util.regex.Pattern.compile("started (\\d+) threads")
+                .matcher(alone.out());
+        assertThat(count.find()).as(alone.transcript()).isTrue();
+
+        int aloneCount = Integer.parseInt(count.group(1));
+
+        String row = gradeOneAtATime(Map.of("Counts Threads_1001", files(counting))).get("1001");
+
+        count = java.util.regex.Pattern.compile("started (\\d+) threads").matcher(row);
+        assertThat(count.find()).as(row).isTrue();
+        // The JVM starts a thread or two of its own lazily, so the counts may differ by that much;
+        // a compiler under the student's user takes the dozen or more threads it has.
+        assertThat(Integer.parseInt(count.group(1))).as("threads with the job's compiler alive beside it: " + row)
+                .isGreaterThanOrEqualTo(aloneCount - 2);
+    }
+
+    /** Grades one student's files with {@code tick1 grade --sphere --renderer}. */
+    private CliRun gradeAlone(StudentSolution solution) throws IOException {
+        Path sphere = Files.writeString(dir.resolve("Sphere.java"), solution.sphere());
+        Path renderer = Files.writeString(dir.resolve("Renderer.java"), solution.renderer());
+        return CliRun.of(withSmall("grade", "--sphere", sphere.toString(), "--renderer", renderer.toString(),
+                "--report", dir.resolve("alone").toString()));
     }
 
     /** Grades the cohort with one job, so that one warm compiler compiles every submission in order. */

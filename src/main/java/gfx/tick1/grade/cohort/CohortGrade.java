@@ -298,7 +298,9 @@ public final class CohortGrade {
                 Files.createDirectory(folder);
                 grading.copyScenes(folder);
                 jobSandbox.share(folder, false);
-                StudentProcess process = shared.in(jobSandbox).withWarmCompiler(folder.resolve("compiler"));
+                // Beside the job's folder, not in it: the compiler's user may not enter the job's.
+                StudentProcess process = shared.in(jobSandbox)
+                        .withWarmCompiler(folder.resolveSibling(folder.getFileName() + "-compiler"));
                 processes.add(process);
                 grader = new SubmissionGrader(grading, jobSandbox, process, folder);
             }

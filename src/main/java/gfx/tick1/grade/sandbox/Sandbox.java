@@ -92,6 +92,15 @@ public final class Sandbox {
         return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + job * JOB_UID_STEP, job, cgroups);
     }
 
+    /**
+     * The sandbox of this job's warm compiler: the same core, and a user of its own, so that the
+     * compiler (which lives from one submission to the next) and the student's code never share a
+     * process limit nor can signal each other. Only for a sandbox {@link #forJob} made.
+     */
+    public Sandbox forCompiler() {
+        return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job, cgroups);
+    }
+
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
     public static Sandbox unconfined() {
         return new Sandbox(null, false, -1, 0, null);
