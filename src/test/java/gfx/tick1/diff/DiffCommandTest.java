@@ -27,6 +27,11 @@ class DiffCommandTest {
     @TempDir
     Path dir;
 
+    /** Where the styles' files are written for {@link #diffOf}: one folder per style. */
+    @TempDir
+    static Path styles;
+    private static final java.util.Map<CorrectStyles.Style, CliRun> STYLE_RUNS = new java.util.HashMap<>();
+
     private Path write(String name, String source) throws IOException {
         Path file = dir.resolve(name);
         Files.writeString(file, source);
@@ -145,12 +150,25 @@ class DiffCommandTest {
         assertThat(run.err()).isEmpty();
     }
 
+    /**
+     * {@code tick1 diff} of a style's two files, run once per style, on first use, for the tests that
+     * read its differences and its hints: each run compiles and probes the files in the sandbox.
+     */
+    private static synchronized CliRun diffOf(CorrectStyles.Style style) throws IOException {
+        CliRun run = STYLE_RUNS.get(style);
+        if (run == null) {
+            Path[] files = style.writeTo(styles.resolve("style-" + STYLE_RUNS.size()));
+            run = CliRun.of("diff", files[0].toString(), files[1].toString());
+            STYLE_RUNS.put(style, run);
+        }
+        return run;
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("otherCode")
     void aCorrectSolutionWrittenAnotherWayShowsTheMembersItChangesAndNoOthers(CorrectStyles.Style style)
             throws IOException {
-        Path[] files = style.writeTo(dir.resolve("style"));
-        CliRun run = CliRun.of("diff", files[0].toString(), files[1].toString());
+        CliRun run = diffOf(style);
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
         assertThat(membersShown(run)).as(run.transcript()).isEqualTo(style.changedMembers());
     }
@@ -247,8 +265,7 @@ class DiffCommandTest {
     void aCorrectSolutionWrittenAnotherWayGetsNoHint(CorrectStyles.Style style)
             throws IOException, InterruptedException {
         org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
-        Path[] files = style.writeTo(dir.resolve("style"));
-        CliRun run = CliRun.of("diff", files[0].toString(), files[1].toString());
+        CliRun run = diffOf(style);
         assertThat(hints(run)).as(run.transcript()).isEmpty();
     }
 

@@ -332,28 +332,6 @@ class GradeAttackTest {
     }
 
     @Test
-    void aThousandSixHundredCommentLinesBeforeThePackageAreReadAsJavacReadsThem() throws Exception {
-        Path student = Files.createDirectories(dir.resolve("comment-flood"));
-        StudentSolution correct = StudentSolution.correct();
-        Path[] files = correct.writeTo(student);
-        Files.writeString(files[0], "//\n".repeat(1_600) + Files.readString(files[0]));
-        Files.writeString(files[1], "/* x */\n".repeat(800) + "\n".repeat(1_700) + Files.readString(files[1]));
-        Grade grade = gradeFiles(files[0], files[1]);
-        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_PASS);
-        assertThat(grade.output()).doesNotContain("Exception", "\tat ");
-    }
-
-    @Test
-    void aPackageLineThatNeverEndsIsRefusedByTheScanCap() throws Exception {
-        Path student = Files.createDirectories(dir.resolve("endless-package"));
-        Path[] files = StudentSolution.correct().writeTo(student);
-        Files.writeString(files[0], "package gfx" + " ".repeat(320 * 1024));
-        Grade grade = gradeFiles(files[0], files[1]);
-        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_FAIL);
-        assertThat(grade.output()).contains("but it declares no package within its first 65536 characters");
-    }
-
-    @Test
     void theSandboxsFileSystemsInMemoryAreSizedOrReadOnly() throws Exception {
         Grade grade = grade("fill-the-tmpfs");
         assertFailedAndHarmedNothing(grade);
@@ -421,7 +399,8 @@ class GradeAttackTest {
     /** The user the normal-user grade runs as: nobody. */
     private static final int NORMAL_USER = 65534;
 
-    private static void copyTree(Path from, Path to) throws IOException {
+    /** Copies the folder {@code from}, with all it holds, to {@code to}. */
+    static void copyTree(Path from, Path to) throws IOException {
         try (Stream<Path> all = Files.walk(from)) {
             for (Path file : all.toList()) {
                 Files.copy(file, to.resolve(from.relativize(file).toString()));
@@ -430,10 +409,8 @@ class GradeAttackTest {
     }
 
     /** Whether this machine gives each run a control group (the grade warns when it cannot). */
-    private boolean totalsEnforced() throws Exception {
-        Path[] files = StudentSolution.correct().writeTo(Files.createDirectories(dir.resolve("probe")));
-        Grade grade = gradeFiles(files[0], files[1], "--width", "8", "--height", "6");
-        return !grade.output().contains("memory, processes and CPU are not limited in all");
+    private static boolean totalsEnforced() throws Sandbox.Unavailable, InterruptedException {
+        return Sandbox.confined().totalsNotEnforced() == null;
     }
 
     @Test

@@ -26,6 +26,8 @@ import java.util.zip.ZipOutputStream;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
 import org.openqa.selenium.By;
 import org.openqa.selenium.support.ui.ExpectedConditions;
 
@@ -34,12 +36,13 @@ import org.openqa.selenium.support.ui.ExpectedConditions;
  * solutions laid out as students lay them out, one submission for each mistake of the diagnose
  * catalogue, and the submissions a cohort always has (a missing file, code that does not compile,
  * an infinite loop, a cheat, a nested zip). Every row of grades.csv is checked against the grade
- * each submission must get. One cohort is graded once for the whole class; the tests of resuming
- * grade small cohorts of their own.
+ * each submission must get, and the feedback of each mistake and each kind of failure against what
+ * it must say. One cohort is graded once for the whole class; the tests of resuming, stopping and
+ * the cohort's options grade small cohorts of their own.
  */
 class GradeCohortTest {
 
-    private static final String[] SMALL = {"--width", "160", "--height", "120", "--time-limit", "10"};
+    private static final String[] SMALL = {"--width", "160", "--height", "120"};
     private static final String NEAR_ROOT = "double s = s1 > 0 ? s1 : s2;";
 
     @TempDir
@@ -62,10 +65,14 @@ class GradeCohortTest {
                 shared.resolve("report")));
     }
 
+    /** grade's arguments for a cohort: small images, and a time limit of 10 s unless {@code more} gives one. */
     private static String[] gradeArguments(Path submissions, Path report, String... more) {
         List<String> args = new ArrayList<>(List.of("grade", "--submissions", submissions.toString(),
                 "--report", report.toString()));
         args.addAll(List.of(SMALL));
+        if (!List.of(more).contains("--time-limit")) {
+            args.addAll(List.of("--time-limit", "10"));
+        }
         args.addAll(List.of(more));
         return args.toArray(String[]::new);
     }
@@ -85,13 +92,12 @@ class GradeCohortTest {
         students.add(new Student("Zipped Twice", id++, Map.of("tick1.zip", zip(files(correct))), true));
         students.add(new Student("Zoë Ünïcode-Ñame", id++, files(correct), true));
         students.add(new Student("Byte Order", id++, files(new StudentSolution("\uFEFF" + correct.sphere(),
-                correct.renderer())), true));
+                "\uFEFF" + correct.renderer())), true));
         // A mistake that shows only with the camera inside a sphere: the default scenes cannot see it.
-        students.add(new Student("Inside Sphere", id++, files(GradeCommandTest.HIT_REJECTED_ON_A_NEGATIVE_ROOT), true));
-        for (var mistake : GradeCommandTest.mistakes().toList()) {
+        students.add(new Student("Inside Sphere", id++, files(Mistakes.HIT_REJECTED_ON_A_NEGATIVE_ROOT), true));
+        for (var mistake : Mistakes.onTheCoursesScenes().toList()) {
             Variant variant = (Variant) mistake.get()[0];
-            students.add(new Student("Mistake " + variant.name().replace('_', ' '), id++,
-                    files((StudentSolution) mistake.get()[1]), false));
+            students.add(new Student(mistakesName(variant), id++, files((StudentSolution) mistake.get()[1]), false));
         }
         Map<String, byte[]> missing = new LinkedHashMap<>(files(correct));
         missing.remove("Renderer.java");
@@ -124,6 +130,27 @@ class GradeCohortTest {
                 correct.renderer().replace("// The colour", "// Th\u00e9 colour")
                 .getBytes(StandardCharsets.ISO_8859_1)), false));
         return students;
+    }
+
+    /** The name of the student who makes {@code mistake}. */
+    private static String mistakesName(Variant mistake) {
+        return "Mistake " + mistake.name().replace('_', ' ');
+    }
+
+    private static Student student(String name) {
+        return cohort.stream().filter(s -> s.name().equals(name)).findFirst().orElseThrow(
+                () -> new AssertionError("no student " + name + " in the cohort"));
+    }
+
+    /** grades.csv's row of the student named {@code name} in the cohort's report. */
+    private static List<String> row(String name) throws IOException {
+        return rows(shared.resolve("report")).get("Participant " + student(name).id());
+    }
+
+    /** The lines of the plain-text feedback (feedback.txt) that the cohort's report gives the student named. */
+    private static List<String> feedback(String name) throws IOException {
+        return Files.readAllLines(shared.resolve("report").resolve("feedback").resolve(student(name).folder())
+                .resolve("feedback.txt"));
     }
 
     private static Map<String, byte[]> files(StudentSolution solution) {
@@ -240,13 +267,97 @@ class GradeCohortTest {
 
     @Test
     void aFailingStudentsFeedbackFolderHoldsThePageAndTheHeatMap() {
-        Student student = cohort.stream().filter(s -> s.name().equals("Mistake UNCLAMPED N DOT L")).findFirst()
-                .orElseThrow();
+        Student student = student(mistakesName(Variant.UNCLAMPED_N_DOT_L));
         Path feedback = shared.resolve("report").resolve("feedback").resolve(student.folder());
         assertThat(feedback.resolve("feedback.html")).exists();
         assertThat(feedback.resolve("1-tick1-diff.png")).exists();
         assertThat(feedback).isDirectoryNotContaining("glob:**/2-hidden*");
         assertThat(shared.resolve("report").resolve("index.html")).exists();
+    }
+
+    static Stream<Variant> mistakes() {
+        return Mistakes.onTheCoursesScenes().map(mistake -> (Variant) mistake.get()[0]);
+    }
+
+    @Test
+    void everyMistakeOfTheCatalogueHasAStudentSolution() {
+        assertThat(Stream.concat(mistakes(), Stream.of(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT,
+                Variant.ROOTS_ACCEPTED_AT_ZERO)))
+                .containsExactlyInAnyOrder(Variant.seenInImages().stream().filter(v -> !v.isCorrect())
+                        .toArray(Variant[]::new));
+    }
+
+    /**
+     * A student's feedback.txt holds what {@code tick1 grade} prints for them alone, scene by
+     * scene: the closest entry of the catalogue, the probes' findings and what to reread.
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("mistakes")
+    void aMistakeFailsWithItsDiagnosisOnEveryScene(Variant mistake) throws IOException {
+        List<String> feedback = feedback(mistakesName(mistake));
+        String text = String.join("\n", feedback);
+        assertThat(row(mistakesName(mistake))).as(text).element(4).isEqualTo("0.00");
+        assertThat(feedback).as(text).contains("tick1.xml: failed", "hidden scene 1: failed")
+                .anyMatch(line -> line.startsWith("  FAILED: 2 of 2 scenes wrong."))
+                .noneMatch(line -> line.contains(SubmissionGrader.CONGRATULATIONS));
+        assertThat(feedback.stream().filter(line -> line.startsWith("  closest: "))).as(text).hasSize(2)
+                .allMatch(line -> line.startsWith("  closest: " + mistake.title() + " (100.000% of pixels exact"));
+        // What to reread: the sections of the failed probes, or, for a mistake of render's that no probe of
+        // intersectionWith and illuminate can see, the entry the image matches exactly.
+        List<String> probes = feedback.stream().filter(line -> line.startsWith("  probe: ")).toList();
+        List<String> reread = feedback.stream().filter(line -> line.startsWith("  reread: handout ")).toList();
+        if (Mistakes.RENDER_ONLY.contains(mistake)) {
+            assertThat(probes).as(text).isEmpty();
+            assertThat(reread).as(text).anyMatch(line -> line.startsWith("  reread: handout " + mistake.reread()));
+        } else {
+            assertThat(probes).as(text).isNotEmpty();
+            // One wrong image carries the probes' lines; the other scene's diagnosis asks nothing to reread.
+            assertThat(reread).as(text).isNotEmpty().hasSizeLessThanOrEqualTo(3);
+        }
+    }
+
+    @Test
+    void anInfiniteLoopIsStoppedAtTheTimeLimitAndReported() throws IOException {
+        List<String> feedback = feedback("Loops Forever");
+        assertThat(row("Loops Forever")).element(4).isEqualTo("0.00");
+        assertThat(feedback).as(String.join("\n", feedback)).containsSubsequence("tick1.xml: failed",
+                "  no image within the time limit of 10 s (an infinite loop?); the program was stopped",
+                "hidden scene 1: failed", "  not rendered: the time limit was used up by the earlier scenes");
+    }
+
+    @Test
+    void anExceptionIsReportedWithWhereTheStudentsCodeThrewIt() throws IOException {
+        List<String> feedback = feedback("Throws");
+        assertThat(feedback).as(String.join("\n", feedback))
+                .anyMatch(line -> line.startsWith("  the code threw java.lang.NullPointerException"))
+                .anyMatch(line -> line.startsWith("  at gfx.tick1.Renderer.illuminate(Renderer.java:"))
+                .noneMatch(line -> line.contains("StudentHarness"));
+    }
+
+    @Test
+    void codeThatUsesAMissingMethodIsReportedWithTheStudentsFile() throws IOException {
+        assertThat(row("Missing Method")).element(9).asString()
+                .contains("does not compile", "Renderer.java:", "error: cannot find symbol");
+    }
+
+    @Test
+    void aUtf8ByteOrderMarkIsAccepted() throws IOException {
+        assertThat(row("Byte Order")).as("both files begin with a byte order mark").element(4).isEqualTo("1.00");
+    }
+
+    /** Comment lines that overflowed the stack of a grader parsing the package by a regex. */
+    @Test
+    void aThousandSixHundredCommentLinesBeforeThePackageAreReadAsJavacReadsThem() throws IOException {
+        List<String> feedback = feedback("Comment Flood");
+        assertThat(row("Comment Flood")).as(String.join("\n", feedback)).element(4).isEqualTo("1.00");
+        assertThat(feedback).noneMatch(line -> line.contains("Exception") || line.contains("\tat "));
+    }
+
+    /** A package line that never ends, which a grader parsing the package by a regex took quadratic time on. */
+    @Test
+    void aPackageLineThatNeverEndsIsRefusedByTheScanCap() throws IOException {
+        assertThat(row("Endless Package")).element(9).asString()
+                .contains("but it declares no package within its first 65536 characters");
     }
 
     @Test
@@ -311,22 +422,29 @@ class GradeCohortTest {
 
     @Test
     void aChangedSubmissionIsTheOnlyOneGradedAgain(@TempDir Path dir) throws IOException {
-        StudentSolution correct = StudentSolution.correct();
-        List<Student> three = new ArrayList<>(List.of(
-                new Student("First", 1, files(correct), true),
-                new Student("Second", 2, files(correct.editRenderer("L.reflectIn(N)", "N.reflectIn(L)")), false),
-                new Student("Third", 3, files("src/", correct), true)));
+        // The cohort's report folder as its grade left it, and the download again with one failure mended.
         Path report = dir.resolve("report");
-        CliRun first = CliRun.of(gradeArguments(moodleZip(dir.resolve("a.zip"), three), report));
-        assertThat(first.out()).as(first.transcript()).contains("(3 now, 0 from earlier runs)");
-        Path secondsFeedback = report.resolve("feedback").resolve(three.get(1).folder());
-        assertThat(secondsFeedback.resolve("1-tick1-diff.png")).exists();
-        three.set(1, new Student("Second", 2, files(correct.editRenderer("return image;", "return image; // mended")),
-                true));
-        CliRun second = CliRun.of(gradeArguments(moodleZip(dir.resolve("b.zip"), three), report));
-        assertThat(second.out()).as(second.transcript()).contains("(1 now, 2 from earlier runs)");
-        assertThat(rows(report).values()).extracting(row -> row.get(4)).containsOnly("1.00");
-        assertThat(secondsFeedback).as("the images of a failure since mended").isDirectoryNotContaining("glob:**.png");
+        GradeAttackTest.copyTree(shared.resolve("report"), report);
+        Student failed = student(mistakesName(Variant.R_WRONG_WAY));
+        Path feedback = report.resolve("feedback").resolve(failed.folder());
+        assertThat(feedback.resolve("1-tick1-diff.png")).exists();
+        Map<String, List<String>> before = withoutGradingTime(rows(report));
+        List<Student> mended = cohort.stream().map(student -> student.id() != failed.id() ? student : new Student(
+                failed.name(), failed.id(), files(StudentSolution.correct().editRenderer("return image;",
+                "return image; // mended")), true)).toList();
+        java.util.regex.Matcher first = java.util.regex.Pattern.compile("\\((\\d+) now, 0 from earlier runs")
+                .matcher(firstRun.out());
+        assertThat(first.find()).as(firstRun.transcript()).isTrue();
+
+        CliRun again = CliRun.of(gradeArguments(moodleZip(dir.resolve("mended.zip"), mended), report));
+
+        assertThat(again.out()).as(again.transcript())
+                .contains("(1 now, " + (Integer.parseInt(first.group(1)) - 1) + " from earlier runs");
+        Map<String, List<String>> after = withoutGradingTime(rows(report));
+        assertThat(after.remove("Participant " + failed.id())).element(4).isEqualTo("1.00");
+        before.remove("Participant " + failed.id());
+        assertThat(after).as("every other row").isEqualTo(before);
+        assertThat(feedback).as("the images of a failure since mended").isDirectoryNotContaining("glob:**.png");
     }
 
     @Test
@@ -368,10 +486,13 @@ class GradeCohortTest {
         Process grade = gradeInAJvmOfItsOwn(dir, gradeArguments(moodleZip(dir.resolve("a.zip"), looping), report,
                 "--time-limit", "600"));
         // Wait (at most two minutes) for the student's code to be running.
-        for (int i = 0; i < 1200 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
-                .contains("StudentHarness render")); i++) {
+        for (int i = 0; i < 1200 && grade.isAlive() && grade.descendants().noneMatch(p -> p.info().commandLine()
+                .orElse("").contains("StudentHarness render")); i++) {
             Thread.sleep(100);
         }
+        assertThat(grade.descendants().map(p -> p.info().commandLine().orElse("")))
+                .as("the student's code is running: " + Files.readString(dir.resolve("grade.log")))
+                .anyMatch(line -> line.contains("StudentHarness render"));
         List<ProcessHandle> running = grade.descendants().toList();
         grade.destroy();   // SIGTERM
         assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
