@@ -496,6 +496,8 @@ class GradeCohortTest {
         List<ProcessHandle> running = grade.descendants().toList();
         grade.destroy();   // SIGTERM
         assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+        assertThat(Files.readString(dir.resolve("grade.log"))).as("what the stopped grade said")
+                .doesNotContain("internal error", "Exception");
         for (ProcessHandle process : running) {
             process.onExit().get(30, TimeUnit.SECONDS);
         }

@@ -205,7 +205,10 @@ public final class CohortGrade {
                     try {
                         one.get();
                     } catch (ExecutionException e) {
-                        throw new IllegalStateException("a cohort job failed outside any grade", e.getCause());
+                        // stop() ends the jobs' processes, and a grade it cut short ends with an interruption.
+                        if (!(stopping && e.getCause() instanceof InterruptedException)) {
+                            throw new IllegalStateException("a cohort job failed outside any grade", e.getCause());
+                        }
                     }
                 }
             } finally {
