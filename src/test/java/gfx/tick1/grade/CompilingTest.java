@@ -120,10 +120,11 @@ class CompilingTest {
 
         count = java.util.regex.Pattern.compile("started (\\d+) threads").matcher(row);
         assertThat(count.find()).as(row).isTrue();
-        // The JVM starts a thread or two of its own lazily, so the counts may differ by that much;
-        // a compiler under the student's user takes the dozen or more threads it has.
+        // A compiler under the student's user would take its 14 threads (66 against 80). The count
+        // varies by a few from run to run (the JVM starts some threads lazily, and processes of
+        // earlier runs under the same user may still be exiting), so half of that is allowed.
         assertThat(Integer.parseInt(count.group(1))).as("threads with the job's compiler alive beside it: " + row)
-                .isGreaterThanOrEqualTo(aloneCount - 2);
+                .isGreaterThanOrEqualTo(aloneCount - 7);
     }
 
     /** Grades one student's files with {@code tick1 grade --sphere --renderer}. */
