@@ -3,6 +3,7 @@ package gfx.tick1.grade.sandbox;
 import gfx.tick1.grade.harness.StudentHarness;
 import gfx.tick1.grade.sandbox.SandboxedProcess.Run;
 import gfx.tick1.grade.sandbox.SandboxedProcess.Started;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
@@ -21,10 +22,12 @@ import java.util.regex.Pattern;
  * {@code compile-server} and compiles submission after submission, so that javac's own warm-up
  * (about nine tenths of a fresh JVM's compile) is paid once, not once a submission. No code of
  * a student's runs in it ({@code -proc:none}): it reads sources and writes class files, which the
- * grader copies out for the JVMs that run the code. It is started again after a compile that
- * did not answer within its time limit, that ran out of memory or that killed it, and after
+ * grader copies out for the JVMs that run the code. It is started again after any compile that
+ * did not succeed (an error, the time limit, memory, its end) and after
  * {@value #COMPILES_PER_START} compiles, so that no compile inherits a compiler in a bad state
- * and its processor-time limit stays that of a bounded number of compiles.
+ * and its processor-time limit stays that of a bounded number of compiles. It may write in the
+ * output folder of the request it is compiling, and nowhere else: its folder and the requests'
+ * are the grader's.
  */
 final class CompileServer implements AutoCloseable {
 
@@ -74,8 +77,27 @@ final class CompileServer implements AutoCloseable {
             throws IOException, InterruptedException {
         Files.writeString(request.resolve(StudentHarness.NAMES_FILE), sphereName + "\0" + rendererName,
                 StandardCharsets.UTF_8);
-        Path output = Files.createDirectory(request.resolve(StudentHarness.OUTPUT_FOLDER));
+        // The request's folders are the grader's, readable by the compiler: it may write in the output only.
         sandbox.share(request, false);
+        long deadline = System.nanoTime() + timeLimit.toNanos();
+        boolean servedOthers = servedOthers();
+        Attempt first = attempt(request, timeLimit);
+        Duration left = Duration.ofNanos(deadline - System.nanoTime());
+        // A compiler that had compiled other submissions and ended without a word, at no total, may have
+        // ended for reasons of its own (its processor time over its whole life): this source gets a fresh one.
+        if (first.ended() && first.run().limitReached() == null && servedOthers && left.toMillis() > 0) {
+            WorkFolder.delete(request.resolve(StudentHarness.OUTPUT_FOLDER));
+            return attempt(request, left).run();
+        }
+        return first.run();
+    }
+
+    /** How one attempt at a compile ended, and whether the compiler ended with it before answering. */
+    private record Attempt(Run run, boolean ended) {
+    }
+
+    private Attempt attempt(Path request, Duration timeLimit) throws IOException, InterruptedException {
+        Path output = Files.createDirectory(request.resolve(StudentHarness.OUTPUT_FOLDER));
         sandbox.share(output, true);
         // This compile's own references: stop() may end the compiler meanwhile.
         Started compiler = ready(timeLimit);
@@ -88,23 +110,30 @@ final class CompileServer implements AutoCloseable {
         } catch (IOException e) {
             // The compiler is gone: its end, below, says how.
         }
-        String answer = heard.await(number, timeLimit);
+        Answers.Heard answer = heard.await(number, timeLimit);
         if (answer == null) {
             close();
-            return new Run(false, -1, heard.tail(), false, 0, null);
+            return new Attempt(new Run(false, -1, heard.tail(), false, 0, null), false);
         }
-        if (answer.equals(Answers.ENDED)) {
+        if (answer.status() == null) {
             compiler.process().waitFor(10, TimeUnit.SECONDS);
             String reached = compiler.limitReached();
             close();
-            return new Run(true, compiler.process().isAlive() ? -1 : compiler.process().exitValue(), heard.tail(),
-                    false, 0, reached);
+            return new Attempt(new Run(true, compiler.process().isAlive() ? -1 : compiler.process().exitValue(),
+                    answer.tail(), false, 0, reached), true);
         }
         String over = OutputCount.overCap(output);
-        if (over != null) {
+        if (over != null || answer.status() != 0) {
+            // javac reports an Error it caught (a stack overflow, memory) as a failed compile, perhaps with
+            // no word of it: after any compile that did not succeed, the next one gets a fresh compiler.
             close();
         }
-        return new Run(over == null, Integer.parseInt(answer), heard.tail(), false, 0, over);
+        return new Attempt(new Run(over == null, answer.status(), answer.tail(), false, 0, over), false);
+    }
+
+    /** Whether the compiler that takes the next compile has compiled others already. */
+    private synchronized boolean servedOthers() {
+        return running != null && running.process().isAlive() && compiles > 0 && compiles < COMPILES_PER_START;
     }
 
     /** The compiler that takes the next compile: the one running, or a new one when it cannot. */
@@ -137,11 +166,17 @@ final class CompileServer implements AutoCloseable {
         }
     }
 
-    /** Reads the compiler's output as it comes: its answers, and the end of whatever else it printed. */
+    /**
+     * Reads the compiler's output as it comes: its answers, each with what else it printed since
+     * the one before (decoded as UTF-8, each line capped), and its end.
+     */
     private static final class Answers extends Thread {
-        static final String ENDED = "ended";
+        /** An answer: the request and its status (null where the compiler ended), and what it printed before. */
+        record Heard(String number, Integer status, String tail) {
+        }
+
         private final InputStream in;
-        private final BlockingQueue<String> answered = new LinkedBlockingQueue<>();
+        private final BlockingQueue<Heard> answered = new LinkedBlockingQueue<>();
         private final StringBuilder tail = new StringBuilder();
 
         Answers(InputStream in) {
@@ -152,31 +187,32 @@ final class CompileServer implements AutoCloseable {
 
         @Override
         public void run() {
-            StringBuilder line = new StringBuilder();
+            ByteArrayOutputStream line = new ByteArrayOutputStream();
             try {
                 for (int c; (c = in.read()) >= 0; ) {
                     if (c != '\n') {
-                        if (line.length() < LINE_CAP) {
-                            line.append((char) c);
+                        if (line.size() < LINE_CAP) {
+                            line.write(c);
                         }
                         continue;
                     }
-                    Matcher answer = ANSWER.matcher(line);
+                    String text = line.toString(StandardCharsets.UTF_8);
+                    line.reset();
+                    Matcher answer = ANSWER.matcher(text);
                     if (answer.matches()) {
-                        answered.add(answer.group(1) + " " + answer.group(2));
+                        answered.add(new Heard(answer.group(1), Integer.valueOf(answer.group(2)), takeTail()));
                     } else {
-                        keep(line.append('\n'));
+                        keep(text + "\n");
                     }
-                    line.setLength(0);
                 }
             } catch (IOException e) {
                 // The compiler was killed: what was read is all there is.
             }
-            keep(line);
-            answered.add(ENDED);
+            keep(line.toString(StandardCharsets.UTF_8));
+            answered.add(new Heard(null, null, takeTail()));
         }
 
-        private void keep(CharSequence text) {
+        private void keep(String text) {
             synchronized (tail) {
                 tail.append(text);
                 if (tail.length() > LINE_CAP) {
@@ -185,22 +221,28 @@ final class CompileServer implements AutoCloseable {
             }
         }
 
+        private String takeTail() {
+            synchronized (tail) {
+                String text = ChildOutput.printable(tail.toString());
+                tail.setLength(0);
+                return text;
+            }
+        }
+
+        /** What the compiler printed since its last answer, when it has not answered. */
         String tail() {
             synchronized (tail) {
                 return ChildOutput.printable(tail.toString());
             }
         }
 
-        /** The status the compiler answered request {@code number} with, {@link #ENDED}, or null at {@code limit}. */
-        String await(String number, Duration limit) throws InterruptedException {
+        /** The compiler's answer to request {@code number}, its end (a null status), or null at {@code limit}. */
+        Heard await(String number, Duration limit) throws InterruptedException {
             long deadline = System.nanoTime() + limit.toNanos();
             while (true) {
-                String answer = answered.poll(deadline - System.nanoTime(), TimeUnit.NANOSECONDS);
-                if (answer == null || answer.equals(ENDED)) {
+                Heard answer = answered.poll(deadline - System.nanoTime(), TimeUnit.NANOSECONDS);
+                if (answer == null || answer.status() == null || answer.number().equals(number)) {
                     return answer;
-                }
-                if (answer.startsWith(number + " ")) {
-                    return answer.substring(number.length() + 1);
                 }
             }
         }

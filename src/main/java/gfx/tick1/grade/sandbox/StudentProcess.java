@@ -12,7 +12,10 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -122,7 +125,7 @@ public final class StudentProcess implements AutoCloseable {
      */
     public StudentProcess withWarmCompiler(Path folder) throws IOException {
         Files.createDirectory(folder);
-        sandbox.forCompiler().share(folder, true);
+        sandbox.forCompiler().share(folder, false);
         return new StudentProcess(sandbox, harness, memoryMegabytes, sharedArchive, folder);
     }
 
@@ -155,22 +158,33 @@ public final class StudentProcess implements AutoCloseable {
                     Files.copy(file, request.resolve(StudentHarness.SOURCES_FOLDER).resolve(file.getFileName()));
                 }
             }
-            Path written = request.resolve(StudentHarness.OUTPUT_FOLDER);
-            Compiled compiled = compiled(compiler.compile(request, sphereName, rendererName, timeLimit), written,
-                    timeLimit);
+            Run run = compiler.compile(request, sphereName, rendererName, timeLimit);
+            // Out of the compiler's reach before a byte of it is read: it may still be running, and
+            // nothing it could write (a link, a FIFO in place of a file) may change as it is read.
+            Path written = output.resolve("from-compiler");
+            try {
+                Files.move(request.resolve(StudentHarness.OUTPUT_FOLDER), written, StandardCopyOption.ATOMIC_MOVE);
+            } catch (NoSuchFileException e) {
+                // Nothing written: read as such below.
+            }
+            Compiled compiled = compiled(run, written, timeLimit);
             if (compiled.failure() != null) {
                 compiler.close();   // whatever stopped this compile, the next one gets a fresh compiler
             } else if (compiled.compiled()) {
                 copyClasses(written.resolve(StudentHarness.CLASSES_FOLDER),
                         output.resolve(StudentHarness.CLASSES_FOLDER));
             }
+            WorkFolder.delete(written);
             return compiled;
         } finally {
-            WorkFolder.delete(request);
+            WorkFolder.delete(request);   // what is left of it is deleted with the grade's work folder
         }
     }
 
-    /** Copies the regular files under {@code from} to {@code to}, folders and all; links are not followed. */
+    /**
+     * Copies the folders and regular files under {@code from} to {@code to}, and nothing else:
+     * no link is followed or copied.
+     */
     private static void copyClasses(Path from, Path to) throws IOException {
         try (var files = Files.walk(from)) {
             for (Path file : files.toList()) {
@@ -178,7 +192,7 @@ public final class StudentProcess implements AutoCloseable {
                 if (ChildOutput.isDirectory(file)) {
                     Files.createDirectories(copy);
                 } else if (ChildOutput.isRegularFile(file)) {
-                    Files.copy(file, copy);
+                    Files.copy(file, copy, LinkOption.NOFOLLOW_LINKS);
                 }
             }
         }
@@ -189,8 +203,9 @@ public final class StudentProcess implements AutoCloseable {
         Request request = new Request(List.of(StudentHarness.COMPILE_SERVER, COMPILER),
                 List.of(new Bind(compilerFolder, COMPILER, true)), timeLimit, null, Duration.ZERO, compilerHeap(),
                 true, archiveOption(), null);
-        // Its processor time is bounded as that of the compiles one start serves.
-        int cpuSeconds = (int) Math.ceil(timeLimit.toMillis() / 1000.0) * CompileServer.COMPILES_PER_START + 1;
+        // Its processor time is bounded as that of the compiles one start serves, with a second each for
+        // the JIT's and the collector's work between them.
+        int cpuSeconds = ((int) Math.ceil(timeLimit.toMillis() / 1000.0) + 1) * CompileServer.COMPILES_PER_START;
         Launch launch = launch(request);
         return SandboxedProcess.start(sandbox.forCompiler(), launch.command(), launch.binds(), cpuSeconds,
                 compilerHeap(), true);
@@ -198,14 +213,6 @@ public final class StudentProcess implements AutoCloseable {
 
     private int compilerHeap() {
         return Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES);
-    }
-
-    /**
-     * Whether one JVM compiles and then runs the code: its heap is enough for the compiler, and
-     * there is no warm compiler to compile it.
-     */
-    public boolean compilesAndRendersInOneRun() {
-        return memoryMegabytes >= COMPILER_HEAP_MEGABYTES && compiler == null;
     }
 
     /**
