@@ -37,9 +37,12 @@ final class CompileServer implements AutoCloseable {
     private static final int LINE_CAP = 2000;
     private static final Pattern ANSWER = Pattern.compile(StudentHarness.COMPILED + " ([0-9]{1,9}) ([0-9]{1,3})");
 
-    /** Starts the compiler's JVM, whose output is its answers, for compiles of at most {@code timeLimit} each. */
+    /**
+     * Starts the compiler's JVM in {@code sandbox}, with {@code folder} bound writable, for compiles
+     * of at most {@code timeLimit} each; its output is its answers.
+     */
     interface Launcher {
-        Started start(Duration timeLimit) throws IOException;
+        Started start(Sandbox sandbox, Path folder, Duration timeLimit) throws IOException;
     }
 
     private final Sandbox sandbox;
@@ -113,7 +116,7 @@ final class CompileServer implements AutoCloseable {
         Answers.Heard answer = heard.await(number, timeLimit);
         if (answer == null) {
             close();
-            return new Attempt(new Run(false, -1, heard.tail(), false, 0, null), false);
+            return new Attempt(new Run(false, -1, heard.takeTail(), false, 0, null), false);
         }
         if (answer.status() == null) {
             compiler.process().waitFor(10, TimeUnit.SECONDS);
@@ -123,7 +126,8 @@ final class CompileServer implements AutoCloseable {
                     answer.tail(), false, 0, reached), true);
         }
         String over = OutputCount.overCap(output);
-        if (over != null || answer.status() != 0) {
+        if (over != null || answer.status() != 0
+                || !ChildOutput.isDirectory(output.resolve(StudentHarness.CLASSES_FOLDER))) {
             // javac reports an Error it caught (a stack overflow, memory) as a failed compile, perhaps with
             // no word of it: after any compile that did not succeed, the next one gets a fresh compiler.
             close();
@@ -143,7 +147,7 @@ final class CompileServer implements AutoCloseable {
         }
         if (running == null || !running.process().isAlive() || compiles >= COMPILES_PER_START) {
             close();
-            running = launcher.start(timeLimit);
+            running = launcher.start(sandbox, folder, timeLimit);
             answers = new Answers(running.process().getInputStream());
             answers.start();
             compiles = 0;
@@ -221,18 +225,12 @@ final class CompileServer implements AutoCloseable {
             }
         }
 
-        private String takeTail() {
+        /** What the compiler printed since its last answer, which the next answer will not carry. */
+        String takeTail() {
             synchronized (tail) {
                 String text = ChildOutput.printable(tail.toString());
                 tail.setLength(0);
                 return text;
-            }
-        }
-
-        /** What the compiler printed since its last answer, when it has not answered. */
-        String tail() {
-            synchronized (tail) {
-                return ChildOutput.printable(tail.toString());
             }
         }
 

@@ -92,8 +92,6 @@ public final class StudentProcess implements AutoCloseable {
     /** The folder holding {@value #SHARED_ARCHIVE}, or null. */
     private final Path sharedArchive;
     private final SandboxedProcess sandboxed;
-    /** The folder of the warm compiler's requests, or null. */
-    private final Path compilerFolder;
     /** The warm compiler, or null: each compile is then a JVM of its own. */
     private final CompileServer compiler;
 
@@ -112,7 +110,6 @@ public final class StudentProcess implements AutoCloseable {
         this.memoryMegabytes = memoryMegabytes;
         this.sharedArchive = sharedArchive;
         this.sandboxed = new SandboxedProcess(sandbox);
-        this.compilerFolder = compilerFolder;
         this.compiler = compilerFolder == null ? null : new CompileServer(sandbox.forCompiler(), compilerFolder,
                 this::startCompiler);
     }
@@ -168,9 +165,7 @@ public final class StudentProcess implements AutoCloseable {
                 // Nothing written: read as such below.
             }
             Compiled compiled = compiled(run, written, timeLimit);
-            if (compiled.failure() != null) {
-                compiler.close();   // whatever stopped this compile, the next one gets a fresh compiler
-            } else if (compiled.compiled()) {
+            if (compiled.compiled()) {
                 copyClasses(written.resolve(StudentHarness.CLASSES_FOLDER),
                         output.resolve(StudentHarness.CLASSES_FOLDER));
             }
@@ -199,15 +194,16 @@ public final class StudentProcess implements AutoCloseable {
     }
 
     /** The compiler's JVM, for {@link CompileServer}: on the job's core, under the compiler's user, with its heap. */
-    private SandboxedProcess.Started startCompiler(Duration timeLimit) throws IOException {
+    private SandboxedProcess.Started startCompiler(Sandbox compilerSandbox, Path folder, Duration timeLimit)
+            throws IOException {
         Request request = new Request(List.of(StudentHarness.COMPILE_SERVER, COMPILER),
-                List.of(new Bind(compilerFolder, COMPILER, true)), timeLimit, null, Duration.ZERO, compilerHeap(),
+                List.of(new Bind(folder, COMPILER, true)), timeLimit, null, Duration.ZERO, compilerHeap(),
                 true, archiveOption(), null);
         // Its processor time is bounded as that of the compiles one start serves, with a second each for
         // the JIT's and the collector's work between them.
         int cpuSeconds = ((int) Math.ceil(timeLimit.toMillis() / 1000.0) + 1) * CompileServer.COMPILES_PER_START;
         Launch launch = launch(request);
-        return SandboxedProcess.start(sandbox.forCompiler(), launch.command(), launch.binds(), cpuSeconds,
+        return SandboxedProcess.start(compilerSandbox, launch.command(), launch.binds(), cpuSeconds,
                 compilerHeap(), true);
     }
 
@@ -362,8 +358,8 @@ public final class StudentProcess implements AutoCloseable {
      * holds nothing of any student's; the sandbox is used only so that the paths are the ones
      * every later run sees. {@code work} is an empty folder for the run.
      *
-     * @return the process, as this one but with the archive; or this one when the archive could
-     *     not be made (Java then starts as it always does)
+     * @return the process, as this one but with the archive and no warm compiler; or this one when the
+     *     archive could not be made (Java then starts as it always does)
      */
     public StudentProcess withSharedArchive(Path folder, Path work) throws IOException, InterruptedException {
         Path sources = Files.createDirectory(work.resolve("sources"));
@@ -393,7 +389,7 @@ public final class StudentProcess implements AutoCloseable {
         }
         Files.move(archive, folder.resolve(SHARED_ARCHIVE));
         Files.setPosixFilePermissions(folder.resolve(SHARED_ARCHIVE), PosixFilePermissions.fromString("r--r--r--"));
-        return new StudentProcess(sandbox, harness, memoryMegabytes, folder, compilerFolder);
+        return new StudentProcess(sandbox, harness, memoryMegabytes, folder, null);
     }
 
     /** The same process for another sandbox (a job's), with the same harness and archive, and no warm compiler. */
