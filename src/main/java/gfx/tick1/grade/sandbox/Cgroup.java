@@ -127,9 +127,10 @@ final class Cgroup implements AutoCloseable {
         Map<String, Path> groups = new LinkedHashMap<>();
         Cgroup cgroup = new Cgroup(place, groups, totals);
         try {
-            for (int tries = 1; groups.isEmpty(); tries++) {
+            for (int tries = 1; ; tries++) {
                 try {
                     makeGroups(place, "tick1-" + ProcessHandle.current().pid() + "-" + NEXT.incrementAndGet(), groups);
+                    break;
                 } catch (FileAlreadyExistsException e) {
                     // A group left by an earlier process with this process id: take the next name.
                     cgroup.close();
