@@ -29,10 +29,8 @@ import java.util.stream.IntStream;
 public final class FastRenderer {
 
     /**
-     * From this many spheres on, the BVH is used. Measured on the benchmark's crowd scenes at
-     * 640 x 480, one core, median of 7: brute force with the screen-space rectangles is faster up
-     * to 128 spheres (25 against 45 ms at 64, 37 against 42 at 128), level at 256 (57 against
-     * 56), and the BVH pulls ahead beyond (107 against 83 at 512).
+     * From this many spheres on, the BVH is used: below it, brute force with the screen-space
+     * rectangles is as fast or faster (docs/benchmark.md, "How the default renderer is fast").
      */
     public static final int BVH_THRESHOLD = 256;
 

@@ -11,18 +11,14 @@ import gfx.tick1.render.SamplePattern;
  * directions, their nearest hits, the shading up to R.V, and the specular term; each pixel's
  * colours are summed in sample order, as the readable code sums them. A pixel's work is one long
  * chain of dependent divisions and square roots; in passes, the chains of neighbouring pixels
- * are independent and the processor overlaps them (measured at 4K on one core: 308 ms for a
- * pixel at a time, 229 ms in these four passes). Two of its loops are written so that C2 turns
+ * are independent and the processor overlaps them. Two of its loops are written so that C2 turns
  * them into vector instructions: the camera's ({@link Frame#rayDirections}) and the conversion
- * to bytes ({@link #packRow}); with them a compiled 4K frame on two cores went from 137 to
- * 116 ms, and a single 4K render with 4 samples in a fresh JVM from 811 to 668 ms.
+ * to bytes ({@link #packRow}).
  *
  * <p>Why not more passes. Split into about thirty one-line passes, every one of which C2 turns
- * into vector instructions, a row is about 1.4 times faster once the JIT has compiled it (3840 x
- * 2160 on two cores, warm: 540 against 785 ms). But compiling those loops costs more than they
- * save in one run of tick1, which is how it renders: a fresh JVM rendering 3840 x 2160 takes 5.9
- * against 4.6 CPU seconds with 16 samples, 3.3 against 1.7 with 4 and 2.0 against 1.0 with one
- * (medians of interleaved runs).
+ * into vector instructions, a row is faster once the JIT has compiled it; but compiling those
+ * loops costs more than they save in one run of tick1, which is how it renders. The measurements
+ * behind both choices are in docs/benchmark.md, "How the default renderer is fast".
  */
 final class Tracer {
 

@@ -40,10 +40,8 @@ public final class PngOutput {
     }
 
     /**
-     * The deflate level tick1 writes with. Measured on tick1.xml against ImageIO's other levels
-     * (docs/benchmark.md), levels 1 to 3 take about the same time, 2 was the quickest of them in
-     * every run by a few percent, and all three take about 20% less time than ImageIO's default
-     * (level 4) at 3840 x 2160, for files about 1.5 times the size (1.2 times at 640 x 480).
+     * The deflate level tick1 writes with: the quickest of ImageIO's levels for files not much
+     * larger than its default's (docs/benchmark.md, "PNG encoding of one frame").
      */
     public static final int DEFLATE_LEVEL = 2;
 
