@@ -54,8 +54,7 @@ public final class CohortOutputs {
      */
     public static void placeImages(List<StudentResult> results, List<Path> images, Path report) throws IOException {
         for (int i = 0; i < results.size(); i++) {
-            Path folder = Files.createDirectories(ReportFiles.feedbackFolder(report,
-                    results.get(i).submission().folder()));
+            Path folder = ReportFiles.ownFeedbackFolder(report, results.get(i).submission().folder());
             removeImagesNotNamed(folder, results.get(i));
             for (SceneResult scene : results.get(i).scenes()) {
                 for (String image : scene.images()) {

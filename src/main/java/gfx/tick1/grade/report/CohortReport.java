@@ -48,7 +48,13 @@ public final class CohortReport {
             throws IOException {
         checkNames(given);
         List<String> grades = given.stream().map(grade).toList();
-        List<StudentResult> results = given.stream().map(result -> withImagesOnDisk(reportFolder, result)).toList();
+        Files.createDirectories(reportFolder);
+        List<StudentResult> results = new ArrayList<>();
+        for (StudentResult result : given) {
+            // The folder made (a link there replaced) before any file in it is looked at.
+            Path folder = ReportFiles.ownFeedbackFolder(reportFolder, result.submission().folder());
+            results.add(withImagesOnDisk(folder, result));
+        }
         for (StudentResult result : results) {
             Path folder = ReportFiles.feedbackFolder(reportFolder, result.submission().folder());
             ReportFiles.write(folder.resolve(FeedbackPage.HTML), FeedbackPage.html(result));
@@ -56,7 +62,7 @@ public final class CohortReport {
         }
         ReportFiles.write(reportFolder.resolve(FeedbackZip.NAME), out -> FeedbackZip.write(reportFolder, results, out));
         List<String> beside = new ArrayList<>(List.of(FeedbackZip.NAME));
-        if (Files.isRegularFile(reportFolder.resolve(ReportFiles.GRADES))) {
+        if (Files.isRegularFile(reportFolder.resolve(ReportFiles.GRADES), LinkOption.NOFOLLOW_LINKS)) {
             beside.add(ReportFiles.GRADES);
         }
         ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grades, beside));
@@ -85,8 +91,7 @@ public final class CohortReport {
      * The result with each image that is not a file in the student's feedback folder left out
      * (the grader could not write it), so that no page shows a broken image or link to it.
      */
-    private static StudentResult withImagesOnDisk(Path reportFolder, StudentResult result) {
-        Path folder = ReportFiles.feedbackFolder(reportFolder, result.submission().folder());
+    private static StudentResult withImagesOnDisk(Path folder, StudentResult result) {
         List<SceneResult> scenes = result.scenes().stream().map(scene -> new SceneResult(scene.name(),
                 scene.hidden(), scene.passed(), scene.explanation(), onDisk(folder, scene.heatMap()),
                 onDisk(folder, scene.yours()), onDisk(folder, scene.expected()))).toList();

@@ -1,10 +1,10 @@
 package gfx.tick1.grade.report;
 
 import gfx.tick1.io.AtomicFile;
+import gfx.tick1.io.OwnFolder;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 
 /**
@@ -35,8 +35,11 @@ public final class ReportFiles {
         write(target, out -> out.write(bytes));
     }
 
+    /**
+     * Writes {@code target} whole, in a folder that exists: a link at {@code target} is replaced by the file, never
+     * written through ({@link AtomicFile} renames over it).
+     */
     public static void write(Path target, Content content) throws IOException {
-        Files.createDirectories(target.toAbsolutePath().getParent());
         AtomicFile.write(target, content::writeTo);
     }
 
@@ -70,6 +73,16 @@ public final class ReportFiles {
      */
     static boolean isPlainName(String name) {
         return name != null && plainName(name).equals(name);
+    }
+
+    /**
+     * {@code report/feedback/<folder>}, made if need be, with neither it nor {@code report/feedback} a link ({@link
+     * OwnFolder}); the folder's name must be plain (see {@link #isPlainName}).
+     */
+    static Path ownFeedbackFolder(Path report, String folder) throws IOException {
+        Path path = feedbackFolder(report, folder);
+        OwnFolder.at(path.getParent());
+        return OwnFolder.at(path);
     }
 
     /** {@code report/feedback/<folder>}; the folder's name must be plain (see {@link #isPlainName}). */
