@@ -26,7 +26,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.ZonedDateTime;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.atomic.AtomicReference;
 
 /**
@@ -156,13 +158,17 @@ final class CohortCommand {
     private int report(CohortGrade.Done done) {
         Path report = options.reportFolder();
         List<StudentResult> results = CohortOutputs.forReport(done.results());
+        // A student whose feedback cannot be written is theirs alone: once, with the first reason.
+        Map<String, String> unwritten = new LinkedHashMap<>();
         try {
-            CohortOutputs.placeImages(results, done.images(), report);
+            CohortOutputs.placeImages(results, done.images(), report)
+                    .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
             // The gradebook first: the cohort's page links to it when it is there.
             writeGrades(results, done.results().stream().map(StudentResult::submission)
                     .map(Submissions::namedByMoodle).toList(), report);
             CohortReport.write(report, results,
-                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())));
+                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())))
+                    .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
         } catch (CohortInputException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());
         } catch (IOException e) {
@@ -181,8 +187,11 @@ final class CohortCommand {
             err.println("tick1 grade: " + printable(ungraded.folder()) + ": not graded: " + ungraded.why()
                     + (ungraded.grader() ? "" : " " + report));
         }
-        return done.ungraded().isEmpty() ? GradeCommand.EXIT_PASS
-                : done.ungraded().stream().anyMatch(CohortGrade.Ungraded::grader) ? ExitStatuses.EXIT_INTERNAL
+        unwritten.forEach((folder, why) -> err.println("tick1 grade: " + printable(folder) + ": its feedback "
+                + "cannot be written in " + report + " (" + why + "): its grade is in grades.csv, but its feedback "
+                + "is not in feedback.zip"));
+        return done.ungraded().stream().anyMatch(CohortGrade.Ungraded::grader) ? ExitStatuses.EXIT_INTERNAL
+                : done.ungraded().isEmpty() && unwritten.isEmpty() ? GradeCommand.EXIT_PASS
                 : GradeCommand.EXIT_CANNOT_WRITE;
     }
 

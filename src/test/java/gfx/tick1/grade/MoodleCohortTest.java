@@ -62,4 +62,19 @@ class MoodleCohortTest {
         assertThat(rows(report)).as("grades.csv's rows").containsOnlyKeys("Participant 7");
         assertThat(Files.readString(report.resolve("index.html"))).as("the report").contains("ab123");
     }
+    @Test
+    void aNameLongerThanTheFileSystemTakesStopsNothing(@TempDir Path dir) throws IOException {
+        byte[] sphere = StudentSolution.correct().sphere().getBytes(StandardCharsets.UTF_8);
+        String longName = "陈".repeat(100);
+        // No Renderer.java, so nothing is run: a problem of the files.
+        Path download = Files.write(dir.resolve("a.zip"), zip(Map.of(MoodleNaming.folder(longName, 4242)
+                + "/Sphere.java", sphere)));
+        Path report = dir.resolve("report");
+        CliRun run = CliRun.of(gradeArguments(download, report));
+
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(rows(report)).as("grades.csv's rows").containsOnlyKeys("Participant 4242");
+        assertThat(report.resolve("feedback.zip")).isRegularFile();
+        assertThat(report.resolve("index.html")).isRegularFile();
+    }
 }

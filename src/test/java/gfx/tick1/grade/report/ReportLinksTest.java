@@ -1,7 +1,6 @@
 package gfx.tick1.grade.report;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import gfx.tick1.grade.model.StudentResult;
 import java.io.IOException;
@@ -82,8 +81,11 @@ class ReportLinksTest {
         Path feedback = Files.createDirectories(report.resolve("feedback"));
         Files.writeString(feedback.resolve(folderOf(0)), "someone's file");
 
-        assertThatThrownBy(() -> CohortReport.write(report, results, SmallCohort::grade))
-                .isInstanceOf(IOException.class).hasMessageContaining("not a folder");
+        assertThat(CohortReport.write(report, results, SmallCohort::grade)).as("the students whose feedback is "
+                + "not written").singleElement().satisfies(student -> {
+                    assertThat(student.folder()).isEqualTo(folderOf(0));
+                    assertThat(student.why()).contains("not a folder");
+                });
         assertThat(feedback.resolve(folderOf(0))).hasContent("someone's file");
     }
 
