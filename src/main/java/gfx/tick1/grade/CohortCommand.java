@@ -25,7 +25,10 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.ZonedDateTime;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.atomic.AtomicReference;
 
 /**
@@ -66,6 +69,13 @@ final class CohortCommand {
         if (options.scenesFolder() == null) {
             err.println("tick1 grade: the built-in hidden scene is public (it is in tick1): anyone can pass it by "
                     + "copying its images; give scenes of your own with --scenes");
+        }
+        for (Submission submission : submissions) {
+            if (!Submissions.namedByMoodle(submission)) {
+                err.println("tick1 grade: " + printable(submission.folder()) + ": not a name Moodle gives a "
+                        + "student's folder or file (Full Name_<participant id>_assignsubmission_file): graded in "
+                        + "the report, but given no row in grades.csv");
+            }
         }
         Submissions.sharedIds(submissions).forEach((id, folders) -> err.println("tick1 grade: participant "
                 + printable(id) + " has " + folders.size() + " folders in the download (" + printable(String.join(
@@ -148,12 +158,17 @@ final class CohortCommand {
     private int report(CohortGrade.Done done) {
         Path report = options.reportFolder();
         List<StudentResult> results = CohortOutputs.forReport(done.results());
+        // A student whose feedback cannot be written is theirs alone: once, with the first reason.
+        Map<String, String> unwritten = new LinkedHashMap<>();
         try {
-            CohortOutputs.placeImages(results, done.images(), report);
+            CohortOutputs.placeImages(results, done.images(), report)
+                    .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
             // The gradebook first: the cohort's page links to it when it is there.
-            writeGrades(results, report);
+            writeGrades(results, done.results().stream().map(StudentResult::submission)
+                    .map(Submissions::namedByMoodle).toList(), report);
             CohortReport.write(report, results,
-                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())));
+                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())))
+                    .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
         } catch (CohortInputException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());
         } catch (IOException e) {
@@ -172,8 +187,11 @@ final class CohortCommand {
             err.println("tick1 grade: " + printable(ungraded.folder()) + ": not graded: " + ungraded.why()
                     + (ungraded.grader() ? "" : " " + report));
         }
-        return done.ungraded().isEmpty() ? GradeCommand.EXIT_PASS
-                : done.ungraded().stream().anyMatch(CohortGrade.Ungraded::grader) ? ExitStatuses.EXIT_INTERNAL
+        unwritten.forEach((folder, why) -> err.println("tick1 grade: " + printable(folder) + ": its feedback "
+                + "cannot be written in " + report + " (" + why + "): its grade is in grades.csv, but its feedback "
+                + "is not in feedback.zip"));
+        return done.ungraded().stream().anyMatch(CohortGrade.Ungraded::grader) ? ExitStatuses.EXIT_INTERNAL
+                : done.ungraded().isEmpty() && unwritten.isEmpty() ? GradeCommand.EXIT_PASS
                 : GradeCommand.EXIT_CANNOT_WRITE;
     }
 
@@ -183,7 +201,7 @@ final class CohortCommand {
      */
     private List<Submission> withoutOwnFiles(List<Submission> submissions) {
         Path download = options.submissions().toAbsolutePath().normalize();
-        List<String> own = new java.util.ArrayList<>();
+        List<String> own = new ArrayList<>();
         for (Path path : new Path[] {options.reportFolder(), options.worksheet()}) {
             if (path != null && download.equals(path.toAbsolutePath().normalize().getParent())) {
                 own.add(path.getFileName().toString());
@@ -200,13 +218,19 @@ final class CohortCommand {
     /**
      * grades.csv: the worksheet given with --worksheet, its Grade and Feedback comments cells filled in
      * for the students graded (the file given is only read), or else a fresh worksheet. The students
-     * of the one without submissions, and the submissions without a row, go to standard error.
+     * of the one without submissions, and the submissions without a row, go to standard error. Only a submission
+     * Moodle named ({@code moodleNamed}, in the results' order) has a participant's row: any other is said so on
+     * standard error when the download is read.
      */
-    private void writeGrades(List<StudentResult> results, Path report) throws IOException {
-        List<Worksheet.Mark> marks = results.stream()
-                .map(result -> Worksheet.Mark.of(result,
-                        CohortOutputs.grade(result, maxGrade, options.perScene())))
-                .toList();
+    private void writeGrades(List<StudentResult> results, List<Boolean> moodleNamed, Path report)
+            throws IOException {
+        List<Worksheet.Mark> marks = new ArrayList<>();
+        for (int i = 0; i < results.size(); i++) {
+            if (moodleNamed.get(i)) {
+                marks.add(Worksheet.Mark.of(results.get(i),
+                        CohortOutputs.grade(results.get(i), maxGrade, options.perScene())));
+            }
+        }
         if (worksheet == null) {
             byte[] fresh = Worksheet.fresh(marks, maxGrade, ZonedDateTime.now());
             ReportFiles.write(report.resolve(ReportFiles.GRADES), out -> out.write(fresh));

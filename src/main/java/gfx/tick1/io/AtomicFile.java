@@ -4,8 +4,10 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFilePermissions;
 
 /**
@@ -13,7 +15,8 @@ import java.nio.file.attribute.PosixFilePermissions;
  * complete. A rename within one folder is atomic on POSIX file systems, so readers see the old file or the new one.
  * If the write fails (a full disk, say) the temporary file is deleted and the exception passed on; if the JVM is
  * stopped meanwhile a shutdown hook deletes it. Only a hard kill can leave one behind: a hidden
- * {@code .NAME.RANDOM.tmp}, never the target itself.
+ * {@code .NAME.RANDOM.tmp}, never the target itself. A link at the target is replaced by the file (the rename
+ * replaces it), never written through.
  */
 public final class AtomicFile {
 
@@ -41,7 +44,9 @@ public final class AtomicFile {
         }
         OnExit deleted = OnExit.run("tick1-delete-temporary-file", () -> deleteQuietly(temporary));
         try {
-            try (OutputStream out = Files.newOutputStream(temporary)) {
+            // The temporary file is new and tick1's: a link put in its place meanwhile is not written through.
+            try (OutputStream out = Files.newOutputStream(temporary, StandardOpenOption.WRITE,
+                    StandardOpenOption.TRUNCATE_EXISTING, LinkOption.NOFOLLOW_LINKS)) {
                 content.writeTo(out);
             }
             try {

@@ -66,7 +66,7 @@ class GradeCohortTest {
     }
 
     /** grade's arguments for a cohort: small images, and a time limit of 10 s unless {@code more} gives one. */
-    private static String[] gradeArguments(Path submissions, Path report, String... more) {
+    static String[] gradeArguments(Path submissions, Path report, String... more) {
         List<String> args = new ArrayList<>(List.of("grade", "--submissions", submissions.toString(),
                 "--report", report.toString()));
         args.addAll(List.of(SMALL));
@@ -171,7 +171,7 @@ class GradeCohortTest {
         }
     }
 
-    private static byte[] zip(Map<String, byte[]> files) throws IOException {
+    static byte[] zip(Map<String, byte[]> files) throws IOException {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         try (ZipOutputStream zip = new ZipOutputStream(bytes)) {
             for (Map.Entry<String, byte[]> file : files.entrySet()) {
@@ -194,7 +194,7 @@ class GradeCohortTest {
     }
 
     /** grades.csv's rows after the header, by identifier. */
-    private static Map<String, List<String>> rows(Path report) throws IOException {
+    static Map<String, List<String>> rows(Path report) throws IOException {
         List<String> lines = Files.readString(report.resolve("grades.csv")).lines().toList();
         assertThat(lines.get(0)).isEqualTo(String.join(",", Worksheet.HEADER));
         Map<String, List<String>> rows = new LinkedHashMap<>();
@@ -571,9 +571,9 @@ class GradeCohortTest {
                 .contains("Missing required argument(s): --submissions=PATH");
     }
 
-    private static final String WORKSHEET_HEADER = String.join(",", Worksheet.HEADER);
+    static final String WORKSHEET_HEADER = String.join(",", Worksheet.HEADER);
 
-    private static String worksheetRow(int id, String name, String maximum) {
+    static String worksheetRow(int id, String name, String maximum) {
         return "Participant " + id + "," + name + ",,Submitted for grading,," + maximum + ",Yes,,,\r\n";
     }
 

@@ -5,6 +5,7 @@ import gfx.tick1.grade.model.StudentResult.SceneResult;
 import gfx.tick1.grade.model.StudentResult;
 import gfx.tick1.grade.model.Submission;
 import gfx.tick1.grade.sandbox.WorkFolder;
+import gfx.tick1.io.OwnFolder;
 import java.io.IOException;
 import java.io.Reader;
 import java.io.Writer;
@@ -46,9 +47,12 @@ public final class ResultStore {
 
     private final Path folder;
 
-    /** The store in {@code folder}, made if need be; what a stopped run left half-written is deleted. */
+    /**
+     * The store in {@code folder}, made if need be (never a link: one there is replaced, {@link OwnFolder}); what a
+     * stopped run left half-written is deleted.
+     */
     public ResultStore(Path folder) throws IOException {
-        this.folder = Files.createDirectories(folder);
+        this.folder = OwnFolder.at(folder);
         try (DirectoryStream<Path> entries = Files.newDirectoryStream(folder, WRITING + "*")) {
             for (Path entry : entries) {
                 WorkFolder.delete(entry);
@@ -105,7 +109,9 @@ public final class ResultStore {
     /** The stored result with {@code key}, as the result of {@code submission}, or null when there is none. */
     StudentResult load(String key, Submission submission) throws IOException {
         Path file = folderOf(key).resolve(RESULT_FILE);
-        if (!Files.isRegularFile(file, LinkOption.NOFOLLOW_LINKS)) {
+        // A result read through a link could be anyone's: it is no result.
+        if (!Files.isDirectory(folderOf(key), LinkOption.NOFOLLOW_LINKS)
+                || !Files.isRegularFile(file, LinkOption.NOFOLLOW_LINKS)) {
             return null;
         }
         Properties p = new Properties();
@@ -172,10 +178,13 @@ public final class ResultStore {
             }
         }
         force(entry);
+        if (Files.isSymbolicLink(folderOf(key))) {
+            Files.delete(folderOf(key));   // the link, not what it names: load never reads through it
+        }
         try {
             Files.move(entry, folderOf(key), StandardCopyOption.ATOMIC_MOVE);
         } catch (IOException e) {
-            if (!Files.isDirectory(folderOf(key))) {
+            if (!Files.isDirectory(folderOf(key), LinkOption.NOFOLLOW_LINKS)) {
                 throw e;
             }
             // The same files graded by another job meanwhile: that result stands.

@@ -119,6 +119,14 @@ public final class Submissions {
         return folders;
     }
 
+    /**
+     * Whether the submission's folder (or, in a download without folders, its files) is named as Moodle names a
+     * student's: only then is its id a participant's, whose row of the grading worksheet it may fill.
+     */
+    public static boolean namedByMoodle(Submission submission) {
+        return StudentName.ofFolder(submission.folder()).moodles();
+    }
+
     // ---------------------------------------------------------------------------------------------- the zip
 
     private Map<String, Student> readZip(Path path, FileChannel channel) throws IOException {

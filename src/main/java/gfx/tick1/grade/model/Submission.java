@@ -7,7 +7,8 @@ import java.util.List;
  * the tick asks for, or why they could not be found.
  *
  * @param folder   the top-level folder of the download the submission came from, as named there
- *                 (Moodle: {@code Full Name_<participant id>_assignsubmission_file_})
+ *                 (Moodle: {@code Full Name_<participant id>_assignsubmission_file}, with a trailing {@code _} before
+ *                 Moodle 4.1)
  * @param id       the participant id from a Moodle folder name, else the folder's name
  * @param fullName the name from a Moodle folder name, else the folder's name
  * @param sphere   the student's Sphere.java, or null when {@code problem} says why there is none

@@ -5,6 +5,7 @@ import static java.nio.file.LinkOption.NOFOLLOW_LINKS;
 import gfx.tick1.grade.model.StudentResult.SceneResult;
 import gfx.tick1.grade.model.StudentResult;
 import gfx.tick1.grade.model.Submission;
+import gfx.tick1.io.IoErrors;
 import java.io.IOException;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
@@ -51,18 +52,29 @@ public final class CohortOutputs {
     /**
      * Copies each result's images (the files its scene results name) from the folder where its
      * result is stored, {@code images} (in the same order; null for none), into its feedback folder.
+     *
+     * @return the students whose images could not be placed, each with why; the others' are placed
      */
-    public static void placeImages(List<StudentResult> results, List<Path> images, Path report) throws IOException {
+    public static List<Unwritten> placeImages(List<StudentResult> results, List<Path> images, Path report) {
+        List<Unwritten> unwritten = new ArrayList<>();
         for (int i = 0; i < results.size(); i++) {
-            Path folder = Files.createDirectories(ReportFiles.feedbackFolder(report,
-                    results.get(i).submission().folder()));
-            removeImagesNotNamed(folder, results.get(i));
-            for (SceneResult scene : results.get(i).scenes()) {
-                for (String image : scene.images()) {
-                    if (images.get(i) != null) {
-                        Path stored = images.get(i).resolve(image);
-                        ReportFiles.write(folder.resolve(image), out -> Files.copy(stored, out));
-                    }
+            String student = results.get(i).submission().folder();
+            try {
+                placeImages(results.get(i), images.get(i), ReportFiles.ownFeedbackFolder(report, student));
+            } catch (IOException e) {
+                unwritten.add(new Unwritten(student, IoErrors.reason(e)));
+            }
+        }
+        return List.copyOf(unwritten);
+    }
+
+    private static void placeImages(StudentResult result, Path stored, Path folder) throws IOException {
+        removeImagesNotNamed(folder, result);
+        for (SceneResult scene : result.scenes()) {
+            for (String image : scene.images()) {
+                if (stored != null) {
+                    Path source = stored.resolve(image);
+                    ReportFiles.write(folder.resolve(image), out -> Files.copy(source, out));
                 }
             }
         }
@@ -90,19 +102,21 @@ public final class CohortOutputs {
      * The results as the report takes them: each submission's folder name made one plain path
      * element ({@link ReportFiles#plainName}), different from the others' (a name from a download
      * can hold a backslash or a control character, and after that change two names could meet;
-     * Moodle's own names pass unchanged), and every text bounded: the reason to {@link #MAX_REASON}
-     * characters, the name and id to {@link #MAX_NAME}, each explanation to {@link #MAX_LINES}
-     * lines of {@link #MAX_LINE}; so no cell, page or file of the report grows with what a
-     * student's archive holds.
+     * Moodle's own names pass unchanged) and no longer than a file system takes ({@link
+     * ReportFiles#fitted}: a long name keeps Moodle's {@code _<id>_} and plugin part), and every
+     * text bounded: the reason to {@link #MAX_REASON} characters, the name and id to {@link
+     * #MAX_NAME}, each explanation to {@link #MAX_LINES} lines of {@link #MAX_LINE}; so no cell,
+     * page or file of the report grows with what a student's archive holds.
      */
     public static List<StudentResult> forReport(List<StudentResult> results) {
         Set<String> taken = new HashSet<>();
         List<StudentResult> plain = new ArrayList<>();
         for (StudentResult result : results) {
             Submission submission = result.submission();
-            String folder = ReportFiles.plainName(submission.folder());
+            String plainFolder = ReportFiles.plainName(submission.folder());
+            String folder = ReportFiles.fitted(plainFolder, submission.id(), "");
             for (int n = 2; !taken.add(folder); n++) {
-                folder = ReportFiles.plainName(submission.folder()) + "_" + n;
+                folder = ReportFiles.fitted(plainFolder, submission.id(), "_" + n);
             }
             List<SceneResult> scenes = result.scenes().stream().map(scene -> new SceneResult(
                     CellText.bounded(scene.name(), MAX_NAME), scene.hidden(), scene.passed(),

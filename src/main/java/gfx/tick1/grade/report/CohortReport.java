@@ -2,6 +2,7 @@ package gfx.tick1.grade.report;
 
 import gfx.tick1.grade.model.StudentResult.SceneResult;
 import gfx.tick1.grade.model.StudentResult;
+import gfx.tick1.io.IoErrors;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
@@ -40,26 +41,43 @@ public final class CohortReport {
      *                     folder name, different from every other, as must each image's file name
      * @param grade        the mark to show for a result, as the gradebook has it (for example "1.00");
      *                     the index links to {@code grades.csv} when it is already in the folder
+     * @return the students whose feedback files could not be written (a name the file system refuses, a file
+     *                     where their folder belongs), each with why: they are left out of feedback.zip, and the
+     *                     rest of the report is written
      * @throws IllegalArgumentException when a folder or file name is not a plain name, or two
      *                     results share a folder; nothing is written then
-     * @throws IOException when a file cannot be written; the files written before it stay
+     * @throws IOException when a file of the whole cohort's cannot be written; the files written before it stay
      */
-    public static void write(Path reportFolder, List<StudentResult> given, Function<StudentResult, String> grade)
-            throws IOException {
+    public static List<Unwritten> write(Path reportFolder, List<StudentResult> given,
+            Function<StudentResult, String> grade) throws IOException {
         checkNames(given);
         List<String> grades = given.stream().map(grade).toList();
-        List<StudentResult> results = given.stream().map(result -> withImagesOnDisk(reportFolder, result)).toList();
-        for (StudentResult result : results) {
-            Path folder = ReportFiles.feedbackFolder(reportFolder, result.submission().folder());
-            ReportFiles.write(folder.resolve(FeedbackPage.HTML), FeedbackPage.html(result));
-            ReportFiles.write(folder.resolve(FeedbackPage.TEXT), FeedbackPage.text(result));
+        Files.createDirectories(reportFolder);
+        List<StudentResult> results = new ArrayList<>();
+        List<StudentResult> written = new ArrayList<>();
+        List<Unwritten> unwritten = new ArrayList<>();
+        for (StudentResult result : given) {
+            StudentResult shown;
+            try {
+                // The folder made (a link there replaced) before any file in it is looked at.
+                Path folder = ReportFiles.ownFeedbackFolder(reportFolder, result.submission().folder());
+                shown = withImagesOnDisk(folder, result);
+                ReportFiles.write(folder.resolve(FeedbackPage.HTML), FeedbackPage.html(shown));
+                ReportFiles.write(folder.resolve(FeedbackPage.TEXT), FeedbackPage.text(shown));
+                written.add(shown);
+            } catch (IOException e) {
+                unwritten.add(new Unwritten(result.submission().folder(), IoErrors.reason(e)));
+                shown = withImagesOnDisk(null, result);
+            }
+            results.add(shown);
         }
-        ReportFiles.write(reportFolder.resolve(FeedbackZip.NAME), out -> FeedbackZip.write(reportFolder, results, out));
+        ReportFiles.write(reportFolder.resolve(FeedbackZip.NAME), out -> FeedbackZip.write(reportFolder, written, out));
         List<String> beside = new ArrayList<>(List.of(FeedbackZip.NAME));
-        if (Files.isRegularFile(reportFolder.resolve(ReportFiles.GRADES))) {
+        if (Files.isRegularFile(reportFolder.resolve(ReportFiles.GRADES), LinkOption.NOFOLLOW_LINKS)) {
             beside.add(ReportFiles.GRADES);
         }
         ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grades, beside));
+        return List.copyOf(unwritten);
     }
 
     private static void checkNames(List<StudentResult> results) {
@@ -83,10 +101,10 @@ public final class CohortReport {
 
     /**
      * The result with each image that is not a file in the student's feedback folder left out
-     * (the grader could not write it), so that no page shows a broken image or link to it.
+     * (the grader could not write it), so that no page shows a broken image or link to it; every
+     * image, when {@code folder} is null (the student's folder could not be made).
      */
-    private static StudentResult withImagesOnDisk(Path reportFolder, StudentResult result) {
-        Path folder = ReportFiles.feedbackFolder(reportFolder, result.submission().folder());
+    private static StudentResult withImagesOnDisk(Path folder, StudentResult result) {
         List<SceneResult> scenes = result.scenes().stream().map(scene -> new SceneResult(scene.name(),
                 scene.hidden(), scene.passed(), scene.explanation(), onDisk(folder, scene.heatMap()),
                 onDisk(folder, scene.yours()), onDisk(folder, scene.expected()))).toList();
@@ -95,7 +113,8 @@ public final class CohortReport {
     }
 
     private static String onDisk(Path folder, String image) {
-        return image != null && Files.isRegularFile(folder.resolve(image), LinkOption.NOFOLLOW_LINKS) ? image : null;
+        return image != null && folder != null
+                && Files.isRegularFile(folder.resolve(image), LinkOption.NOFOLLOW_LINKS) ? image : null;
     }
 
     private static boolean isFeedbackFile(String name) {

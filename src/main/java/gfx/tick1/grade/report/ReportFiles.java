@@ -1,10 +1,10 @@
 package gfx.tick1.grade.report;
 
 import gfx.tick1.io.AtomicFile;
+import gfx.tick1.io.OwnFolder;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 
 /**
@@ -17,6 +17,12 @@ public final class ReportFiles {
 
     /** The report folder's sub-folder holding one folder of feedback per student. */
     static final String FEEDBACK = "feedback";
+
+    /**
+     * The most bytes of UTF-8 in one name the report writes: NAME_MAX of Linux's usual file systems (ext4, XFS,
+     * Btrfs, tmpfs), whatever the characters.
+     */
+    static final int MAX_NAME_BYTES = 255;
 
     /** The gradebook in the report folder, in the form of Moodle's grading worksheet. */
     public static final String GRADES = "grades.csv";
@@ -35,23 +41,28 @@ public final class ReportFiles {
         write(target, out -> out.write(bytes));
     }
 
+    /**
+     * Writes {@code target} whole, in a folder that exists: a link at {@code target} is replaced by the file, never
+     * written through ({@link AtomicFile} renames over it).
+     */
     public static void write(Path target, Content content) throws IOException {
-        Files.createDirectories(target.toAbsolutePath().getParent());
         AtomicFile.write(target, content::writeTo);
     }
 
     /**
      * {@code name} as one plain entry of a folder, the one way the report makes a name safe: a
-     * separator, NUL, a C0 or C1 control character or a bidirectional formatting mark becomes
-     * {@code _} (a control would be obeyed by a terminal listing the folder, a bidi mark can make
-     * one name read as another), and an empty name, {@code .} or {@code ..} gains a leading
-     * {@code _}. Moodle's own folder names pass unchanged.
+     * separator, NUL, a C0 or C1 control character or a bidirectional formatting mark becomes a
+     * space (a control would be obeyed by a terminal listing the folder, a bidi mark can make
+     * one name read as another; a space, not {@code _}, since Moodle's feedback importer reads the
+     * participant id after the first {@code _} of a name, and Moodle's clean_filename leaves C1
+     * controls and bidi marks in a full name), and an empty name, {@code .} or {@code ..} gains a
+     * leading {@code _}. Moodle's own folder names pass unchanged otherwise.
      */
     public static String plainName(String name) {
         StringBuilder out = new StringBuilder(name.length());
         for (int i = 0; i < name.length(); i++) {
             char c = name.charAt(i);
-            out.append(c == '/' || c == '\\' || c < 0x20 || c >= 0x7F && c <= 0x9F || isBidiMark(c) ? '_' : c);
+            out.append(c == '/' || c == '\\' || c < 0x20 || c >= 0x7F && c <= 0x9F || isBidiMark(c) ? ' ' : c);
         }
         String plain = out.toString();
         return plain.isEmpty() || plain.equals(".") || plain.equals("..") ? "_" + plain : plain;
@@ -70,6 +81,52 @@ public final class ReportFiles {
      */
     static boolean isPlainName(String name) {
         return name != null && plainName(name).equals(name);
+    }
+
+    /**
+     * {@code report/feedback/<folder>}, made if need be, with neither it nor {@code report/feedback} a link ({@link
+     * OwnFolder}); the folder's name must be plain (see {@link #isPlainName}).
+     */
+    static Path ownFeedbackFolder(Path report, String folder) throws IOException {
+        Path path = feedbackFolder(report, folder);
+        OwnFolder.at(path.getParent());
+        return OwnFolder.at(path);
+    }
+
+    /**
+     * {@code name} shortened, where need be, to {@link #MAX_NAME_BYTES} bytes of UTF-8 with {@code suffix} at its
+     * end. A name of Moodle's form, {@code <full name>_<id>_<plugin part>}, keeps all from {@code _<id>_} on, and
+     * loses the end of its full name: Moodle's feedback importer reads the participant from the part after the
+     * first {@code _}, so feedback.zip's folder still finds the student. Any other name loses its end. A character
+     * is never cut in two.
+     */
+    static String fitted(String name, String id, String suffix) {
+        int first = name.indexOf('_');
+        boolean moodles = first >= 0 && name.startsWith("_" + id + "_", first);
+        String head = moodles ? name.substring(0, first) : name;
+        String tail = (moodles ? name.substring(first) : "") + suffix;
+        if (utf8Length(head + tail) <= MAX_NAME_BYTES) {
+            return head + tail;
+        }
+        if (utf8Length(tail) > MAX_NAME_BYTES / 2) {
+            head = name;   // not a tail worth its room: the name loses its end, the suffix is kept
+            tail = suffix;
+        }
+        StringBuilder kept = new StringBuilder();
+        int room = MAX_NAME_BYTES - utf8Length(tail);
+        for (int c : head.codePoints().toArray()) {
+            String character = Character.toString(c);
+            room -= utf8Length(character);
+            if (room < 0) {
+                break;
+            }
+            kept.append(character);
+        }
+        return kept + tail;
+    }
+
+    private static int utf8Length(String text) {
+        return text.getBytes(StandardCharsets.UTF_8).length;
     }
 
     /** {@code report/feedback/<folder>}; the folder's name must be plain (see {@link #isPlainName}). */

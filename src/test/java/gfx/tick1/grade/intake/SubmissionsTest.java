@@ -33,24 +33,39 @@ class SubmissionsTest {
         return Submissions.read(write("cohort.zip", zip(entries)));
     }
 
+    /** A download of one folder holding both files. */
+    private List<Submission> bothFilesIn(String folder) throws IOException {
+        return readZip(entries(folder + "/Sphere.java", SPHERE, folder + "/Renderer.java", RENDERER));
+    }
+
     private static String text(Submission.SourceFile file) {
         return new String(file.content(), StandardCharsets.UTF_8);
     }
 
     @Test
-    void moodleFolderNamesGiveTheParticipantIdAndFullNameReadFromTheRight() throws IOException {
-        String folder = "Zoë Ann_O'Brien_42_assignsubmission_file_";
-        List<Submission> cohort = readZip(entries(folder + "/Sphere.java", SPHERE,
-                folder + "/Renderer.java", RENDERER));
+    void moodleFolderNamesGiveTheParticipantIdAndFullName() throws IOException {
+        String folder = "Zoë Ann OBrien_42_assignsubmission_file_";
+        List<Submission> cohort = bothFilesIn(folder);
 
         assertThat(cohort).singleElement().satisfies(s -> {
             assertThat(s.folder()).isEqualTo(folder);
             assertThat(s.id()).isEqualTo("42");
-            assertThat(s.fullName()).isEqualTo("Zoë Ann_O'Brien");
+            assertThat(s.fullName()).isEqualTo("Zoë Ann OBrien");
             assertThat(s.problem()).isNull();
             assertThat(text(s.sphere())).isEqualTo(SPHERE);
             assertThat(text(s.renderer())).isEqualTo(RENDERER);
             assertThat(s.sphere().path()).isEqualTo("Sphere.java");
+        });
+    }
+
+    @Test
+    void aFolderWhoseNameHoldsAnUnderscoreBeforeTheIdIsNotMoodlesAndKeepsItsWholeName() throws IOException {
+        // Moodle makes every _ of a full name a space: this folder was named by hand.
+        String folder = "Zoë Ann_O'Brien_42_assignsubmission_file_";
+
+        assertThat(bothFilesIn(folder)).singleElement().satisfies(s -> {
+            assertThat(s.id()).as("no participant id").isEqualTo(folder);
+            assertThat(Submissions.namedByMoodle(s)).as("named by Moodle").isFalse();
         });
     }
 

@@ -7,11 +7,15 @@ import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.zip.ZipEntry;
+import java.util.zip.ZipInputStream;
 
 /**
  * A cohort of six made by hand, as the grader would leave it: results, and for each failing public
@@ -120,6 +124,24 @@ final class SmallCohort {
             }
         }
         return image;
+    }
+
+    /** A student whose code did not compile, with no scene run: a result of the folder named. */
+    static StudentResult notCompiled(String folder, String id, String name) {
+        return new StudentResult(new Submission(folder, id, name, null, null, null), false, 0, 0,
+                "does not compile", "The code does not compile.", List.of(), Duration.ofMillis(10));
+    }
+
+    /** The names of feedback.zip's entries in {@code report}, in order. */
+    static List<String> zipEntries(Path report) throws IOException {
+        List<String> names = new ArrayList<>();
+        try (InputStream file = Files.newInputStream(report.resolve("feedback.zip"));
+                ZipInputStream zip = new ZipInputStream(file, StandardCharsets.UTF_8)) {
+            for (ZipEntry entry = zip.getNextEntry(); entry != null; entry = zip.getNextEntry()) {
+                names.add(entry.getName());
+            }
+        }
+        return names;
     }
 
     /** The grade the tests show: the pass mark of 1, as the gradebook writes it. */
