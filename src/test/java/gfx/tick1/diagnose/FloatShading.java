@@ -34,7 +34,8 @@ final class FloatShading {
     private static Vector3 shade(Scene scene, RaycastHit hit) {
         Sphere object = hit.getObjectHit();
         PointLight light = scene.getPointLight();
-        float[] p = floats(hit.getLocation()), n = floats(hit.getNormal()), toLight = minus(floats(light.getPosition()), p);
+        float[] p = floats(hit.getLocation()), n = floats(hit.getNormal());
+        float[] toLight = minus(floats(light.getPosition()), p);
         float distance = (float) Math.sqrt(dot(toLight, toLight));
         float[] l = times(toLight, 1 / distance), v = times(p, -1 / (float) Math.sqrt(dot(p, p)));
         float nDotL = dot(n, l);

@@ -26,7 +26,8 @@ class SceneChangeTest {
     @Test
     void theExamplesValuesAreAmongTheSlips() {
         assertThat(described()).as("values kept from basic_scene.xml").contains("ambient #333333 where asked #555555",
-                "the point light's colour #FFFFFF where asked #B3DDFF", "the point light's intensity 100 where asked 120",
+                "the point light's colour #FFFFFF where asked #B3DDFF",
+                "the point light's intensity 100 where asked 120",
                 "the point light at (3, 3, 3) where asked (1, 3, 2)", "sphere 2's colour #FF0000 where asked #FF1D25");
     }
 

@@ -79,6 +79,8 @@ public final class CorrectStyles {
             "Vector3 specular = C_spec.scale(I).scale(k_s * Math.pow(Math.max(0, RdotV), n));";
     private static final String DISTANCE = "double distanceToLight = light.getPosition().subtract(P).magnitude();";
     private static final String I_A = "Vector3 I_a = scene.getAmbientLighting();";
+    private static final String ILLUMINATE_HEADER =
+            "private Vector3 illuminate(Scene scene, Sphere object, Vector3 P, Vector3 N) {";
 
     private CorrectStyles() {
     }
@@ -234,8 +236,7 @@ public final class CorrectStyles {
                                 + "        return new RaycastHit(this, s, point, getNormalAt(point));\n"
                                 + "    }\n\n    public Vector3 getColour()"),
                 correct("terms added to one colour only where lit", ILLUMINATE)
-                        .rendererMethod("private Vector3 illuminate(Scene scene, Sphere object, Vector3 P, Vector3 N) {",
-                                lines("private Vector3 illuminate(Scene scene, Sphere object, Vector3 P, Vector3 N) {",
+                        .rendererMethod(ILLUMINATE_HEADER, lines(ILLUMINATE_HEADER,
                                 "    PointLight light = scene.getPointLight();",
                                 "    Vector3 toLight = light.getPosition().subtract(P);",
                                 "    Vector3 I = light.getIlluminationAt(toLight.magnitude());",

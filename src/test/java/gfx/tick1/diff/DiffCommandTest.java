@@ -136,7 +136,8 @@ class DiffCommandTest {
 
     private static java.util.Set<String> membersShown(CliRun run) {
         return run.out().lines().filter(line -> line.startsWith("@@ "))
-                .map(line -> line.substring(3, line.length() - 3).replaceFirst(" \\((only in|missing from) yours\\)$", ""))
+                .map(line -> line.substring(3, line.length() - 3)
+                        .replaceFirst(" \\((only in|missing from) yours\\)$", ""))
                 .collect(java.util.stream.Collectors.toSet());
     }
 
@@ -221,7 +222,8 @@ class DiffCommandTest {
             String source) throws Exception {
         FormDiff diff = FormDiff.of(className, source);
         diff.hunks().forEach(hunk -> assertThat(FormDiff.texts(hunk.getValue(), '+'))
-                .as("a line of %s shown as removed and added again:%n%s", hunk.getKey(), String.join("\n", diff.report()))
+                .as("a line of %s shown as removed and added again:%n%s", hunk.getKey(),
+                        String.join("\n", diff.report()))
                 .noneMatch(FormDiff.texts(hunk.getValue(), '-')::contains));
     }
 
