@@ -207,8 +207,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
                 + (off == 1 ? " differs" : " differ") + " from the correct render" + ofTheScene()
                 + ", by 1 level in a channel; the tester, and tick1 grade, want every pixel equal.");
         lines.add("possible cause: the same formulas computed in float rather than double, or in another order "
-                + "than the handout's, round some colours to the next level; no mistake of the catalogue comes "
-                + "as close.");
+                + "than the handout's, round some colours to the next level.");
         lines.add("reread: handout section 5 (compute each term in double, in the order the handout writes it).");
     }
 
