@@ -6,6 +6,7 @@ import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.ImageFormat;
 import gfx.tick1.image.PngInput;
 import gfx.tick1.image.PngOutput;
+import gfx.tick1.io.Counted;
 import gfx.tick1.io.IoErrors;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -91,13 +92,13 @@ public final class CompareCommand implements Callable<Integer> {
 
     private String verdictSame(ImageDifference difference) {
         return difference.differingPixels() == 0 ? "SAME: identical pixel for pixel"
-                : "SAME within the tolerance of " + tolerance + (tolerance == 1 ? " level" : " levels");
+                : "SAME within the tolerance of " + Counted.of(tolerance, "level");
     }
 
     private String verdictDifferent(ImageDifference difference) {
         int beyond = difference.pixelsDifferingByMoreThan(tolerance);
-        return "DIFFERENT: " + beyond + (beyond == 1 ? " pixel differs" : " pixels differ")
-                + (tolerance == 0 ? "" : " by more than " + tolerance + (tolerance == 1 ? " level" : " levels"));
+        return "DIFFERENT: " + Counted.of(beyond, "pixel") + (beyond == 1 ? " differs" : " differ")
+                + (tolerance == 0 ? "" : " by more than " + Counted.of(tolerance, "level"));
     }
 
     /** The figures, one per line, in the order a person reads them. */

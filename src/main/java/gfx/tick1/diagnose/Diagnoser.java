@@ -3,6 +3,7 @@ package gfx.tick1.diagnose;
 import gfx.tick1.diagnose.Diagnosis.Candidate;
 import gfx.tick1.image.ImageDifference;
 import gfx.tick1.render.ReferenceRenderer;
+import gfx.tick1.scene.BundledScenes;
 import gfx.tick1.scene.Scene;
 import java.awt.image.BufferedImage;
 import java.util.ArrayList;
@@ -39,9 +40,10 @@ public final class Diagnoser {
     /**
      * @param border    the width in pixels of a frame around the image to leave out of every comparison
      * @param tolerance 0: an entry explains the image only when every pixel is equal (as the course's
-     *                  tester demands); 1: also when every pixel is within one level and no other
-     *                  entry comes as close (arithmetic written in another order moves a few pixels by
-     *                  one level)
+     *                  tester demands); 1: a mistake also when every pixel is within one level and no
+     *                  other entry comes as close (arithmetic written in another order moves a few
+     *                  pixels by one level). The correct entry explains it only when every pixel is
+     *                  equal, whatever the tolerance.
      */
     public Diagnoser(int border, int tolerance) {
         if (border < 0) {
@@ -55,6 +57,9 @@ public final class Diagnoser {
     public Diagnoser() {
         this(0, 0);
     }
+
+    /** The scene the handout's figures show, to tell whether an entry may be named with its figure. */
+    private static final Scene FIGURES_SCENE = BundledScenes.load(BundledScenes.TICK1);
 
     /** A diagnosis of the image as a render of one of several scenes: which one, and the diagnosis. */
     public record SceneDiagnosis(String scene, Diagnosis diagnosis) {
@@ -94,7 +99,7 @@ public final class Diagnoser {
             }
         }
         return best == null || bestMatch < SAME_SCENE ? Optional.empty()
-                : Optional.of(new SceneDiagnosis(best, diagnose(image, scenes.get(best))));
+                : Optional.of(new SceneDiagnosis(best, diagnose(image, scenes.get(best), best)));
     }
 
     /**
@@ -102,6 +107,11 @@ public final class Diagnoser {
      * the pixels where some entry draws a sphere.
      */
     public Diagnosis diagnose(BufferedImage image, Scene scene) {
+        return diagnose(image, scene, null);
+    }
+
+    /** As {@link #diagnose(BufferedImage, Scene)}, the report naming the scene {@code name} (null: unnamed). */
+    public Diagnosis diagnose(BufferedImage image, Scene scene, String name) {
         checkBorder(image);
         int width = image.getWidth(), height = image.getHeight();
         VariantRenderer renderer = new VariantRenderer(width, height);
@@ -123,7 +133,35 @@ public final class Diagnoser {
         candidates.sort(CLOSEST_FIRST);
         int background = ReferenceRenderer.BACKGROUND_COLOUR.toRGB() & 0xFFFFFF;
         return new Diagnosis(candidates, tolerance, alikeCorrect, spheres.count(),
-                spheres.notBackgroundOutside(inside, background));
+                spheres.notBackgroundOutside(inside, background), name, SceneChange.same(scene, FIGURES_SCENE));
+    }
+
+    /**
+     * The scenes one slip away from {@code scene} ({@link SceneChange}, with the values of
+     * {@code example} among the slips) whose correct render is the image, pixel for pixel.
+     */
+    public List<SceneChange> sceneChangesExplaining(BufferedImage image, Scene scene, Scene example) {
+        checkBorder(image);
+        BufferedImage inside = inner(image);
+        VariantRenderer renderer = new VariantRenderer(image.getWidth(), image.getHeight());
+        PixelProbe probe = new PixelProbe(image.getWidth(), image.getHeight());
+        return SceneChange.around(scene, example).stream()
+                .filter(change -> probe.mayBe(image, change.scene(), border))
+                .filter(change -> samePixels(inner(renderer.render(change.scene(), Variant.CORRECT)), inside))
+                .toList();
+    }
+
+    /** Whether the image is background on exactly the pixels where the correct render of {@code scene} is. */
+    public boolean hasTheOutlineOf(BufferedImage image, Scene scene) {
+        checkBorder(image);
+        BufferedImage correct = new VariantRenderer(image.getWidth(), image.getHeight()).render(scene, Variant.CORRECT);
+        return outlineMatch(inner(correct), inner(image)) == 1;
+    }
+
+    private static boolean samePixels(BufferedImage a, BufferedImage b) {
+        int width = a.getWidth(), height = a.getHeight();
+        return java.util.Arrays.equals(a.getRGB(0, 0, width, height, null, 0, width),
+                b.getRGB(0, 0, width, height, null, 0, width));
     }
 
     private void checkBorder(BufferedImage image) {

@@ -1,26 +1,32 @@
 package gfx.tick1.diagnose;
 
 import gfx.tick1.image.ImageDifference;
+import gfx.tick1.io.Counted;
 import java.util.ArrayList;
 import java.util.List;
 
 /**
  * Every catalogue entry's distance from an image, closest first, and what can be said for
  * certain: an entry explains the image only when its render matches every pixel of the frame
- * (exactly, or within the 1-level tolerance when that is allowed); anything less is reported as
- * at most three candidates, and no entry is then called the closest.
+ * (exactly, or, for a mistake, within the 1-level tolerance when that is allowed); the image is
+ * correct only when every pixel is the correct render's, and one within a level of it everywhere
+ * is said to be so; anything less is reported as at most three candidates, and no entry is then
+ * called the closest.
  *
  * @param candidates   one per {@link Variant} seen in images, ordered as {@link Diagnoser#CLOSEST_FIRST}
- * @param tolerance    0, or 1 to let an entry within one level on every pixel explain the image
+ * @param tolerance    0, or 1 to let a mistake within one level on every pixel explain the image
  * @param alikeCorrect the mistakes left out of the ranking because on this scene they draw exactly
  *                     the correct image (a hit rejected when a root is negative, with the camera
  *                     outside every sphere), so that no image can tell them apart from it
  * @param spherePixels how many pixels the ranking counts: those where some entry draws a sphere
  * @param strayPixels  how many of the other pixels, background in every entry, are not background
  *                     in the image
+ * @param scene        the scene the image was compared with, as the report names it ("tick1.xml")
+ * @param figures      whether the handout's figures show this scene (they all show tick1.xml), so
+ *                     that an entry may be named with its figure
  */
 public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant> alikeCorrect, int spherePixels,
-        int strayPixels) {
+        int strayPixels, String scene, boolean figures) {
 
     /** Candidates shown when no entry explains the image. */
     private static final int MOST_CANDIDATES = 3;
@@ -58,8 +64,13 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
 
     /** What the image is, as far as the catalogue can tell. */
     public enum Verdict {
-        /** The correct render, exactly or within the tolerance. */
+        /** The correct render: every pixel equal. */
         CORRECT,
+        /**
+         * Not the correct render, but within one level of it on every pixel: the same formulas in
+         * float, or in another order, round so. {@code grade} fails such an image.
+         */
+        LEVEL_OFF_CORRECT,
         /** One stage or mistake (or several that look the same on this scene) explains every pixel. */
         EXPLAINED,
         /** No entry explains the image, or two come out level: only candidates can be shown. */
@@ -84,13 +95,15 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
 
     /**
      * The entries that explain every pixel: those matching exactly; failing that, with a
-     * tolerance of 1, the closest entry within one level everywhere, unless another such entry is
-     * a near tie with it. When the correct render is among them, it alone: a mistake that looks
-     * the same as the correct image on this scene does no harm here.
+     * tolerance of 1, the closest mistake within one level everywhere, unless another such entry is
+     * a near tie with it, and unless the correct render is within one level too (then the image is
+     * {@link Verdict#LEVEL_OFF_CORRECT}, and no mistake is named). When the correct render matches
+     * exactly, it alone: a mistake that looks the same as the correct image on this scene does no
+     * harm here.
      */
     public List<Candidate> explaining() {
         List<Candidate> exact = candidates.stream().filter(Candidate::matchesExactly).toList();
-        if (exact.isEmpty() && tolerance == 1) {
+        if (exact.isEmpty() && tolerance == 1 && levelOffCorrect() == null) {
             List<Candidate> within = candidates.stream().filter(Candidate::matchesWithinOneLevel).toList();
             exact = within.isEmpty() ? within : tiedWith(within.get(0), within);
         }
@@ -98,10 +111,16 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
                 ? exact.stream().filter(c -> c.variant().isCorrect()).toList() : exact;
     }
 
+    /** The correct entry when it is within one level of the image on every pixel but not equal on all; else null. */
+    private Candidate levelOffCorrect() {
+        return candidates.stream().filter(c -> c.variant().isCorrect() && !c.matchesExactly()
+                && c.matchesWithinOneLevel()).findFirst().orElse(null);
+    }
+
     public Verdict verdict() {
         List<Candidate> explaining = explaining();
         if (explaining.isEmpty()) {
-            return Verdict.UNSURE;
+            return levelOffCorrect() != null ? Verdict.LEVEL_OFF_CORRECT : Verdict.UNSURE;
         }
         if (explaining.get(0).variant().isCorrect()) {
             return Verdict.CORRECT;
@@ -128,7 +147,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         List<String> lines = new ArrayList<>();
         Verdict verdict = verdict();
         if (verdict != Verdict.UNSURE) {
-            lines.add("closest: " + closest().variant().title() + " (" + shares(closest()) + ")");
+            lines.add("closest: " + title(closest().variant()) + " (" + shares(closest()) + ")");
             lines.add("top three:");
             List<Candidate> top = top(3);
             for (int i = 0; i < top.size(); i++) {
@@ -139,6 +158,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         List<Candidate> explaining = explaining();
         switch (verdict) {
             case CORRECT -> correct(lines, explaining.get(0));
+            case LEVEL_OFF_CORRECT -> levelOff(lines, levelOffCorrect());
             case EXPLAINED -> explained(lines, explaining);
             case UNSURE -> unsure(lines);
             default -> throw new IllegalStateException();
@@ -146,32 +166,59 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         return lines;
     }
 
+    /**
+     * An entry as the report names it: with its handout figure only when the figures show this
+     * scene, and the correct entry as "the correct image", never as a bare "correct" that could
+     * be read as a verdict.
+     */
+    String title(Variant variant) {
+        String title = figures ? variant.title() : variant.title().replaceFirst(" \\((like )?Figure \\w+\\)$", "");
+        return variant.isCorrect() ? "the correct image" + title.substring("correct".length()) : title;
+    }
+
+    /** "of tick1.xml", or nothing when the scene has no name. */
+    private String ofTheScene() {
+        return scene == null ? "" : " of " + scene;
+    }
+
     private String line(int index, Candidate candidate) {
-        return String.format("  %s %-45s %s", rank(index), candidate.variant().title(), shares(candidate));
+        return String.format("  %s %-45s %s", rank(index), title(candidate.variant()), shares(candidate));
     }
 
     private String onWhichPixels() {
-        return "  (shares of the " + spherePixels + " pixels where some entry draws a sphere; elsewhere every entry "
-                + "draws the background)";
+        return "  (shares of the " + Counted.of(spherePixels, "pixel") + " where some entry draws a sphere; "
+                + "elsewhere every entry draws the background)";
     }
 
     private void correct(List<String> lines, Candidate correct) {
-        lines.add(correct.matchesExactly() ? "verdict: correct: every pixel is the correct render's."
-                : "verdict: correct, within the 1-level tolerance: " + correct.difference().differingPixels()
-                        + " pixels are 1 level off the correct render, as when the same arithmetic is "
-                        + "written in another order.");
-        lines.add("this is " + correct.variant().explanation() + ".");
+        lines.add("verdict: correct: every pixel is the correct render's" + ofTheScene() + ".");
+        lines.add("this is " + correct.variant().explanation() + (figures ? " (Figure 1)." : "."));
         if (!alikeCorrect.isEmpty()) {
             lines.add("(on this scene these mistakes would draw the same image, so they are not ruled out: "
-                    + String.join(", ", alikeCorrect.stream().map(Variant::title).toList()) + ")");
+                    + String.join(", ", alikeCorrect.stream().map(this::title).toList()) + ")");
         }
     }
 
-    private static void explained(List<String> lines, List<Candidate> explaining) {
+    /** Every pixel within one level of the correct render, some not equal: not correct, and why it may be so. */
+    private void levelOff(List<String> lines, Candidate correct) {
+        ImageDifference difference = correct.difference();
+        int off = difference.differingPixels();
+        lines.add("verdict: not correct: " + Counted.of(off, "pixel") + " of " + difference.totalPixels()
+                + (off == 1 ? " differs" : " differ") + " from the correct render" + ofTheScene()
+                + ", by 1 level in a channel; the tester, and tick1 grade, want every pixel equal.");
+        lines.add("possible cause: the same formulas computed in float rather than double, or in another order "
+                + "than the handout's, round some colours to the next level.");
+        lines.add("reread: handout section 5 (compute each term in double, in the order the handout writes it).");
+    }
+
+    private void explained(List<String> lines, List<Candidate> explaining) {
         if (explaining.size() == 1) {
             Candidate only = explaining.get(0);
-            lines.add("verdict: " + only.variant().title() + (only.matchesExactly()
-                    ? ": every pixel matches it exactly." : ": every pixel within 1 level of it."));
+            int off = only.difference().differingPixels();
+            lines.add("verdict: " + title(only.variant()) + (only.matchesExactly()
+                    ? ": every pixel matches its render" + ofTheScene() + " exactly."
+                    : ": every pixel within 1 level of its render" + ofTheScene() + " (" + Counted.of(off, "pixel")
+                            + " 1 level off, as the same formulas in float or in another order give)."));
             lines.add("likely cause: " + only.variant().explanation() + ".");
             lines.add("reread: handout " + only.variant().reread() + ".");
             return;
@@ -179,7 +226,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         lines.add("verdict: a tie: " + titles(explaining) + " each match every pixel exactly; this "
                 + "scene cannot tell them apart.");
         for (Candidate candidate : explaining) {
-            lines.add("if it is " + candidate.variant().title() + ": " + candidate.variant().explanation()
+            lines.add("if it is " + title(candidate.variant()) + ": " + candidate.variant().explanation()
                     + "; reread handout " + candidate.variant().reread() + ".");
         }
     }
@@ -206,15 +253,18 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         }
         lines.add(onWhichPixels());
         if (best.variant().isCorrect()) {
-            lines.add("the nearest is the correct image, but " + best.difference().differingPixels()
-                    + " pixels differ from it, by up to " + best.difference().maxDifference() + " levels.");
+            int off = best.difference().differingPixels();
+            lines.add("the nearest is the correct image, but " + Counted.of(off, "pixel") + (off == 1 ? " differs"
+                    : " differ") + " from it, by up to " + Counted.of(best.difference().maxDifference(), "level")
+                    + ".");
         }
         if (strayPixels > 0) {
-            lines.add(strayPixels + " pixels where no entry draws a sphere are not the background.");
+            lines.add(Counted.of(strayPixels, "pixel") + " where no entry draws a sphere "
+                    + (strayPixels == 1 ? "is" : "are") + " not the background.");
         }
         for (Candidate candidate : shown) {
             if (!candidate.variant().isCorrect()) {
-                lines.add("if it is " + candidate.variant().title() + ": reread handout "
+                lines.add("if it is " + title(candidate.variant()) + ": reread handout "
                         + candidate.variant().reread() + ".");
             }
         }
@@ -240,8 +290,8 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         return Math.abs(a.exactShare() - b.exactShare()) < NEAR_TIE;
     }
 
-    private static String titles(List<Candidate> candidates) {
-        return String.join(", ", candidates.stream().map(c -> c.variant().title()).toList());
+    private String titles(List<Candidate> candidates) {
+        return String.join(", ", candidates.stream().map(c -> title(c.variant())).toList());
     }
 
     private static String percent(double share) {

@@ -37,7 +37,8 @@ import picocli.CommandLine.Spec;
 @Command(name = "diff",
         description = {"Shows where your Sphere.java and Renderer.java differ from ours in meaning.",
             "Compares your Sphere.java and Renderer.java with ours, ignoring comments, formatting, the package, "
-                    + "imports, the order of fields and methods, the names of locals and parameters, this. on a "
+                    + "imports, the order of fields and methods, the names of locals and parameters, final and "
+                    + "annotations on them, this. on a "
                     + "field, parentheses that do not change the expression, and the order of declarations that "
                     + "do not depend on each other. Fields, constructors and methods are matched by signature; each "
                     + "one that still differs from ours (and, for what the starter code gives whole, from the "

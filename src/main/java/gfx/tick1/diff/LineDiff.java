@@ -6,7 +6,7 @@ import java.util.List;
 /**
  * A line diff of two short texts, from their longest common subsequence of lines, as unified-diff
  * hunks: changed lines prefixed {@code -} (ours) and {@code +} (theirs), with up to
- * {@link #CONTEXT} unchanged lines around them prefixed by a space.
+ * {@link #CONTEXT} unchanged lines around them prefixed by a space, in theirs' words.
  */
 public final class LineDiff {
 
@@ -26,8 +26,11 @@ public final class LineDiff {
     }
 
     /**
-     * The hunks that turn {@code ours} into {@code theirs}, lines matched by their keys (one a
-     * line): a kept line is shown as ours, a removed one as ours, an added one as theirs.
+     * The hunks that turn {@code ours} into {@code theirs}. Two lines are kept when their keys (one
+     * a line) are equal, or their texts are: a line written exactly as ours is never shown as
+     * removed and added again, even where its key differs (a local declared earlier in theirs
+     * numbers the locals after it otherwise). A kept line is shown as theirs, a removed one as
+     * ours, an added one as theirs.
      */
     public static List<List<Line>> hunks(List<String> ours, List<String> ourKeys, List<String> theirs,
             List<String> theirKeys) {
@@ -76,16 +79,16 @@ public final class LineDiff {
         int[][] common = new int[n + 1][m + 1]; // common[i][j]: LCS length of ours[i..] and theirs[j..]
         for (int i = n - 1; i >= 0; i--) {
             for (int j = m - 1; j >= 0; j--) {
-                common[i][j] = ourKeys.get(i).equals(theirKeys.get(j)) ? common[i + 1][j + 1] + 1
+                common[i][j] = kept(ours, ourKeys, i, theirs, theirKeys, j) ? common[i + 1][j + 1] + 1
                         : Math.max(common[i + 1][j], common[i][j + 1]);
             }
         }
         List<Line> lines = new ArrayList<>();
         int i = 0, j = 0;
         while (i < n || j < m) {
-            if (i < n && j < m && ourKeys.get(i).equals(theirKeys.get(j))) {
-                lines.add(new Line(' ', ours.get(i++)));
-                j++;
+            if (i < n && j < m && kept(ours, ourKeys, i, theirs, theirKeys, j)) {
+                lines.add(new Line(' ', theirs.get(j++)));
+                i++;
             } else if (i < n && (j == m || common[i + 1][j] >= common[i][j + 1])) {
                 lines.add(new Line('-', ours.get(i++)));
             } else {
@@ -93,5 +96,10 @@ public final class LineDiff {
             }
         }
         return lines;
+    }
+
+    private static boolean kept(List<String> ours, List<String> ourKeys, int i, List<String> theirs,
+            List<String> theirKeys, int j) {
+        return ourKeys.get(i).equals(theirKeys.get(j)) || ours.get(i).equals(theirs.get(j));
     }
 }

@@ -21,6 +21,7 @@ import com.github.javaparser.ast.expr.ObjectCreationExpr;
 import com.github.javaparser.ast.expr.SwitchExpr;
 import com.github.javaparser.ast.expr.ThisExpr;
 import com.github.javaparser.ast.expr.UnaryExpr;
+import com.github.javaparser.ast.expr.VariableDeclarationExpr;
 import com.github.javaparser.ast.stmt.BlockStmt;
 import com.github.javaparser.ast.stmt.Statement;
 import com.github.javaparser.printer.DefaultPrettyPrinter;
@@ -47,6 +48,8 @@ import java.util.function.Function;
  * <li>{@code this.} on a field of the class, which, once every local has a name no field can
  *     have, no local shadows; where the member's locals are not followed, only on a field no
  *     declaration of the member is named like;</li>
+ * <li>{@code final} and annotations on a local or a parameter, which only forbid assignments or
+ *     inform tools: the program that compiles computes the same with them or without;</li>
  * <li>{@code this.} before a method call, comments and layout (as {@link JavaMembers} reads them).</li>
  * </ul>
  * Anything else, however equivalent in arithmetic, is a difference.
@@ -85,6 +88,7 @@ final class SameMeaning {
     /** The canonical text of {@code member} (which is left as it is), ordered as {@link #order} did. */
     String key(BodyDeclaration<?> member, List<String> like) {
         BodyDeclaration<?> copy = member.clone();
+        dropModifiersOfLocals(copy);
         dropAllParentheses(copy);
         boolean renamed = LocalNames.canonicalise(copy, fieldTypes, classesOfTheFile, like, true);
         Set<String> declared = new HashSet<>();
@@ -115,10 +119,23 @@ final class SameMeaning {
                 name.setName(canonical);
             }
         }
+        dropModifiersOfLocals(holder);
         dropAllParentheses(holder);
         dropThisBeforeFields(holder, fields);
         parenthesiseFully(holder);
         return print(holder.getStatement(0));
+    }
+
+    /** {@code final} and annotations off every local and parameter (a field's stay: they are members' modifiers). */
+    private static void dropModifiersOfLocals(Node root) {
+        for (VariableDeclarationExpr declaration : root.findAll(VariableDeclarationExpr.class)) {
+            declaration.setModifiers(new NodeList<>());
+            declaration.setAnnotations(new NodeList<>());
+        }
+        for (Parameter parameter : root.findAll(Parameter.class)) {
+            parameter.setModifiers(new NodeList<>());
+            parameter.setAnnotations(new NodeList<>());
+        }
     }
 
     private static void dropAllParentheses(Node root) {

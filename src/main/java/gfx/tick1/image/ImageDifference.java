@@ -1,5 +1,6 @@
 package gfx.tick1.image;
 
+import gfx.tick1.io.Counted;
 import java.awt.image.BufferedImage;
 
 /**
@@ -184,9 +185,10 @@ public final class ImageDifference {
 
     /** One line for a test failure or the command line. */
     public String summary() {
-        int total = totalPixels();
-        return String.format("%d of %d pixels differ (%.3f%%), max difference %d levels (R %d, G %d, B %d), "
-                + "bounding box %s", differingPixels(), total, 100.0 * differingPixels() / total, maxDifference(),
-                maxPerChannel[0], maxPerChannel[1], maxPerChannel[2], boundingBox());
+        int total = totalPixels(), differing = differingPixels();
+        return String.format("%d of %s %s (%.3f%%), max difference %s (R %d, G %d, B %d), bounding box %s", differing,
+                Counted.of(total, "pixel"), differing == 1 ? "differs" : "differ", 100.0 * differing / total,
+                Counted.of(maxDifference(), "level"), maxPerChannel[0], maxPerChannel[1], maxPerChannel[2],
+                boundingBox());
     }
 }

@@ -10,6 +10,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /** {@code tick1 diagnose} through the real entry point. */
 class DiagnoseCommandTest {
@@ -36,11 +38,84 @@ class DiagnoseCommandTest {
     }
 
     @Test
-    void theCorrectImageExitsZero() throws IOException {
+    void theCorrectImageExitsZeroAndNamesNoFigureOfAnotherScene() throws IOException {
         Path image = render("scenes/basic_scene.xml", Variant.CORRECT, 64, 48);
         CliRun run = CliRun.of("diagnose", image.toString(), "--scene", "scenes/basic_scene.xml");
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_CORRECT);
-        assertThat(run.out()).contains("closest: correct (Figure 1)", "verdict: correct").doesNotContain("reread");
+        assertThat(run.out()).as(run.transcript()).contains("compared with scenes/basic_scene.xml:",
+                "closest: the correct image (100.000%", "verdict: correct: every pixel is the correct render's of "
+                        + "scenes/basic_scene.xml.").doesNotContain("reread", "Figure", "scene differs");
+    }
+
+    @Test
+    void aCorrectRenderOfTick1IsCorrectAndNamedWithFigure1() throws IOException {
+        Path image = render("scenes/tick1.xml", Variant.CORRECT, 160, 120);
+        CliRun run = CliRun.of("diagnose", image.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_CORRECT);
+        assertThat(run.out()).as(run.transcript()).contains("compared with tick1.xml:",
+                "verdict: correct: every pixel is the correct render's of tick1.xml.", "(Figure 1).")
+                .doesNotContain("scene differs", "outlines");
+    }
+
+    /** The correct code's render of tick1.xml with one value of the scene file changed. */
+    private Path renderOfTick1With(String value, String changed) throws IOException {
+        String scene = Files.readString(Path.of("scenes/tick1.xml"));
+        assertThat(scene).as("the value to change").containsOnlyOnce(value);
+        Path file = dir.resolve("changed.xml");
+        Files.writeString(file, scene.replace(value, changed));
+        return render(file.toString(), Variant.CORRECT, 160, 120);
+    }
+
+    @ParameterizedTest(name = "{2}")
+    @CsvSource(delimiter = '|', value = {
+        "colour=\"#555555\" | colour=\"#333333\" | ambient #333333 where the handout's section 3 asks for #555555",
+        "y=\"-0.16\" | y=\"0.16\" | sphere 1's centre (0.55, 0.16, 3.5) where the handout's section 3 asks for "
+            + "(0.55, -0.16, 3.5)",
+        "intensity=\"120\" | intensity=\"100\" | the point light's intensity 100 where the handout's section 3 asks "
+            + "for 120",
+        "colour=\"#FF1D25\" | colour=\"#FF0000\" | sphere 2's colour #FF0000 where the handout's section 3 asks for "
+            + "#FF1D25"})
+    void aSceneFileOneValueAwayFromSection3IsNamedNotBlamedOnTheCode(String value, String changed, String named)
+            throws IOException {
+        CliRun run = CliRun.of("diagnose", renderOfTick1With(value, changed).toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_NOT_CORRECT);
+        assertThat(run.out()).as(run.transcript()).contains("compared with tick1.xml:",
+                "verdict: the scene differs: every pixel is the correct render of tick1.xml with one value changed: "
+                        + named + ".", "reread: handout section 3, \"Define a new scene\".")
+                .doesNotContain("background only", "clamped", "candidates");
+    }
+
+    /** A sphere's colour four levels off in blue: tick1.xml's outlines, colours no entry and no one slip explain. */
+    @Test
+    void tick1sOutlinesWithColoursNothingExplainsSayTheSceneFileMayDiffer() throws IOException {
+        CliRun run = CliRun.of("diagnose", renderOfTick1With("#FF1D25", "#FF1D29").toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_UNSURE);
+        assertThat(run.out()).as(run.transcript()).contains("verdict: unsure: ",
+                "the spheres' outlines are exactly those of tick1.xml, but no entry of the catalogue explains their "
+                        + "colours: if the scene file you rendered is your own, it may differ from the handout's "
+                        + "section 3").doesNotContain("verdict: correct");
+    }
+
+    /**
+     * The correct code with its shading in float: a few pixels a level off the correct render.
+     * Never correct (grade fails it); the count and the possible cause are said.
+     */
+    @Test
+    void shadingInFloatIsNotCorrectAndSaysHowManyPixelsDifferAndWhy() throws IOException {
+        gfx.tick1.scene.Scene scene = new SceneLoader(Path.of("scenes/tick1.xml"), false).getScene();
+        java.awt.image.BufferedImage inFloat = FloatShading.render(scene, 160, 120);
+        gfx.tick1.image.ImageDifference difference = gfx.tick1.image.ImageDifference.between(
+                new VariantRenderer(160, 120).render(scene, Variant.CORRECT), inFloat);
+        assertThat(difference.differingPixels()).as("float moves some pixels").isPositive();
+        assertThat(difference.maxDifference()).as("by a level at most").isEqualTo(1);
+        Path image = dir.resolve("float.png");
+        PngOutput.write(inFloat, image);
+        CliRun run = CliRun.of("diagnose", image.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_NOT_CORRECT);
+        assertThat(run.out()).as(run.transcript()).contains("verdict: not correct: " + difference.differingPixels()
+                + " pixel", " of 19200 differ", "from the correct render of tick1.xml, by 1 level in a channel",
+                "possible cause: the same formulas computed in float")
+                .doesNotContain("verdict: correct", "full Phong model");
     }
 
     @Test
@@ -48,7 +123,7 @@ class DiagnoseCommandTest {
         Path image = render("scenes/basic_scene.xml", Variant.CORRECT, 160, 120);
         CliRun run = CliRun.of("diagnose", image.toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_CORRECT);
-        assertThat(run.out()).contains("as a render of basic_scene.xml:", "verdict: correct")
+        assertThat(run.out()).contains("compared with basic_scene.xml:", "verdict: correct")
                 .doesNotContain("background only");
     }
 
@@ -82,7 +157,7 @@ class DiagnoseCommandTest {
         CliRun run = CliRun.of("diagnose", image.toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_UNSURE);
         assertThat(run.out()).contains("verdict: unsure: no entry of the catalogue explains this image exactly",
-                "candidates, closest first:", "  1. correct (Figure 1)")
+                "candidates, closest first:", "  1. the correct image (Figure 1)")
                 .doesNotContain("likely cause", "full Phong model", "closest: ");
     }
 

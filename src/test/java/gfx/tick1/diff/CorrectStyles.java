@@ -35,6 +35,25 @@ public final class CorrectStyles {
             return new Style(this.name, sphere.replaceAll("\\b" + name + "\\b", to), renderer, changedMembers);
         }
 
+        /** The method of Sphere.java that {@code header} opens, from it to its closing brace, as {@code method}. */
+        Style sphereMethod(String header, String method) {
+            return new Style(name, replaceMethod(sphere, header, method), renderer, changedMembers);
+        }
+
+        /** The method of Renderer.java that {@code header} opens, from it to its closing brace, as {@code method}. */
+        Style rendererMethod(String header, String method) {
+            return new Style(name, sphere, replaceMethod(renderer, header, method), changedMembers);
+        }
+
+        /** Every line of the two files that {@code edit} changes, as it changes it. */
+        Style eachLine(java.util.function.UnaryOperator<String> edit) {
+            return new Style(name, eachLine(sphere, edit), eachLine(renderer, edit), changedMembers);
+        }
+
+        private static String eachLine(String source, java.util.function.UnaryOperator<String> edit) {
+            return source.lines().map(edit).collect(java.util.stream.Collectors.joining("\n", "", "\n"));
+        }
+
         Style renderer(String text, String replacement) {
             return new Style(name, sphere, replaceOnce(renderer, text, replacement), changedMembers);
         }
@@ -60,6 +79,8 @@ public final class CorrectStyles {
             "Vector3 specular = C_spec.scale(I).scale(k_s * Math.pow(Math.max(0, RdotV), n));";
     private static final String DISTANCE = "double distanceToLight = light.getPosition().subtract(P).magnitude();";
     private static final String I_A = "Vector3 I_a = scene.getAmbientLighting();";
+    private static final String ILLUMINATE_HEADER =
+            "private Vector3 illuminate(Scene scene, Sphere object, Vector3 P, Vector3 N) {";
 
     private CorrectStyles() {
     }
@@ -114,6 +135,20 @@ public final class CorrectStyles {
                                 lines("double RdotV = R.dot(V);", "double NdotL = N.dot(L);"))
                         .renderer(lines(AMBIENT, DIFFUSE, SPECULAR), lines(SPECULAR, AMBIENT, DIFFUSE))
                         .renderer(I_A, "").renderer(DISTANCE, lines(I_A, DISTANCE)),
+                correct("final on every local and parameter of the two methods")
+                        .eachLine(line -> line.matches(" {8,}(Vector3|double|PointLight) \\w+ = .*")
+                                ? line.replaceFirst("^( +)", "$1final ") : line)
+                        .sphere("intersectionWith(Ray ray)", "intersectionWith(final Ray ray)")
+                        .renderer("illuminate(Scene scene, Sphere object, Vector3 P, Vector3 N)",
+                                "illuminate(final Scene scene, final Sphere object, final Vector3 P, final Vector3 N)"),
+                correct("annotated and final locals under other names")
+                        .sphereRenamed("discriminant", "delta")
+                        .sphere("double s = s1 > 0 ? s1 : s2;", "@SuppressWarnings(\"unused\") final double t = s1 > 0 "
+                                + "? s1 : s2;")
+                        .sphere("if (s > 0) {", "if (t > 0) {").sphere("ray.evaluateAt(s);", "ray.evaluateAt(t);")
+                        .sphere("new RaycastHit(this, s, point", "new RaycastHit(this, t, point")
+                        .renderer("Vector3 R = L.reflectIn(N);", "final Vector3 mirrored = L.reflectIn(N);")
+                        .renderer("double RdotV = R.dot(V);", "double RdotV = mirrored.dot(V);"),
                 correct("the starter code's own layout: this.phong_kD and a pixel")
                         .sphere("phong_kD = SPHERE_KD;", "this.phong_kD = SPHERE_KD;")
                         .sphere("phong_kS = SPHERE_KS;", "this.phong_kS = SPHERE_KS;")
@@ -150,7 +185,87 @@ public final class CorrectStyles {
                                 "}", "double s = s2;")),
                 correct("extra normalisations", ILLUMINATE)
                         .renderer("Vector3 R = L.reflectIn(N);",
-                                "Vector3 R = L.reflectIn(N.normalised()).normalised();"));
+                                "Vector3 R = L.reflectIn(N.normalised()).normalised();"),
+                correct("half b: s = (-b' -+ sqrt(b'^2 - a c)) / a", INTERSECTION)
+                        .sphereMethod("public RaycastHit intersectionWith(Ray ray) {", lines(
+                                "public RaycastHit intersectionWith(Ray ray) {",
+                                "    Vector3 toOrigin = ray.getOrigin().subtract(position);",
+                                "    Vector3 direction = ray.getDirection();",
+                                "    double a = direction.dot(direction);",
+                                "    double halfB = direction.dot(toOrigin);",
+                                "    double c = toOrigin.dot(toOrigin) - radius * radius;",
+                                "    double quarterDiscriminant = halfB * halfB - a * c;",
+                                "    if (quarterDiscriminant < 0) {",
+                                "        return new RaycastHit();",
+                                "    }",
+                                "    double root = Math.sqrt(quarterDiscriminant);",
+                                "    double near = (-halfB - root) / a;",
+                                "    double far = (-halfB + root) / a;",
+                                "    double s = near > 0 ? near : far;",
+                                "    if (s <= 0) {",
+                                "        return new RaycastHit();",
+                                "    }",
+                                "    Vector3 point = ray.evaluateAt(s);",
+                                "    return new RaycastHit(this, s, point, getNormalAt(point));",
+                                "}")),
+                correct("the roots tried in a loop, declarations shared", INTERSECTION)
+                        .sphereMethod("public RaycastHit intersectionWith(Ray ray) {", lines(
+                                "public RaycastHit intersectionWith(Ray ray) {",
+                                "    Vector3 O = ray.getOrigin(), D = ray.getDirection(), OC = O.subtract(position);",
+                                "    double a = D.dot(D), b = 2 * D.dot(OC), c = OC.dot(OC) - radius * radius;",
+                                "    double disc = b * b - 4 * a * c;",
+                                "    if (disc >= 0) {",
+                                "        double sqrtDisc = Math.sqrt(disc);",
+                                "        double[] roots = {(-b - sqrtDisc) / (2 * a), (-b + sqrtDisc) / (2 * a)};",
+                                "        for (double s : roots) {",
+                                "            if (s > 0) {",
+                                "                Vector3 P = ray.evaluateAt(s);",
+                                "                return new RaycastHit(this, s, P, getNormalAt(P));",
+                                "            }",
+                                "        }",
+                                "    }",
+                                "    return new RaycastHit();",
+                                "}")),
+                correct("a helper method makes the hit", INTERSECTION, "hitAt(Ray, double)")
+                        .sphere(lines("if (s > 0) {", "    Vector3 point = ray.evaluateAt(s);",
+                                "    Vector3 normal = this.getNormalAt(point);",
+                                "    return new RaycastHit(this, s, point, normal);", "}"),
+                                lines("if (s > 0) {", "    return hitAt(ray, s);", "}"))
+                        .sphere("    public Vector3 getColour()", "    private RaycastHit hitAt(Ray ray, double s) {\n"
+                                + "        Vector3 point = ray.evaluateAt(s);\n"
+                                + "        return new RaycastHit(this, s, point, getNormalAt(point));\n"
+                                + "    }\n\n    public Vector3 getColour()"),
+                correct("terms added to one colour only where lit", ILLUMINATE)
+                        .rendererMethod(ILLUMINATE_HEADER, lines(ILLUMINATE_HEADER,
+                                "    PointLight light = scene.getPointLight();",
+                                "    Vector3 toLight = light.getPosition().subtract(P);",
+                                "    Vector3 I = light.getIlluminationAt(toLight.magnitude());",
+                                "    Vector3 colour = object.getColour().scale(scene.getAmbientLighting());",
+                                "    Vector3 L = toLight.normalised();",
+                                "    double cosine = N.dot(L);",
+                                "    if (cosine > 0) {",
+                                "        colour = colour.add(object.getColour().scale(I).scale(object.getPhong_kD() "
+                                        + "* cosine));",
+                                "    }",
+                                "    Vector3 R = L.reflectIn(N);",
+                                "    double highlight = R.dot(P.scale(-1).normalised());",
+                                "    if (highlight > 0) {",
+                                "        colour = colour.add(I.scale(object.getPhong_kS() * Math.pow(highlight, "
+                                        + "object.getPhong_n())));",
+                                "    }",
+                                "    return colour;",
+                                "}")),
+                correct("a clamp by if, and R written out as 2 (N.L) N - L", ILLUMINATE)
+                        .renderer("Vector3 R = L.reflectIn(N);", "Vector3 R = N.scale(2 * N.dot(L)).subtract(L);")
+                        .renderer("double NdotL = N.dot(L);",
+                                lines("double NdotL = N.dot(L);", "if (NdotL < 0) {", "    NdotL = 0;", "}"))
+                        .renderer("k_d * Math.max(0, NdotL)", "k_d * NdotL"),
+                correct("the three terms in one return", ILLUMINATE)
+                        .renderer(lines(AMBIENT, DIFFUSE, SPECULAR) + "\n\n        // Their sum\n"
+                                + "        return ambient.add(diffuse).add(specular);",
+                                lines("return C_diff.scale(I_a)",
+                                "        .add(C_diff.scale(I).scale(k_d * Math.max(0, NdotL)))",
+                                "        .add(C_spec.scale(I).scale(k_s * Math.pow(Math.max(0, RdotV), n)));")));
     }
 
     static String resource(String name) {
@@ -159,6 +274,15 @@ public final class CorrectStyles {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    private static String replaceMethod(String source, String header, String method) {
+        int start = source.indexOf(header);
+        int end = source.indexOf("\n    }\n", start);
+        if (start < 0 || source.indexOf(header, start + 1) >= 0 || end < 0) {
+            throw new IllegalArgumentException("the method must be in the file exactly once: " + header);
+        }
+        return source.substring(0, start) + method.strip() + source.substring(end + "\n    }".length());
     }
 
     private static String replaceOnce(String source, String text, String replacement) {

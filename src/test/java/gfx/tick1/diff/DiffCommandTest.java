@@ -136,7 +136,9 @@ class DiffCommandTest {
 
     private static java.util.Set<String> membersShown(CliRun run) {
         return run.out().lines().filter(line -> line.startsWith("@@ "))
-                .map(line -> line.substring(3, line.length() - 3)).collect(java.util.stream.Collectors.toSet());
+                .map(line -> line.substring(3, line.length() - 3)
+                        .replaceFirst(" \\((only in|missing from) yours\\)$", ""))
+                .collect(java.util.stream.Collectors.toSet());
     }
 
     @ParameterizedTest(name = "{0}")
@@ -171,6 +173,75 @@ class DiffCommandTest {
         CliRun run = diffOf(style);
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
         assertThat(membersShown(run)).as(run.transcript()).isEqualTo(style.changedMembers());
+    }
+
+    /** The form part of diff of one of a style's files, as {@link DiffCommand#compare} gives it, uncoloured. */
+    private record FormDiff(JavaMembers ours, JavaMembers theirs, java.util.List<String> report) {
+
+        static FormDiff of(String className, String source) throws JavaMembers.ParseException {
+            JavaMembers ours = DiffCommand.ours(className);
+            JavaMembers theirs = JavaMembers.parse(className + ".java", source, ours);
+            return new FormDiff(ours, theirs, DiffCommand.compare(ours, DiffCommand.starter(className, ours), theirs,
+                    Path.of(className + ".java"), new DiffCommand.Colours(false)));
+        }
+
+        /** Each hunk's lines (kind and text), under the signature of the member it belongs to. */
+        java.util.List<java.util.Map.Entry<String, java.util.List<String>>> hunks() {
+            java.util.List<java.util.Map.Entry<String, java.util.List<String>>> hunks = new java.util.ArrayList<>();
+            for (String line : report) {
+                if (line.startsWith("@@ ")) {
+                    String signature = line.substring(3, line.length() - 3).replaceFirst(" \\(.*\\)$", "");
+                    hunks.add(java.util.Map.entry(signature, new java.util.ArrayList<>()));
+                } else if (!hunks.isEmpty()) {
+                    hunks.get(hunks.size() - 1).getValue().add(line);
+                }
+            }
+            return hunks;
+        }
+
+        /** The texts of a hunk's lines of one kind ('-', '+' or ' '). */
+        static java.util.List<String> texts(java.util.List<String> hunk, char kind) {
+            return hunk.stream().filter(line -> line.charAt(0) == kind).map(line -> line.substring(1)).toList();
+        }
+
+        static java.util.List<String> lines(JavaMembers members, String signature) {
+            JavaMembers.Member member = members.members().get(signature);
+            return member == null ? java.util.List.of() : member.lines();
+        }
+    }
+
+    private static Stream<Arguments> styleFiles() {
+        return Stream.concat(CorrectStyles.layoutOnly().stream(), CorrectStyles.otherCode().stream())
+                .flatMap(style -> Stream.of(Arguments.of(style, "Sphere", style.sphere()),
+                        Arguments.of(style, "Renderer", style.renderer())));
+    }
+
+    @ParameterizedTest(name = "{0}: {1}")
+    @MethodSource("styleFiles")
+    void noLineOfACorrectStyleIsShownAsRemovedAndAddedAgain(CorrectStyles.Style style, String className,
+            String source) throws Exception {
+        FormDiff diff = FormDiff.of(className, source);
+        diff.hunks().forEach(hunk -> assertThat(FormDiff.texts(hunk.getValue(), '+'))
+                .as("a line of %s shown as removed and added again:%n%s", hunk.getKey(),
+                        String.join("\n", diff.report()))
+                .noneMatch(FormDiff.texts(hunk.getValue(), '-')::contains));
+    }
+
+    @ParameterizedTest(name = "{0}: {1}")
+    @MethodSource("styleFiles")
+    void contextAndAddedLinesAreTheStudentsOwnAndRemovedLinesOurs(CorrectStyles.Style style, String className,
+            String source) throws Exception {
+        FormDiff diff = FormDiff.of(className, source);
+        for (java.util.Map.Entry<String, java.util.List<String>> hunk : diff.hunks()) {
+            java.util.List<String> theirs = FormDiff.lines(diff.theirs(), hunk.getKey());
+            java.util.List<String> ours = FormDiff.lines(diff.ours(), hunk.getKey());
+            for (String line : hunk.getValue()) {
+                assertThat(line.charAt(0) == '-' ? ours : theirs)
+                        .as("the line \"%s\" of %s in %s's words:%n%s", line, hunk.getKey(),
+                                line.charAt(0) == '-' ? "our" : "the student", String.join("\n", diff.report()))
+                        .contains(line.substring(1));
+            }
+        }
     }
 
     /**

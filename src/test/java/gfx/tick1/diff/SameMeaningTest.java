@@ -51,7 +51,12 @@ class SameMeaningTest {
         "void m(boolean c) { if (c) { double t = 1; f = t; } else { double t = 2; f = t; } }"
             + " | void m(boolean c) { if (c) { double x = 1; f = x; } else { double y = 2; f = y; } }",
         "double m() { double a = f; double b = g; return a - b; }"
-            + " | double m() { double b = f; double a = g; return b - a; }"})
+            + " | double m() { double b = f; double a = g; return b - a; }",
+        "double m() { double x = f; return x; } | double m() { final double x = f; return x; }",
+        "double m(double a) { return a; } | double m(final double a) { return a; }",
+        "double m() { double x = f; return x; } | double m() { @Deprecated final double y = f; return y; }",
+        "double m() { double p = Math.sqrt(f); double q = Math.abs(g); return p - q; }"
+            + " | double m() { final double q = Math.abs(g); final double p = Math.sqrt(f); return p - q; }"})
     void membersEqualUpToWhatCannotChangeTheirMeaningHaveOneKey(String ours, String theirs) throws Exception {
         String[] keys = keys(ours, theirs);
         assertThat(keys[1]).as(theirs).isEqualTo(keys[0]);

@@ -29,6 +29,21 @@ class ImageDifferenceTest {
     }
 
     @Test
+    void theSummaryOfOnePixelOneLevelOffSaysSoInTheSingular() {
+        BufferedImage actual = filled(4, 1, 0x101010);
+        actual.setRGB(2, 0, 0x101011);
+        assertThat(ImageDifference.between(filled(4, 1, 0x101010), actual).summary()).as("the summary")
+                .startsWith("1 of 4 pixels differs (25.000%), max difference 1 level (R 0, G 0, B 1)");
+    }
+
+    @Test
+    void theSummaryOfSeveralPixelsSaysSoInThePlural() {
+        BufferedImage actual = filled(4, 1, 0x131313);
+        assertThat(ImageDifference.between(filled(4, 1, 0x101010), actual).summary()).as("the summary")
+                .startsWith("4 of 4 pixels differ (100.000%), max difference 3 levels (R 3, G 3, B 3)");
+    }
+
+    @Test
     void countsPixelsByTheirWorstChannel() {
         BufferedImage expected = filled(4, 1, 0x101010);
         BufferedImage actual = filled(4, 1, 0x101010);

@@ -25,6 +25,10 @@ final class FeedbackPage {
 
     /** How an explanation line that names what to reread begins (gfx.tick1.diagnose's report). */
     private static final String REREAD = "reread:";
+
+    /** How a row's reason sends its reader to the feedback (grade's own words). */
+    private static final String SEE_THE_FEEDBACK = " (see the feedback)";
+
     /** The most sections a feedback page asks to reread. */
     static final int MOST_TO_REREAD = 3;
 
@@ -76,6 +80,14 @@ final class FeedbackPage {
         return lines.stream().limit(MOST_TO_REREAD).toList();
     }
 
+    /**
+     * The reason, as a page of feedback gives it: the row's reason, whose pointers to "the
+     * feedback" (the shortened list of facts, an unsure diagnosis) point, here, to the scenes below.
+     */
+    static String reason(StudentResult result) {
+        return CellText.prose(result.reason()).replace(SEE_THE_FEEDBACK, " (see the scenes below)");
+    }
+
     static String html(StudentResult result) {
         Submission student = result.submission();
         String who = Html.escape(student.fullName());
@@ -89,7 +101,7 @@ final class FeedbackPage {
                 .append("<p class=\"verdict ").append(result.passed() ? "pass" : "fail").append("\">")
                 .append(Html.escape(capitalised(verdict(result)))).append("</p>\n")
                 .append("<h2>Why</h2>\n<p class=\"reason\">")
-                .append(Html.escape(CellText.prose(result.reason()))).append("</p>\n");
+                .append(Html.escape(reason(result))).append("</p>\n");
         List<String> rereading = rereading(result);
         if (!rereading.isEmpty()) {
             out.append("<h2>What to reread</h2>\n<ul class=\"reread\">\n");
@@ -142,7 +154,7 @@ final class FeedbackPage {
         StringBuilder out = new StringBuilder(4096);
         out.append("Tick 1 feedback for ").append(Html.plain(student.fullName())).append(" (participant ")
                 .append(Html.plain(student.id())).append(")\n\nResult: ").append(verdict(result))
-                .append("\n\nWhy\n").append(indented(Html.plain(CellText.prose(result.reason()))));
+                .append("\n\nWhy\n").append(indented(Html.plain(reason(result))));
         List<String> rereading = rereading(result);
         if (!rereading.isEmpty()) {
             out.append("\nWhat to reread\n");
