@@ -85,7 +85,8 @@ final class CohortPage {
                 .append("</td>")
                 .append("<td>").append(Html.escape(DiagnosisChart.label(result))).append("</td>")
                 .append("<td class=\"reason\" title=\"").append(Html.escape(CellText.prose(result.reason())))
-                .append("\">").append(Html.escape(CellText.shortReason(result.reason()))).append("</td>")
+                .append("\">").append(Html.escape(CellText.shortReason(result.reason())))
+                .append(ReasonText.of(result.reason()).quotedHtml()).append("</td>")
                 .append("<td class=\"time\" data-sort=\"").append(result.time().toMillis()).append("\">")
                 .append(duration(result.time())).append("</td>");
         List<String> titles = FeedbackPage.sceneTitles(result.scenes());

@@ -78,6 +78,7 @@ final class FeedbackPage {
 
     static String html(StudentResult result) {
         Submission student = result.submission();
+        ReasonText why = ReasonText.of(result.reason());
         String who = Html.escape(student.fullName());
         StringBuilder out = new StringBuilder(8192);
         out.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
@@ -89,7 +90,7 @@ final class FeedbackPage {
                 .append("<p class=\"verdict ").append(result.passed() ? "pass" : "fail").append("\">")
                 .append(Html.escape(capitalised(verdict(result)))).append("</p>\n")
                 .append("<h2>Why</h2>\n<p class=\"reason\">")
-                .append(Html.escape(CellText.prose(result.reason()))).append("</p>\n");
+                .append(Html.escape(why.prose())).append("</p>\n").append(why.quotedHtml());
         List<String> rereading = rereading(result);
         if (!rereading.isEmpty()) {
             out.append("<h2>What to reread</h2>\n<ul class=\"reread\">\n");
@@ -139,10 +140,12 @@ final class FeedbackPage {
 
     static String text(StudentResult result) {
         Submission student = result.submission();
+        ReasonText why = ReasonText.of(result.reason());
         StringBuilder out = new StringBuilder(4096);
         out.append("Tick 1 feedback for ").append(Html.plain(student.fullName())).append(" (participant ")
                 .append(Html.plain(student.id())).append(")\n\nResult: ").append(verdict(result))
-                .append("\n\nWhy\n").append(indented(Html.plain(CellText.prose(result.reason()))));
+                .append("\n\nWhy\n").append(indented(Html.plain(why.prose())));
+        why.quoted().forEach(line -> out.append("  ").append(Html.plain(line)).append('\n'));
         List<String> rereading = rereading(result);
         if (!rereading.isEmpty()) {
             out.append("\nWhat to reread\n");
