@@ -18,15 +18,14 @@ import org.junit.platform.launcher.TestPlan;
  * so that a long test run shows where it is; at the end, the run's counts and each skipped test with the reason it
  * was skipped. A test whose assumption does not hold (no course figures, root may write anywhere) is one the JUnit
  * Platform calls "aborted": it was not run, so it is counted and named here as skipped, with the assumption's words.
- * The JUnit console launcher that runs the tests on Gradle 4.4.1 prints its tree only once every test has run; Gradle 9's own test logging streams already, so this prints only when the
- * system property {@code tick1.testProgress} is {@code true}. Found by the JUnit Platform through
- * {@code META-INF/services}.
+ * The JUnit console launcher that runs the tests on Gradle 4.4.1 prints its tree only once every test has run;
+ * Gradle 9's own test logging streams already, so this prints only when the system property
+ * {@code tick1.testProgress} is {@code true}. Found by the JUnit Platform through {@code META-INF/services}.
  */
 public final class TestClassProgress implements TestExecutionListener {
 
-    private static final boolean ON = Boolean.getBoolean("tick1.testProgress");
-
-    private final PrintStream out = System.out;
+    private final boolean on;
+    private final PrintStream out;
     private final Map<String, long[]> counts = new HashMap<>();   // class id -> {tests, failed, skipped, start}
     private final List<String> skipped = new ArrayList<>();       // "Class test: reason", in the order skipped
     private TestPlan plan;
@@ -36,6 +35,16 @@ public final class TestClassProgress implements TestExecutionListener {
     private long skippedTests;
     private long start;
 
+    /** As the JUnit Platform makes it: on when the system property {@code tick1.testProgress} is true. */
+    public TestClassProgress() {
+        this(System.out, Boolean.getBoolean("tick1.testProgress"));
+    }
+
+    TestClassProgress(PrintStream out, boolean on) {
+        this.out = out;
+        this.on = on;
+    }
+
     @Override
     public void testPlanExecutionStarted(TestPlan testPlan) {
         plan = testPlan;
@@ -44,7 +53,7 @@ public final class TestClassProgress implements TestExecutionListener {
 
     @Override
     public void testPlanExecutionFinished(TestPlan testPlan) {
-        if (!ON) {
+        if (!on) {
             return;
         }
         out.println(String.format(Locale.ROOT, "%d tests in %.0f s: %d passed, %d failed, %d skipped", tests,
@@ -58,14 +67,14 @@ public final class TestClassProgress implements TestExecutionListener {
 
     @Override
     public void executionStarted(TestIdentifier id) {
-        if (ON && isTestClass(id)) {
+        if (on && isTestClass(id)) {
             counts.put(id.getUniqueId(), new long[] {0, 0, 0, System.nanoTime()});
         }
     }
 
     @Override
     public void executionSkipped(TestIdentifier id, String reason) {
-        if (ON) {
+        if (on) {
             long count = id.isTest() ? 1 : Math.max(1, plan.getDescendants(id).stream().filter(TestIdentifier::isTest)
                     .count());
             testClassOf(id).ifPresent(c -> counts.computeIfAbsent(c.getUniqueId(), k -> new long[4])[2] += count);
@@ -80,7 +89,7 @@ public final class TestClassProgress implements TestExecutionListener {
 
     @Override
     public void executionFinished(TestIdentifier id, TestExecutionResult result) {
-        if (!ON) {
+        if (!on) {
             return;
         }
         boolean failed = result.getStatus() == TestExecutionResult.Status.FAILED;
