@@ -27,7 +27,10 @@ record ReasonText(String prose, List<String> quoted) {
         return new ReasonText(CellText.prose(reason), List.of());
     }
 
-    /** The quoted lines as a {@code <pre>} and a line break (empty when there are none); HTML drops the one after {@code <pre>}. */
+    /**
+     * The quoted lines as a {@code <pre>} and a line break, or nothing when there are none. The {@code <pre>} opens
+     * with a line break, which HTML drops, so that each quoted line starts a line of the page.
+     */
     String quotedHtml() {
         if (quoted.isEmpty()) {
             return "";
