@@ -45,7 +45,7 @@ public final class HeatMapLegend {
             Map.entry('D', "110101101101110"), Map.entry('I', "111010010010111"),
             Map.entry('F', "111100110100100"), Map.entry('R', "110101110101101"),
             Map.entry('C', "011100100100011"), Map.entry('A', "010101111101101"),
-            Map.entry('K', "101101110101101"), Map.entry('B', "110101110101110"),
+            Map.entry('K', "101110100110101"), Map.entry('B', "110101110101110"),
             Map.entry('G', "011100101101011"), Map.entry('H', "101101111101101"),
             Map.entry('T', "111010010010010"));
     /** What the strip says in place of the key when no pixel differs: a dimmed copy alone reads as a failure. */
@@ -94,7 +94,8 @@ public final class HeatMapLegend {
             return image;
         }
         int width = image.getWidth(), height = heatMap.getHeight();
-        int middle = width / 2, gap = 2;
+        // The two 1s sit apart across the middle, so that they never read as 11.
+        int middle = width / 2, gap = 6;
         String most = (1 << OCTAVES) + "+";
         bar(image, MARGIN, middle - gap, height, true, ImageDifference::darkerColour);
         bar(image, middle + gap, width - MARGIN, height, false, ImageDifference::heatColour);
