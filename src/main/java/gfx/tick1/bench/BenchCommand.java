@@ -47,9 +47,9 @@ import picocli.CommandLine.Spec;
         description = {"Measures speed against accuracy for every renderer variant and writes a report "
                 + "(report.md, results.csv, speed-vs-error.png).",
             "The report goes into the folder --out names (tick1-bench unless told otherwise). The yardsticks it "
-                    + "compares tick1 with (the course's code, built from the starter kit and tick1's own solution, and "
-                    + "a scalar C tracer where a C compiler is), the scenes it renders and their images are kept in a "
-                    + "temporary folder, deleted when it ends."})
+                    + "compares tick1 with (the course's code, built from the starter kit and tick1's own solution, "
+                    + "and a scalar C tracer where a C compiler is), the scenes it renders and their images are kept "
+                    + "in a temporary folder, deleted when it ends."})
 public final class BenchCommand implements Callable<Integer> {
 
     @ExitStatus("the report was written")
@@ -128,8 +128,9 @@ public final class BenchCommand implements Callable<Integer> {
                         (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), search, Intersection.DEFAULT)
                                 .render(s));
                 // Brute force over 10,000 spheres takes seconds a frame: fewer runs for the crowds.
-                results.add(measure(variant, file.getFileName().toString(), crowd, 640, 480,
-                        settings.withRuns(1, Math.min(settings.runs, 3)), "brute force", bruteForce));
+                results.add(measure(variant, file.getFileName().toString(), crowd, settings.crowdWidth,
+                        settings.crowdWidth * 3 / 4, settings.withRuns(1, Math.min(settings.runs, 3)), "brute force",
+                        bruteForce));
             }
         }
 
@@ -151,13 +152,13 @@ public final class BenchCommand implements Callable<Integer> {
 
     /** Frame sizes, repetitions and scenes for the two modes. */
     private record Settings(int width, int height, int errorWidth, int errorHeight, int warmups, int runs,
-            int[] crowds, int processRuns) {
-        static final Settings FULL = new Settings(3840, 2160, 640, 480, 6, 7, new int[] {1_000, 10_000}, 11);
-        // Under a minute on two cores: a quarter of the pixels of 640 x 480, and two runs of each whole run.
-        static final Settings QUICK = new Settings(320, 240, 160, 120, 1, 3, new int[] {1_000}, 2);
+            int[] crowds, int crowdWidth, int processRuns) {
+        static final Settings FULL = new Settings(3840, 2160, 640, 480, 6, 7, new int[] {1_000, 10_000}, 640, 11);
+        // About a minute on two cores: a quarter of the pixels of 640 x 480 (the crowd's too), two of each whole run.
+        static final Settings QUICK = new Settings(320, 240, 160, 120, 1, 3, new int[] {1_000}, 320, 2);
 
         Settings withRuns(int warmups, int runs) {
-            return new Settings(width, height, errorWidth, errorHeight, warmups, runs, crowds, processRuns);
+            return new Settings(width, height, errorWidth, errorHeight, warmups, runs, crowds, crowdWidth, processRuns);
         }
     }
 

@@ -40,8 +40,8 @@ final class CohortSection {
         log.flush();
         try {
             String loadBefore = loadAverage();
-            CohortTiming.Measured m = CohortTiming.measure(StarterKit.solution("Sphere"), StarterKit.solution("Renderer"),
-                    count, jobs, WIDTH, HEIGHT);
+            CohortTiming.Measured m = CohortTiming.measure(StarterKit.solution("Sphere"),
+                    StarterKit.solution("Renderer"), count, jobs, WIDTH, HEIGHT);
             measured = m;
             section = markdown(m) + "\nThe machine's load average (1 minute) was " + loadBefore
                     + " before the grade and " + loadAverage() + " after it: other work on the machine slows "
