@@ -51,9 +51,9 @@ public final class StarterKit {
 
     /**
      * The course's solution of a class the student writes ({@code solution("Sphere")}, {@code solution("Renderer")}) as
-     * a student hands it in: tick1's own Sphere.java or Renderer.java, which keep the starter kit's layout and which the
-     * program holds beside its classes (for {@code tick1 diff}), in the starter's package {@code gfx.tick1} and without
-     * the imports of tick1's own packages. With the kit's other classes it compiles into the course's program.
+     * a student hands it in: tick1's own Sphere.java or Renderer.java, which keep the starter kit's layout and which
+     * the program holds beside its classes (for {@code tick1 diff}), in the starter's package {@code gfx.tick1} and
+     * without the imports of tick1's own packages. With the kit's other classes it compiles into the course's program.
      */
     public static String solution(String className) {
         if (!STUDENT_CLASSES.contains(className)) {

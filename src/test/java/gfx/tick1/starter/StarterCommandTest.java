@@ -41,7 +41,8 @@ class StarterCommandTest {
 
     /** The handout's section 2: what extracting tick1.zip shows. */
     private static final List<String> HANDOUTS_TREE = List.of("tick1/src/gfx/tick1/Camera.java",
-            "tick1/src/gfx/tick1/PointLight.java", "tick1/src/gfx/tick1/Ray.java", "tick1/src/gfx/tick1/RaycastHit.java",
+            "tick1/src/gfx/tick1/PointLight.java", "tick1/src/gfx/tick1/Ray.java",
+            "tick1/src/gfx/tick1/RaycastHit.java",
             "tick1/src/gfx/tick1/Renderer.java", "tick1/src/gfx/tick1/Scene.java",
             "tick1/src/gfx/tick1/SceneLoader.java", "tick1/src/gfx/tick1/Sphere.java", "tick1/src/gfx/tick1/Tick1.java",
             "tick1/src/gfx/tick1/Vector3.java", "tick1/basic_scene.xml");
@@ -108,7 +109,7 @@ class StarterCommandTest {
                 "gfx.tick1.SceneLoader", "gfx.tick1.Tick1");
     }
 
-    /** tick1's own Sphere.java and Renderer.java, made a student's: the starter's package, and they compile with the kit. */
+    /** tick1's own Sphere.java and Renderer.java, as a student's: the starter's package; they compile with the kit. */
     @Test
     void tick1sOwnSolutionInTheStartersPackageCompilesWithTheKit() throws Exception {
         List<StudentCompiler.Source> sources = new ArrayList<>();
