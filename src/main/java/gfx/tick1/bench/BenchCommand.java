@@ -60,8 +60,8 @@ public final class BenchCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Option(names = "--quick", description = "Small frames and few runs: under a minute, for CI. "
-            + "The full run is for people.")
+    @Option(names = "--quick", description = "Small frames, few runs and a cohort of 4: for CI, a check that "
+            + "everything runs, not a measure of speed. The full run is for people.")
     private boolean quick;
 
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "tick1-bench",
