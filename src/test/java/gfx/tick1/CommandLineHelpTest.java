@@ -207,9 +207,9 @@ class CommandLineHelpTest {
     }
 
     @Test
-    void theStarterKitGoesToTick1StarterUnlessToldOtherwise() {
+    void theStarterKitGoesToTheHandoutsFolderTick1UnlessToldOtherwise() {
         CommandLine starter = Tick1.commandLine(new RenderCommand()).getSubcommands().get("starter");
-        assertThat(starter.getCommandSpec().findOption("--out").defaultValue()).isEqualTo("tick1-starter");
+        assertThat(starter.getCommandSpec().findOption("--out").defaultValue()).isEqualTo("tick1");
     }
 
     /**

@@ -115,6 +115,75 @@ class ReadmeCommandsTest {
                 .as("%s: task %s", command, task).isTrue();
     }
 
+    /** The lines of the first code block of the README's section "Build and render": its set-up. */
+    static List<String> setUpCommands() throws IOException {
+        String readme = Files.readString(Path.of("README.md"));
+        String section = readme.substring(readme.indexOf("## Build and render"));
+        String block = section.substring(section.indexOf("```sh\n") + "```sh\n".length());
+        return block.substring(0, block.indexOf("```")).lines().filter(line -> !line.isBlank()).toList();
+    }
+
+    /**
+     * The set-up is two commands for a fresh Debian or Ubuntu: the first fetches the package lists (a new
+     * machine has none) and installs the JDK, Gradle and bubblewrap (which grade and diff's checks need).
+     */
+    @Test
+    void theSetUpIsOneCommandThatInstallsEverythingAndOneThatBuildsAndRenders() throws IOException {
+        List<String> setUp = setUpCommands();
+        assertThat(setUp).as("the set-up's commands").hasSize(2);
+        assertThat(setUp.get(0)).as("the install command").startsWith("apt-get update && apt-get install -y ")
+                .contains(" openjdk-17-jdk", " gradle", " bubblewrap");
+        assertThat(setUp.get(1)).as("the build command").startsWith("gradle --no-daemon installDist && ")
+                .contains("build/install/tick1/bin/tick1 ");
+    }
+
+    /** .ci/run, which CI runs on a clean clone, runs the README's set-up as the README writes it. */
+    @Test
+    void ciRunsTheReadmesSetUpAsWritten() throws Exception {
+        Process ci = new ProcessBuilder("bash", ".ci/run", "--show-setup").redirectErrorStream(true).start();
+        String shown = new String(ci.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertThat(ci.waitFor()).as(shown).isZero();
+
+        assertThat(shown.lines().toList()).as("the commands .ci/run runs").isEqualTo(setUpCommands());
+    }
+
+    /**
+     * The README's line that puts tick1 on the PATH, run once in the project's folder, gives {@code tick1} in a new
+     * terminal (a new interactive bash, which reads ~/.bashrc) in another folder: the starter kit's, say.
+     */
+    @Test
+    void thePathLineGivesTick1InANewTerminalInAnyFolder(@TempDir Path dir) throws Exception {
+        String line = commandLines().stream().filter(command -> command.contains(">> ~/.bashrc")).findFirst()
+                .orElseThrow(() -> new AssertionError("the README has no line that adds tick1 to ~/.bashrc"));
+        Path project = dir.resolve("my projects/tick1 build");
+        Path bin = Files.createDirectories(project.resolve("build/install/tick1/bin"));
+        Files.writeString(bin.resolve("tick1"), "#!/bin/sh\necho \"the installed tick1, in $PWD\"\n");
+        assertThat(bin.resolve("tick1").toFile().setExecutable(true)).isTrue();
+        Path home = Files.createDirectories(dir.resolve("home"));
+        Path kit = Files.createDirectories(dir.resolve("kit"));
+        assertThat(shell(project, home, "bash", "-c", line).status()).isZero();
+
+        Shell newTerminal = shell(kit, home, "bash", "-i", "-c", "tick1");
+
+        assertThat(newTerminal.status()).as(newTerminal.output()).isZero();
+        assertThat(newTerminal.output()).as("a new terminal in the kit's folder")
+                .contains("the installed tick1, in " + kit);
+    }
+
+    private record Shell(int status, String output) {
+    }
+
+    /** Runs {@code command} in {@code folder} with {@code home} as HOME and the system's own PATH. */
+    private static Shell shell(Path folder, Path home, String... command) throws Exception {
+        ProcessBuilder builder = new ProcessBuilder(command).directory(folder.toFile()).redirectErrorStream(true)
+                .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
+        builder.environment().put("HOME", home.toString());
+        builder.environment().put("PATH", "/usr/local/bin:/usr/bin:/bin");
+        Process process = builder.start();
+        String output = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        return new Shell(process.waitFor(), output);
+    }
+
     @Test
     void ciRunsTheReadmesTestCommand() throws IOException {
         String readme = Files.readString(Path.of("README.md"));

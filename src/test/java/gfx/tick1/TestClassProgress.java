@@ -1,7 +1,9 @@
 package gfx.tick1;
 
 import java.io.PrintStream;
+import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
@@ -13,38 +15,72 @@ import org.junit.platform.launcher.TestPlan;
 
 /**
  * One line per test class as it finishes (its tests, failures, skips and seconds), and each failure as it happens,
- * so that a long test run shows where it is. The JUnit console launcher that runs the tests on Gradle 4.4.1 prints
- * its tree only once every test has run; Gradle 9's own test logging streams already, so this prints only when the
- * system property {@code tick1.testProgress} is {@code true}. Found by the JUnit Platform through
- * {@code META-INF/services}.
+ * so that a long test run shows where it is; at the end, the run's counts and each skipped test with the reason it
+ * was skipped. A test whose assumption does not hold (no course figures, root may write anywhere) is one the JUnit
+ * Platform calls "aborted": it was not run, so it is counted and named here as skipped, with the assumption's words.
+ * The JUnit console launcher that runs the tests on Gradle 4.4.1 prints its tree only once every test has run;
+ * Gradle 9's own test logging streams already, so this prints only when the system property
+ * {@code tick1.testProgress} is {@code true}. Found by the JUnit Platform through {@code META-INF/services}.
  */
 public final class TestClassProgress implements TestExecutionListener {
 
-    private static final boolean ON = Boolean.getBoolean("tick1.testProgress");
-
-    private final PrintStream out = System.out;
+    private final boolean on;
+    private final PrintStream out;
     private final Map<String, long[]> counts = new HashMap<>();   // class id -> {tests, failed, skipped, start}
+    private final List<String> skipped = new ArrayList<>();       // "Class test: reason", in the order skipped
     private TestPlan plan;
     private int classesDone;
+    private long tests;
+    private long failures;
+    private long skippedTests;
+    private long start;
+
+    /** As the JUnit Platform makes it: on when the system property {@code tick1.testProgress} is true. */
+    public TestClassProgress() {
+        this(System.out, Boolean.getBoolean("tick1.testProgress"));
+    }
+
+    TestClassProgress(PrintStream out, boolean on) {
+        this.out = out;
+        this.on = on;
+    }
 
     @Override
     public void testPlanExecutionStarted(TestPlan testPlan) {
         plan = testPlan;
+        start = System.nanoTime();
+    }
+
+    @Override
+    public void testPlanExecutionFinished(TestPlan testPlan) {
+        if (!on) {
+            return;
+        }
+        out.println(String.format(Locale.ROOT, "%d tests in %.0f s: %d passed, %d failed, %d skipped", tests,
+                (System.nanoTime() - start) / 1e9, tests - failures - skippedTests, failures, skippedTests));
+        if (!skipped.isEmpty()) {
+            out.println("Skipped, and why:");
+            skipped.forEach(line -> out.println("  " + line));
+        }
+        out.flush();
     }
 
     @Override
     public void executionStarted(TestIdentifier id) {
-        if (ON && isTestClass(id)) {
+        if (on && isTestClass(id)) {
             counts.put(id.getUniqueId(), new long[] {0, 0, 0, System.nanoTime()});
         }
     }
 
     @Override
     public void executionSkipped(TestIdentifier id, String reason) {
-        if (ON) {
-            testClassOf(id).ifPresent(c -> counts.computeIfAbsent(c.getUniqueId(), k -> new long[4])[2] +=
-                    id.isTest() ? 1 : Math.max(1, plan.getDescendants(id).stream().filter(TestIdentifier::isTest)
-                            .count()));
+        if (on) {
+            long count = id.isTest() ? 1 : Math.max(1, plan.getDescendants(id).stream().filter(TestIdentifier::isTest)
+                    .count());
+            testClassOf(id).ifPresent(c -> counts.computeIfAbsent(c.getUniqueId(), k -> new long[4])[2] += count);
+            tests += count;
+            skippedTests += count;
+            skipped.add(name(id) + (id.isTest() ? "" : " (" + count + " tests)") + ": " + reason);
             if (isTestClass(id)) {
                 print(id);
             }
@@ -53,7 +89,7 @@ public final class TestClassProgress implements TestExecutionListener {
 
     @Override
     public void executionFinished(TestIdentifier id, TestExecutionResult result) {
-        if (!ON) {
+        if (!on) {
             return;
         }
         boolean failed = result.getStatus() == TestExecutionResult.Status.FAILED;
@@ -61,6 +97,12 @@ public final class TestClassProgress implements TestExecutionListener {
         // counted with the skipped ones, as the launcher's own summary counts it apart from the failures.
         boolean aborted = result.getStatus() == TestExecutionResult.Status.ABORTED;
         if (id.isTest()) {
+            tests++;
+            failures += failed ? 1 : 0;
+            if (aborted) {
+                skippedTests++;
+                skipped.add(name(id) + ": " + result.getThrowable().map(TestClassProgress::assumption).orElse("?"));
+            }
             testClassOf(id).ifPresent(c -> {
                 long[] count = counts.computeIfAbsent(c.getUniqueId(), k -> new long[4]);
                 count[0]++;
@@ -87,6 +129,19 @@ public final class TestClassProgress implements TestExecutionListener {
                 count[0], count[0] == 1 ? " " : "s", count[1] > 0 ? ", " + count[1] + " FAILED" : "",
                 count[2] > 0 ? ", " + count[2] + " skipped" : "", seconds));
         out.flush();
+    }
+
+    /** "ClassName test()": the test's class without the common package, and its display name. */
+    private String name(TestIdentifier id) {
+        String className = testClassOf(id).flatMap(TestIdentifier::getSource).map(source -> ((ClassSource) source)
+                .getClassName().replace("gfx.tick1.", "")).orElse("");
+        return isTestClass(id) ? className : className + " " + id.getDisplayName();
+    }
+
+    /** The words of an assumption that did not hold, without JUnit's "Assumption failed: " and a "skipped: ". */
+    private static String assumption(Throwable aborted) {
+        return String.valueOf(aborted.getMessage()).replaceFirst("^Assumption failed: ", "")
+                .replaceFirst("^skipped: ", "").strip();
     }
 
     /** A top-level test class (not a nested one, whose tests count for the class around it). */

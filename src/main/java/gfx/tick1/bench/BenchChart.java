@@ -25,7 +25,8 @@ import org.knowm.xchart.style.XYStyler;
 /**
  * The benchmark's plot, speed-vs-error.png: time per frame (log scale) against RMS error in
  * levels, one point per variant. Times are comparable only for the same scene and frame size,
- * so each frame size gets a panel of its own, one above the other. Within a panel every variant
+ * and errors only against the same reference image, so each frame size and reference gets a panel
+ * of its own, one above the other. Within a panel every variant
  * has a number, a colour and a shape of its own; its marker is filled when it rendered on every
  * core and hollow on one thread, and its number stands above (or below) it; points that fall on
  * one another share a label that names them all ("5, 6"). Each axis runs a tenth of its
@@ -88,11 +89,25 @@ final class BenchChart {
 
     /**
      * The crowds share a panel: they are rendered at the same size, and their time against the
-     * number of spheres is what the panel shows; tick1.xml's variants have one of their own.
+     * number of spheres is what the panel shows; tick1.xml's variants have one of their own. An
+     * error is comparable only with errors against the same reference, so variants measured against
+     * another (anti-aliased ones against a 256-sample image, the others against the exact image)
+     * have a panel of their own too, whose title names the reference.
      */
     private static String panelTitle(Result r) {
         String scene = r.scene().startsWith("crowd") ? "crowds of spheres" : r.scene();
-        return String.format(Locale.ROOT, "%s at %d x %d", scene, r.width(), r.height());
+        return String.format(Locale.ROOT, "%s at %d x %d, error against %s", scene, r.width(), r.height(),
+                reference(r.errorAgainst()));
+    }
+
+    /** What an error was measured against, in words: the report's short names spelt out. */
+    static String reference(String errorAgainst) {
+        return switch (errorAgainst) {
+            case "truth" -> "the exact image";
+            case "brute force" -> "the brute-force image";
+            default -> errorAgainst.endsWith(" samples") ? "a " + errorAgainst.replace(" samples", "-sample") + " image"
+                    : errorAgainst;
+        };
     }
 
     private static XYChart panel(String title, List<Result> rows) {

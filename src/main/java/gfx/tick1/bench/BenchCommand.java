@@ -39,15 +39,17 @@ import picocli.CommandLine.Spec;
  * {@code tick1 bench}: every way of rendering side by side in one process, on the same scenes,
  * with the time each takes and how far its image is from the right one; then whole runs of the
  * program in fresh processes for start-up, scaling and end-to-end time. Writes report.md,
- * results.csv and speed-vs-error.png (and the yardsticks' builds, in yardsticks/); the scenes it
- * renders, tick1.xml and the generated crowds, are written to a temporary folder deleted on exit.
+ * results.csv and speed-vs-error.png into one folder; the scenes it renders (tick1.xml and the
+ * generated crowds) and the yardsticks' builds and images go to a temporary folder deleted on exit.
+ * It needs nothing but the installed program: the course code's correct solution is tick1's own.
  */
 @Command(name = "bench",
         description = {"Measures speed against accuracy for every renderer variant and writes a report "
                 + "(report.md, results.csv, speed-vs-error.png).",
-            "Beside the report it keeps yardsticks/, the builds of the course's code and of the scalar C tracer "
-                    + "that the report compares tick1 with. The scenes it renders (tick1.xml and generated crowds "
-                    + "of spheres) are written to a temporary folder, deleted when it ends."})
+            "The report goes into the folder --out names (tick1-bench unless told otherwise). The yardsticks it "
+                    + "compares tick1 with (the course's code, built from the starter kit and tick1's own solution, "
+                    + "and a scalar C tracer where a C compiler is), the scenes it renders and their images are kept "
+                    + "in a temporary folder, deleted when it ends."})
 public final class BenchCommand implements Callable<Integer> {
 
     @ExitStatus("the report was written")
@@ -58,17 +60,21 @@ public final class BenchCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Option(names = "--quick", description = "Small frames and few runs: under a minute, for CI. "
-            + "The full run is for people.")
+    @Option(names = "--quick", description = "Small frames, few runs and a cohort of 4: for CI, a check that "
+            + "everything runs, not a measure of speed. The full run is for people.")
     private boolean quick;
 
-    @Option(names = "--out", paramLabel = "DIR", defaultValue = "build/reports/bench",
-            description = "Where to write the report (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--out", paramLabel = "DIR", defaultValue = "tick1-bench",
+            description = "The folder to write the report into, created if missing (default: ${DEFAULT-VALUE}, in the "
+                    + "current folder).")
     private Path out;
 
     private PrintWriter log;
 
-    /** The scene files the runs read: tick1.xml and the crowds, about 800 KB, which are no part of the report. */
+    /**
+     * The files the runs read and write that are no part of the report: tick1.xml and the crowds (about 800 KB), the
+     * yardsticks' builds, and the C tracer's image (6 MB for the full run).
+     */
     private Path scenes;
 
     @Override
@@ -122,8 +128,9 @@ public final class BenchCommand implements Callable<Integer> {
                         (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), search, Intersection.DEFAULT)
                                 .render(s));
                 // Brute force over 10,000 spheres takes seconds a frame: fewer runs for the crowds.
-                results.add(measure(variant, file.getFileName().toString(), crowd, 640, 480,
-                        settings.withRuns(1, Math.min(settings.runs, 3)), "brute force", bruteForce));
+                results.add(measure(variant, file.getFileName().toString(), crowd, settings.crowdWidth,
+                        settings.crowdWidth * 3 / 4, settings.withRuns(1, Math.min(settings.runs, 3)), "brute force",
+                        bruteForce));
             }
         }
 
@@ -145,12 +152,13 @@ public final class BenchCommand implements Callable<Integer> {
 
     /** Frame sizes, repetitions and scenes for the two modes. */
     private record Settings(int width, int height, int errorWidth, int errorHeight, int warmups, int runs,
-            int[] crowds, int processRuns) {
-        static final Settings FULL = new Settings(3840, 2160, 640, 480, 6, 7, new int[] {1_000, 10_000}, 11);
-        static final Settings QUICK = new Settings(640, 480, 160, 120, 1, 3, new int[] {1_000}, 3);
+            int[] crowds, int crowdWidth, int processRuns) {
+        static final Settings FULL = new Settings(3840, 2160, 640, 480, 6, 7, new int[] {1_000, 10_000}, 640, 11);
+        // About a minute on two cores: a quarter of the pixels of 640 x 480 (the crowd's too), two of each whole run.
+        static final Settings QUICK = new Settings(320, 240, 160, 120, 1, 3, new int[] {1_000}, 320, 2);
 
         Settings withRuns(int warmups, int runs) {
-            return new Settings(width, height, errorWidth, errorHeight, warmups, runs, crowds, processRuns);
+            return new Settings(width, height, errorWidth, errorHeight, warmups, runs, crowds, crowdWidth, processRuns);
         }
     }
 
@@ -251,7 +259,7 @@ public final class BenchCommand implements Callable<Integer> {
     private Whole wholeRuns(ProcessRuns runs, Settings settings, Path tick1File, Scene tick1) throws IOException {
         Path image = scenes.resolve("whole-run.png");
         String scene = tick1File.toString();
-        Path yardsticks = Files.createDirectories(out.resolve("yardsticks"));
+        Path yardsticks = Files.createDirectories(scenes.resolve("yardsticks"));
         Map<String, Double> phases = runs.phases(settings.processRuns, "-q", "-i", scene, "-o", image.toString());
         List<String> small = runs.tick1Command("-q", "-i", scene, "-o", image.toString());
         Timing startup, courseCode = null;

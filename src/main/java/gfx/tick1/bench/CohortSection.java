@@ -1,6 +1,7 @@
 package gfx.tick1.bench;
 
 import gfx.tick1.grade.cohort.CohortTiming;
+import gfx.tick1.starter.StarterKit;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
@@ -12,13 +13,13 @@ import java.util.Locale;
 /**
  * The benchmark's cohort section: {@code tick1 grade --submissions} on a generated cohort of
  * correct solutions, with the default jobs, in the sandbox: the wall time per submission and the
- * median time of each phase. The correct solution is the tests' own
- * ({@code src/test/resources/students/correct}), so the section is measured when the benchmark
- * runs in the project's folder, and says so otherwise.
+ * median time of each phase. The correct solution is tick1's own, in the starter's package
+ * ({@link StarterKit#solution}), which the program holds: the section is measured wherever it runs.
  */
 final class CohortSection {
 
-    static final Path SOLUTION = Path.of("src", "test", "resources", "students", "correct");
+    /** The cohort's size: a year's worth, or for --quick two rounds of the two jobs a two-core machine runs. */
+    static final int FULL_COHORT = 100, QUICK_COHORT = 4;
     /** The course grades at 640 x 480. */
     private static final int WIDTH = 640, HEIGHT = 480;
 
@@ -26,36 +27,30 @@ final class CohortSection {
     }
 
     /**
-     * Measures a cohort of 100 (the full run) or 10 (--quick) and appends the section to {@code report};
+     * Measures a cohort of {@value #FULL_COHORT} (the full run) or {@value #QUICK_COHORT} (--quick) and appends the
+     * section to {@code report};
      * returns what was measured, or null where nothing could be.
      */
     static CohortTiming.Measured appendTo(Path report, boolean quick, PrintWriter log) throws IOException {
-        int count = quick ? 10 : 100;
+        int count = quick ? QUICK_COHORT : FULL_COHORT;
         int jobs = Runtime.getRuntime().availableProcessors();
         String section;
         CohortTiming.Measured measured = null;
-        if (!Files.isRegularFile(SOLUTION.resolve("Sphere.java"))) {
-            section = heading() + "Not measured: the correct solution (" + SOLUTION + ") is not here; run the "
-                    + "benchmark in the project's folder.\n";
-        } else {
-            log.printf("grading a cohort of %d correct solutions, %d at a time%n", count, jobs);
-            log.flush();
-            try {
-                String loadBefore = loadAverage();
-                CohortTiming.Measured m = CohortTiming.measure(
-                        Files.readString(SOLUTION.resolve("Sphere.java"), StandardCharsets.UTF_8),
-                        Files.readString(SOLUTION.resolve("Renderer.java"), StandardCharsets.UTF_8),
-                        count, jobs, WIDTH, HEIGHT);
-                measured = m;
-                section = markdown(m) + "\nThe machine's load average (1 minute) was " + loadBefore
-                        + " before the grade and " + loadAverage() + " after it: other work on the machine slows "
-                        + "every phase.\n";
-            } catch (CohortTiming.Unavailable e) {
-                section = heading() + "Not measured: " + e.getMessage() + ".\n";
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                section = heading() + "Not measured: interrupted.\n";
-            }
+        log.printf("grading a cohort of %d correct solutions, %d at a time%n", count, jobs);
+        log.flush();
+        try {
+            String loadBefore = loadAverage();
+            CohortTiming.Measured m = CohortTiming.measure(StarterKit.solution("Sphere"),
+                    StarterKit.solution("Renderer"), count, jobs, WIDTH, HEIGHT);
+            measured = m;
+            section = markdown(m) + "\nThe machine's load average (1 minute) was " + loadBefore
+                    + " before the grade and " + loadAverage() + " after it: other work on the machine slows "
+                    + "every phase.\n";
+        } catch (CohortTiming.Unavailable e) {
+            section = heading() + "Not measured: " + e.getMessage() + ".\n";
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            section = heading() + "Not measured: interrupted.\n";
         }
         Files.writeString(report, "\n" + section, StandardCharsets.UTF_8, StandardOpenOption.APPEND);
         return measured;

@@ -6,7 +6,6 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import javax.tools.JavaCompiler;
@@ -15,8 +14,8 @@ import javax.tools.ToolProvider;
 /**
  * The benchmark's yardstick for a one-off render: the course's own program, which is the starter
  * kit that {@code tick1 starter} writes with a correct {@code Sphere.java} and
- * {@code Renderer.java} (the tests' own, as the cohort section uses), compiled with javac and run
- * with {@code java -cp} on the same JDK, as a student runs it.
+ * {@code Renderer.java} (tick1's own, in the starter's package: {@link StarterKit#solution}), compiled
+ * with javac and run with {@code java -cp} on the same JDK, as a student runs it.
  */
 final class CourseCode {
 
@@ -28,10 +27,6 @@ final class CourseCode {
      * renders {@code scene} to {@code image} with them; throws with the reason it cannot.
      */
     static List<String> build(Path folder, Path scene, Path image) throws IOException {
-        if (!Files.isRegularFile(CohortSection.SOLUTION.resolve("Sphere.java"))) {
-            throw new IOException("the correct solution (" + CohortSection.SOLUTION + ") is not here; run the "
-                    + "benchmark in the project's folder");
-        }
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
         if (javac == null) {
             throw new IOException("this Java has no compiler (a JRE, not a JDK)");
@@ -42,8 +37,8 @@ final class CourseCode {
         }
         List<String> arguments = new ArrayList<>(List.of("-d", kit.resolve("classes").toString()));
         for (String name : StarterKit.STUDENT_CLASSES) {
-            Files.copy(CohortSection.SOLUTION.resolve(name + ".java"),
-                    kit.resolve(StarterKit.SOURCE_FOLDER + name + ".java"), StandardCopyOption.REPLACE_EXISTING);
+            Files.writeString(kit.resolve(StarterKit.SOURCE_FOLDER + name + ".java"), StarterKit.solution(name),
+                    StandardCharsets.UTF_8);
         }
         List<String> classes = new ArrayList<>(StarterKit.GIVEN_CLASSES);
         classes.addAll(StarterKit.STUDENT_CLASSES);

@@ -62,7 +62,8 @@ final class Goals {
         md.append("Each ratio comes from runs taken in turn in this run (medians), so that the machine's load "
                 + "falls on both sides alike.");
         if (quick) {
-            md.append(" A quick run measures smaller frames and a cohort of 10: its numbers show that each "
+            md.append(" A quick run measures smaller frames and a cohort of " + CohortSection.QUICK_COHORT
+                    + ": its numbers show that each "
                     + "is measured, not whether a goal is met.");
         }
         md.append("\n\n| measure | this run | goal | met |\n| --- | ---: | --- | --- |\n");

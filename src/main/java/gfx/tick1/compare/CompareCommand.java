@@ -46,9 +46,15 @@ public final class CompareCommand implements Callable<Integer> {
     private Path actualFile;
 
     @Option(names = "--diff", paramLabel = "HEATMAP.png",
-            description = "Also write a heat map of the differences over a dimmed copy of the expected image: "
-                    + "dark red for 1 level, through orange, to yellow-white for 64 levels or more.")
+            description = "Also write a heat map of the differences over a dimmed copy of the expected image, "
+                    + "with its key below: where ACTUAL is brighter, dark red for 1 level, through orange, to "
+                    + "yellow-white for 64 levels or more; where it is darker, dark blue through blue to pale cyan.")
     private Path heatMapFile;
+
+    @Option(names = "--unsigned",
+            description = "With --diff: draw how far each pixel is off only, not which way, all in the "
+                    + "brighter colours (dark red to yellow-white).")
+    private boolean unsigned;
 
     @Option(names = "--tolerance", paramLabel = "LEVELS", defaultValue = "0",
             description = "The largest difference per channel that still counts as the same (default: "
@@ -78,7 +84,8 @@ public final class CompareCommand implements Callable<Integer> {
         print(difference, out);
         if (heatMapFile != null) {
             try {
-                PngOutput.write(difference.heatMapWithLegend(), heatMapFile);
+                PngOutput.write(unsigned ? difference.heatMapWithLegend() : difference.signedHeatMapWithLegend(),
+                        heatMapFile);
             } catch (IOException e) {
                 throw new CommandFailure(EXIT_CANNOT_WRITE, heatMapFile + ": cannot write the heat map: "
                         + IoErrors.reason(e));

@@ -182,7 +182,8 @@ final class CohortCommand {
                 + (results.size() - done.stored() - problems) + " now, " + done.stored() + " from earlier runs"
                 + (problems > 0 ? ", " + problems + " not run: a problem with their files" : "") + "): "
                 + passed + " passed, " + (results.size() - passed) + " failed.");
-        out.println("Grades: " + report.resolve(ReportFiles.GRADES) + "; report: " + report.resolve("index.html"));
+        out.println("Grades: " + report.resolve(ReportFiles.GRADES) + "; feedback: "
+                + report.resolve(ReportFiles.FEEDBACK_ZIP) + "; report: " + report.resolve("index.html"));
         for (CohortGrade.Ungraded ungraded : done.ungraded()) {
             err.println("tick1 grade: " + printable(ungraded.folder()) + ": not graded: " + ungraded.why()
                     + (ungraded.grader() ? "" : " " + report));

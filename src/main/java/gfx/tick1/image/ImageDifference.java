@@ -136,21 +136,43 @@ public final class ImageDifference {
     /**
      * A heat map of the differences over a dimmed grey copy of the expected image: differing
      * pixels run from dark red (1 level) to yellow-white (64 levels or more), so that a one-level
-     * truncation error is as visible as a wrong sphere.
+     * truncation error is as visible as a wrong sphere. It says how far a pixel is off, not which
+     * way: {@link #signedHeatMap} says that too.
      */
     public BufferedImage heatMap() {
+        return map(false);
+    }
+
+    /**
+     * A heat map that also says which way each pixel is off: where the actual pixel is brighter than the expected
+     * one, in {@link #heatColour} (dark red to yellow-white); where it is darker, in {@link #darkerColour} (dark blue
+     * to pale cyan). The direction tells mistakes apart that differ by as much: light added where there should be
+     * none (the handout's Figure 6a) from light taken away (Figure 6b). Brighter means that the pixel's three
+     * channels add up to more; where they add up to the same, the channel that differs most decides.
+     */
+    public BufferedImage signedHeatMap() {
+        return map(true);
+    }
+
+    private BufferedImage map(boolean signed) {
         int[] map = new int[width * height];
         for (int i = 0; i < map.length; i++) {
             int a = expected[i], b = actual[i];
-            int d = 0;
+            int d = 0, worst = 0, sum = 0;
             for (int c = 0; c < 3; c++) {
-                d = Math.max(d, Math.abs(channel(a, c) - channel(b, c)));
+                int signedDifference = channel(b, c) - channel(a, c);
+                sum += signedDifference;
+                if (Math.abs(signedDifference) > d) {
+                    d = Math.abs(signedDifference);
+                    worst = signedDifference;
+                }
             }
             if (d == 0) {
                 int grey = (channel(a, 0) + channel(a, 1) + channel(a, 2)) / 12;
                 map[i] = grey << 16 | grey << 8 | grey;
             } else {
-                map[i] = heatColour(d);
+                boolean darker = signed && (sum < 0 || sum == 0 && worst < 0);
+                map[i] = darker ? darkerColour(d) : heatColour(d);
             }
         }
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
@@ -167,10 +189,16 @@ public final class ImageDifference {
         return HeatMapLegend.below(heatMap(), differingPixels() > 0);
     }
 
+    /** The signed heat map as a file shows it, with its two-hued key below it as {@link #heatMapWithLegend}. */
+    public BufferedImage signedHeatMapWithLegend() {
+        return HeatMapLegend.belowSigned(signedHeatMap(), differingPixels() > 0);
+    }
+
     /**
      * The heat map's colour (0xRRGGBB) for a pixel that differs by {@code levels} (1 to 255) in its
      * worst channel: on a logarithmic scale, so that 1, 2, 4, ... 64 levels are evenly spaced, dark
-     * red through red and orange to yellow-white. Legends of the heat map use it too.
+     * red through red and orange to yellow-white. Legends of the heat map use it too. The signed
+     * heat map uses it where the actual pixel is brighter.
      */
     public static int heatColour(int levels) {
         if (levels < 1 || levels > 255) {
@@ -181,6 +209,16 @@ public final class ImageDifference {
         int green = (int) (255 * Math.max(0, 2 * t - 1));
         int blue = (int) (160 * Math.max(0, 3 * t - 2));
         return red << 16 | green << 8 | blue;
+    }
+
+    /**
+     * The signed heat map's colour where the actual pixel is darker by {@code levels} (1 to 255): {@link #heatColour}
+     * with red and blue exchanged, the same steps of lightness in the opposite hue, dark blue through blue to pale
+     * cyan.
+     */
+    public static int darkerColour(int levels) {
+        int warm = heatColour(levels);
+        return (warm & 0xFF) << 16 | warm & 0xFF00 | warm >> 16 & 0xFF;
     }
 
     /** One line for a test failure or the command line. */

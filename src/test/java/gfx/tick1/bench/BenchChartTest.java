@@ -133,12 +133,38 @@ class BenchChartTest {
         }
     }
 
+    /**
+     * Errors measured against different images are not on one axis: anti-aliased variants, measured against a
+     * 256-sample image, are plotted apart from the others, measured against the exact image, and each panel's title
+     * names its reference.
+     */
+    @Test
+    void variantsMeasuredAgainstAnotherReferenceHaveAPanelOfTheirOwnThatNamesIt() {
+        BufferedImage image = new BufferedImage(4, 4, BufferedImage.TYPE_INT_RGB);
+        List<Result> results = List.of(
+                new Result("one sample", "tick1.xml", 640, 480, 1, 2, Timing.of(new double[] {10}), "truth",
+                        ImageDifference.between(image, image), 4, 4),
+                new Result("4 samples", "tick1.xml", 640, 480, 4, 2, Timing.of(new double[] {40}), "256 samples",
+                        ImageDifference.between(image, image), 4, 4),
+                new Result("another sample", "tick1.xml", 640, 480, 1, 1, Timing.of(new double[] {20}), "truth",
+                        ImageDifference.between(image, image), 4, 4));
+
+        List<XYChart> panels = BenchChart.panels(results, true);
+
+        assertThat(panels).extracting(XYChart::getTitle).containsExactly(
+                "tick1 bench: tick1.xml at 640 x 480, error against the exact image (quick run)",
+                "tick1 bench: tick1.xml at 640 x 480, error against a 256-sample image (quick run)");
+        assertThat(panels.get(0).getSeriesMap()).as("the variants against the exact image").hasSize(2);
+        assertThat(panels.get(1).getSeriesMap().keySet()).as("the variant against 256 samples")
+                .singleElement().asString().contains("4 samples");
+    }
+
     @Test
     void eachFrameSizeHasAPanelOfItsOwn() {
         List<XYChart> panels = BenchChart.panels(fullRun(), false);
         assertThat(panels).extracting(XYChart::getTitle)
-                .containsExactly("tick1 bench: tick1.xml at 3840 x 2160",
-                        "tick1 bench: crowds of spheres at 640 x 480");
+                .containsExactly("tick1 bench: tick1.xml at 3840 x 2160, error against the exact image",
+                        "tick1 bench: crowds of spheres at 640 x 480, error against the exact image");
         assertThat(panels.get(0).getSeriesMap()).hasSize(11);
         assertThat(panels.get(1).getSeriesMap().keySet())
                 .allMatch(label -> label.endsWith("crowd-1000.xml") || label.endsWith("crowd-10000.xml"));

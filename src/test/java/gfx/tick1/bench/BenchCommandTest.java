@@ -2,6 +2,7 @@ package gfx.tick1.bench;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.CliRun;
 import gfx.tick1.RenderCommand;
 import gfx.tick1.Tick1;
 import java.io.IOException;
@@ -18,30 +19,50 @@ import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 
 /**
- * {@code tick1 bench --quick} through the real entry point: it writes the three files, with a row
- * for every variant. What the numbers are is the report's business, not a test's.
+ * {@code tick1 bench --quick} as a user runs it: in a fresh process, in a folder of its own that is not the project's,
+ * with no options but --quick. It writes the three files, with a row for every variant, into its default folder.
+ * What the numbers are is the report's business, not a test's.
  */
 class BenchCommandTest {
 
     @TempDir
-    static Path out;
+    static Path folder;
+    private static Path out;
     private static int status;
     private static String printed;
 
     @BeforeAll
-    static void runTheQuickBenchmark() {
-        StringWriter text = new StringWriter();
-        CommandLine commandLine = Tick1.commandLine(new RenderCommand());
-        commandLine.setOut(new PrintWriter(text, true));
-        commandLine.setErr(new PrintWriter(text, true));
-        status = commandLine.execute("bench", "--quick", "--out", out.toString());
-        printed = text.toString();
+    static void runTheQuickBenchmark() throws Exception {
+        CliRun run = CliRun.inFolder(folder, "bench", "--quick");
+        status = run.status();
+        printed = run.out() + run.err();
+        out = folder.resolve("tick1-bench");
     }
 
     @Test
     void exitsZeroAndSaysWhereTheReportIs() {
         assertThat(status).as(printed).isZero();
-        assertThat(printed).contains("Wrote " + out.resolve("report.md"));
+        assertThat(printed).contains("Wrote " + Path.of("tick1-bench", "report.md"));
+    }
+
+    /** The yardsticks need nothing of the project: the course code's correct solution is in the program. */
+    @Test
+    void theCourseCodeAndTheCohortAreMeasuredOutsideTheProjectsFolder() throws IOException {
+        String report = Files.readString(out.resolve("report.md"));
+        assertThat(report).as("the course code's goal")
+                .doesNotContain("| tick1.xml at 640 x 480, whole run: tick1's time / the course code's | not measured")
+                .contains("| course code (starter kit + correct solution, `java -cp`), tick1.xml at 640 x 480 | ");
+        assertThat(report).as("the cohort's section").contains("## Grading a cohort")
+                .doesNotContain("## Grading a cohort\n\nNot measured");
+    }
+
+    /** The default report folder, tick1-bench, is all a run leaves in the folder it runs in. */
+    @Test
+    void theWorkingFolderGetsTheReportFolderAndNothingElse() throws IOException {
+        try (Stream<Path> files = Files.list(folder)) {
+            assertThat(files.map(file -> file.getFileName().toString())).as("the working folder")
+                    .containsExactly("tick1-bench");
+        }
     }
 
     @Test
@@ -101,13 +122,15 @@ class BenchCommandTest {
         assertThat(report).doesNotContain("| yes |", "| no |");
     }
 
-    /** The scenes the run renders, about 800 KB of crowds, are inputs, not part of the report. */
+    /**
+     * The scenes the run renders (about 800 KB of crowds), the yardsticks' builds and the C tracer's image (6 MB for a
+     * full run) are not part of the report.
+     */
     @Test
-    void theReportFolderHoldsTheReportAndTheYardsticksOnly() throws IOException {
+    void theReportFolderHoldsTheReportOnly() throws IOException {
         try (Stream<Path> files = Files.list(out)) {
             assertThat(files.map(file -> file.getFileName().toString()))
-                    .as("the report folder").containsOnly("report.md", "results.csv", "speed-vs-error.png",
-                            "yardsticks");
+                    .as("the report folder").containsOnly("report.md", "results.csv", "speed-vs-error.png");
         }
     }
 

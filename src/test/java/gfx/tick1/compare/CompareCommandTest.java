@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.image.HeatMapLegend;
+import gfx.tick1.image.ImageDifference;
 import gfx.tick1.image.PngOutput;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -81,6 +82,19 @@ class CompareCommandTest {
         assertThat(map.getHeight()).isEqualTo(200 + HeatMapLegend.HEIGHT);
         int red = map.getRGB(5, 7) >> 16 & 0xFF, green = map.getRGB(5, 7) >> 8 & 0xFF;
         assertThat(red).as("the differing pixel keeps its place above the legend").isGreaterThan(green);
+    }
+
+    @Test
+    void theHeatMapSaysWhichWayAPixelIsOffUnlessUnsignedIsAsked() throws IOException {
+        Path a = png("a.png", 320, 200, 0x336699), b = png("b.png", 320, 200, 0x336699, 5, 7, 0x326699);
+        Path signed = dir.resolve("signed.png"), unsigned = dir.resolve("unsigned.png");
+        CliRun.of("compare", a.toString(), b.toString(), "--diff", signed.toString());
+        CliRun.of("compare", a.toString(), b.toString(), "--diff", unsigned.toString(), "--unsigned");
+
+        assertThat(ImageIO.read(signed.toFile()).getRGB(5, 7) & 0xFFFFFF).as("a pixel 1 level darker, by default")
+                .isEqualTo(ImageDifference.darkerColour(1));
+        assertThat(ImageIO.read(unsigned.toFile()).getRGB(5, 7) & 0xFFFFFF).as("the same with --unsigned")
+                .isEqualTo(ImageDifference.heatColour(1));
     }
 
     @Test

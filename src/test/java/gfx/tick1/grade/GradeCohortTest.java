@@ -245,6 +245,42 @@ class GradeCohortTest {
     }
 
     @Test
+    void theClosingSummaryNamesTheGradesTheFeedbackZipAndThePage() {
+        Path report = shared.resolve("report");
+        assertThat(firstRun.out()).as(firstRun.transcript()).contains("Grades: " + report.resolve("grades.csv")
+                + "; feedback: " + report.resolve("feedback.zip") + "; report: " + report.resolve("index.html"));
+        assertThat(report.resolve("feedback.zip")).as("the zip the summary names").isRegularFile();
+    }
+
+    /**
+     * The compiler's words as javac prints them: the error, the source line, and a caret under the place,
+     * in the student's feedback.txt and feedback.html and on the cohort's page.
+     */
+    @Test
+    void aCompileErrorsFeedbackKeepsTheSourceLineAndTheCaretUnderIt() throws IOException {
+        Path report = shared.resolve("report");
+        Path folder = report.resolve("feedback").resolve(student("Does Not Compile").folder());
+        assertCaretAfterTheSourceLine("feedback.txt", Files.readString(folder.resolve("feedback.txt")));
+        assertCaretAfterTheSourceLine("feedback.html", Files.readString(folder.resolve("feedback.html")));
+        assertCaretAfterTheSourceLine("the cohort's page", Files.readString(report.resolve("index.html")));
+    }
+
+    /** {@code page} shows the line that does not compile, with a caret on the next line just after its s2. */
+    private static void assertCaretAfterTheSourceLine(String what, String page) {
+        String source = "double s = s1 > 0 ? s1 : s2";
+        List<String> lines = page.replace("&gt;", ">").replace("&lt;", "<").replace("&amp;", "&").lines().toList();
+        int at = 0;
+        while (at < lines.size() - 1 && !lines.get(at).contains(source)) {
+            at++;
+        }
+        assertThat(lines.get(at)).as("%s:%n%s", what, page).contains(source);
+        String caret = lines.get(at + 1);
+        assertThat(caret.strip()).as("%s: the line under the source line", what).isEqualTo("^");
+        assertThat(caret.indexOf('^')).as("%s: the caret's column, just after s2, where the ';' is missing", what)
+                .isEqualTo(lines.get(at).indexOf(source) + source.length());
+    }
+
+    @Test
     void eachFailureSaysWhyInTheFeedbackCell() throws IOException {
         Map<String, List<String>> rows = rows(shared.resolve("report"));
         Map<String, String> reasons = new LinkedHashMap<>();

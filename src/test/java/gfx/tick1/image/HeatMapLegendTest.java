@@ -47,6 +47,38 @@ class HeatMapLegendTest {
     }
 
     @Test
+    void theSignedKeyRunsFromSixtyFourDarkerDownToOneAndFromOneBrighterUpToSixtyFour() {
+        BufferedImage withLegend = oneLevelOffAt(640, 480, 0, 0)
+                .signedHeatMapWithLegend();
+        int[] row = withLegend.getRGB(0, 480 + 8, 640, 1, null, 0, 640);
+        int[] order = {indexOf(row, ImageDifference.darkerColour(64)), indexOf(row, ImageDifference.darkerColour(8)),
+            indexOf(row, ImageDifference.darkerColour(1)), indexOf(row, ImageDifference.heatColour(1)),
+            indexOf(row, ImageDifference.heatColour(8)), indexOf(row, ImageDifference.heatColour(64))};
+        assertThat(order).as("where 64, 8 and 1 levels darker, then 1, 8 and 64 brighter, are on the bar")
+                .doesNotContain(-1).isSorted();
+        assertThat(inkIn(withLegend, 0, 480 + 17, 320, 10)).as("labels under the darker half").isPositive();
+        assertThat(inkIn(withLegend, 320, 480 + 17, 320, 10)).as("labels under the brighter half").isPositive();
+    }
+
+    @Test
+    void theSignedKeysLabelsFitTheNarrowestMapThatGetsAKey() {
+        BufferedImage narrowest = oneLevelOffAt(HeatMapLegend.MIN_WIDTH, 40, 0, 0).signedHeatMapWithLegend();
+        assertThat(narrowest.getHeight()).isEqualTo(40 + HeatMapLegend.HEIGHT);
+        int w = HeatMapLegend.MIN_WIDTH;
+        assertThat(inkIn(narrowest, 0, 40 + 17, 12, 10)).as("nothing in the left margin").isZero();
+        assertThat(inkIn(narrowest, w - 12, 40 + 17, 12, 10)).as("nothing in the right margin").isZero();
+    }
+
+    private static int indexOf(int[] row, int rgb) {
+        for (int x = 0; x < row.length; x++) {
+            if ((row[x] & 0xFFFFFF) == rgb) {
+                return x;
+            }
+        }
+        return -1;
+    }
+
+    @Test
     void aMapTooNarrowForTheLabelsIsLeftAsItIs() {
         ImageDifference difference = oneLevelOffAt(HeatMapLegend.MIN_WIDTH - 1, 50, 3, 4);
         BufferedImage withLegend = difference.heatMapWithLegend();

@@ -105,6 +105,44 @@ class ImageDifferenceTest {
     }
 
     @Test
+    void theSignedHeatMapPaintsABrighterPixelInTheHeatColoursAndADarkerOneInTheDarkerColours() {
+        BufferedImage expected = filled(1, 1, 0x808080);
+        for (int levels : new int[] {1, 5, 64, 127}) {
+            BufferedImage brighter = ImageDifference.between(expected, filled(1, 1, 0x808080 + levels)).signedHeatMap();
+            BufferedImage darker = ImageDifference.between(expected, filled(1, 1, 0x808080 - levels)).signedHeatMap();
+            assertThat(brighter.getRGB(0, 0) & 0xFFFFFF).as("%d levels brighter", levels)
+                    .isEqualTo(ImageDifference.heatColour(levels));
+            assertThat(darker.getRGB(0, 0) & 0xFFFFFF).as("%d levels darker", levels)
+                    .isEqualTo(ImageDifference.darkerColour(levels));
+        }
+    }
+
+    @Test
+    void aPixelIsBrighterWhenItsChannelsAddUpToMoreAndOtherwiseAsItsWorstChannelSays() {
+        BufferedImage expected = filled(3, 1, 0x808080);
+        BufferedImage actual = filled(3, 1, 0x808080);
+        actual.setRGB(0, 0, 0x8A7D7D);   // red +10, green and blue -3 each: more light in all, though two are darker
+        actual.setRGB(1, 0, 0x788098);   // red -8, blue +24: more light in all
+        actual.setRGB(2, 0, 0x768A80);   // red -10, green +10: the same light in all; red comes first of the two worst
+        BufferedImage map = ImageDifference.between(expected, actual).signedHeatMap();
+        assertThat(map.getRGB(0, 0) & 0xFFFFFF).as("more light in all").isEqualTo(ImageDifference.heatColour(10));
+        assertThat(map.getRGB(1, 0) & 0xFFFFFF).as("more light in all").isEqualTo(ImageDifference.heatColour(24));
+        assertThat(map.getRGB(2, 0) & 0xFFFFFF).as("the same light: the worst channel, red, is darker")
+                .isEqualTo(ImageDifference.darkerColour(10));
+    }
+
+    @Test
+    void darkerColoursAreTheHeatColoursWithRedAndBlueExchangedFromDarkBlueToPaleCyan() {
+        assertThat(ImageDifference.darkerColour(1)).isEqualTo(0x000080);
+        assertThat(ImageDifference.darkerColour(64)).isEqualTo(0xA0FFFF);
+        for (int levels = 1; levels <= 255; levels++) {
+            int warm = ImageDifference.heatColour(levels);
+            assertThat(ImageDifference.darkerColour(levels)).as("%d levels", levels)
+                    .isEqualTo((warm & 0xFF) << 16 | warm & 0xFF00 | warm >> 16);
+        }
+    }
+
+    @Test
     void theHeatMapPaintsADifferingPixelInItsHeatColour() {
         BufferedImage expected = filled(1, 1, 0x808080);
         for (int levels : new int[] {1, 5, 64, 127}) {

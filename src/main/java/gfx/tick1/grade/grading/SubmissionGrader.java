@@ -132,9 +132,14 @@ public final class SubmissionGrader {
             String heading = "the code does not compile (" + count(compiled.errors().size(), "error") + ")";
             out.println("FAILED: " + heading + ":");
             compiled.errors().forEach(out::println);
+            // The first error: its words as the reason's one line, and javac's source line and the caret under it
+            // kept on lines of their own, as javac printed them, for the feedback to show.
+            List<String> error = compiled.errors().get(0).lines().toList();
+            int quoted = error.size() >= 3 && error.get(error.size() - 1).strip().equals("^") ? error.size() - 2
+                    : error.size();
             return new Graded(result(grade, submission, false, 0, DOES_NOT_COMPILE,
-                    "FAILED: " + heading + ": " + compiled.errors().get(0).lines().findFirst().orElse("")),
-                    false, phases(grade));
+                    "FAILED: " + heading + ": " + String.join("\n", error.subList(0, quoted)),
+                    error.subList(quoted, error.size())), false, phases(grade));
         }
         out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
                 + " with the starter code.");
@@ -286,8 +291,16 @@ public final class SubmissionGrader {
 
     private StudentResult result(Grade grade, Submission submission, boolean passed, int scenesPassed,
             String diagnosis, String reason) {
+        return result(grade, submission, passed, scenesPassed, diagnosis, reason, List.of());
+    }
+
+    /** The result, whose reason is {@code reason} as one line, then the {@code quoted} lines as they are. */
+    private StudentResult result(Grade grade, Submission submission, boolean passed, int scenesPassed,
+            String diagnosis, String reason, List<String> quoted) {
+        StringBuilder text = new StringBuilder(oneLine(reason));
+        quoted.forEach(line -> text.append('\n').append(line));
         return new StudentResult(submission, passed, scenesPassed, grade.scenes.isEmpty() ? 0 : grading.scenes().size(),
-                diagnosis, oneLine(reason), List.copyOf(grade.scenes),
+                diagnosis, text.toString(), List.copyOf(grade.scenes),
                 Duration.ofNanos(System.nanoTime() - grade.start));
     }
 
@@ -472,7 +485,7 @@ public final class SubmissionGrader {
         String heatMap = stem + "-diff.png", yours = stem + "-yours.png", reference = stem + "-expected.png";
         try {
             Files.createDirectories(images);
-            PngOutput.write(difference.heatMapWithLegend(), images.resolve(heatMap));
+            PngOutput.write(difference.signedHeatMapWithLegend(), images.resolve(heatMap));
             PngOutput.write(image, images.resolve(yours));
             PngOutput.write(expected, images.resolve(reference));
             out.println("  heat map: " + images.resolve(heatMap) + " (beside it: " + yours + " and " + reference + ")");

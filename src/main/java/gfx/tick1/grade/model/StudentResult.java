@@ -15,7 +15,8 @@ import java.util.stream.Stream;
  * @param diagnosis    a short label that groups failures across the cohort, for the chart of
  *                     common mistakes: "passed", "missing file", "does not compile", "time limit",
  *                     or the name of the diagnose catalogue's closest entry
- * @param reason       the one-paragraph feedback for the gradebook's comment cell
+ * @param reason       the one-paragraph feedback for the gradebook's comment cell; a compile error's ends with
+ *                     javac's source line and the caret under it, which the feedback pages keep as they are
  * @param scenes       each grading scene's result, in grading order (empty when nothing ran)
  * @param time         the wall time the submission took to grade
  */

@@ -32,11 +32,11 @@ final class CellText {
      * A feedback comment for Moodle, which stores that column as HTML: plain text with {@code &},
      * {@code <} and {@code >} written as references, so that what a zip path or an exception held
      * shows as text; a line break becomes a space (HTML shows one as a space anyway), and the
-     * terminal's padding of figures ({@code ( 67.838%}) goes. Then bounded and escaped as
-     * {@link #cell}.
+     * terminal's padding of figures ({@code ( 67.838%}) goes, as do the source line and caret a compile error quotes
+     * (whose columns a comment cannot keep). Then bounded and escaped as {@link #cell}.
      */
     static String comment(String reason) {
-        String prose = prose(reason);
+        String prose = ReasonText.of(reason).prose();
         StringBuilder out = new StringBuilder(prose.length() + 16);
         for (int i = 0; i < prose.length(); i++) {
             char c = prose.charAt(i);

@@ -73,6 +73,7 @@ final class CohortPage {
 
     private static void row(StringBuilder out, StudentResult result, String grade) {
         Submission student = result.submission();
+        ReasonText why = ReasonText.of(result.reason());
         String feedback = Html.relativeUrl(ReportFiles.FEEDBACK, student.folder(), FeedbackPage.HTML);
         out.append("<tr class=\"").append(result.passed() ? "pass" : "fail").append("\">")
                 .append("<td><a href=\"").append(feedback).append("\"><bdi>").append(Html.escape(student.fullName()))
@@ -84,8 +85,9 @@ final class CohortPage {
                 .append("<td data-sort=\"").append(Html.escape(grade)).append("\">").append(Html.escape(grade))
                 .append("</td>")
                 .append("<td>").append(Html.escape(DiagnosisChart.label(result))).append("</td>")
-                .append("<td class=\"reason\" title=\"").append(Html.escape(CellText.prose(result.reason())))
-                .append("\">").append(Html.escape(CellText.shortReason(result.reason()))).append("</td>")
+                .append("<td class=\"reason\" title=\"").append(Html.escape(why.prose()))
+                .append("\">").append(Html.escape(CellText.shortReason(why.prose()))).append(why.quotedHtml())
+                .append("</td>")
                 .append("<td class=\"time\" data-sort=\"").append(result.time().toMillis()).append("\">")
                 .append(duration(result.time())).append("</td>");
         List<String> titles = FeedbackPage.sceneTitles(result.scenes());

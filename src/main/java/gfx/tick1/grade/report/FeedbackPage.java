@@ -81,15 +81,16 @@ final class FeedbackPage {
     }
 
     /**
-     * The reason, as a page of feedback gives it: the row's reason, whose pointers to "the
-     * feedback" (the shortened list of facts, an unsure diagnosis) point, here, to the scenes below.
+     * The reason's prose, as a page of feedback gives it: the row's pointers to "the feedback" (the
+     * shortened list of facts, an unsure diagnosis) point, here, to the scenes below.
      */
-    static String reason(StudentResult result) {
-        return CellText.prose(result.reason()).replace(SEE_THE_FEEDBACK, " (see the scenes below)");
+    static String seeBelow(String prose) {
+        return prose.replace(SEE_THE_FEEDBACK, " (see the scenes below)");
     }
 
     static String html(StudentResult result) {
         Submission student = result.submission();
+        ReasonText why = ReasonText.of(result.reason());
         String who = Html.escape(student.fullName());
         StringBuilder out = new StringBuilder(8192);
         out.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
@@ -101,7 +102,7 @@ final class FeedbackPage {
                 .append("<p class=\"verdict ").append(result.passed() ? "pass" : "fail").append("\">")
                 .append(Html.escape(capitalised(verdict(result)))).append("</p>\n")
                 .append("<h2>Why</h2>\n<p class=\"reason\">")
-                .append(Html.escape(reason(result))).append("</p>\n");
+                .append(Html.escape(seeBelow(why.prose()))).append("</p>\n").append(why.quotedHtml());
         List<String> rereading = rereading(result);
         if (!rereading.isEmpty()) {
             out.append("<h2>What to reread</h2>\n<ul class=\"reread\">\n");
@@ -151,10 +152,12 @@ final class FeedbackPage {
 
     static String text(StudentResult result) {
         Submission student = result.submission();
+        ReasonText why = ReasonText.of(result.reason());
         StringBuilder out = new StringBuilder(4096);
         out.append("Tick 1 feedback for ").append(Html.plain(student.fullName())).append(" (participant ")
                 .append(Html.plain(student.id())).append(")\n\nResult: ").append(verdict(result))
-                .append("\n\nWhy\n").append(indented(Html.plain(reason(result))));
+                .append("\n\nWhy\n").append(indented(Html.plain(seeBelow(why.prose()))));
+        why.quoted().forEach(line -> out.append("  ").append(Html.plain(line)).append('\n'));
         List<String> rereading = rereading(result);
         if (!rereading.isEmpty()) {
             out.append("\nWhat to reread\n");

@@ -18,7 +18,7 @@ import java.util.zip.ZipOutputStream;
  */
 final class FeedbackZip {
 
-    static final String NAME = "feedback.zip";
+    static final String NAME = ReportFiles.FEEDBACK_ZIP;
 
     private FeedbackZip() {
     }

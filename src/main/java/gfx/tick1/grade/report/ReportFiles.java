@@ -27,6 +27,9 @@ public final class ReportFiles {
     /** The gradebook in the report folder, in the form of Moodle's grading worksheet. */
     public static final String GRADES = "grades.csv";
 
+    /** Every student's feedback files, in the zip Moodle's "Upload multiple feedback files in a zip" reads. */
+    public static final String FEEDBACK_ZIP = "feedback.zip";
+
     /** Writes a file's bytes onto a stream; the stream is closed by the caller. */
     @FunctionalInterface
     public interface Content {
