@@ -205,8 +205,8 @@ public final class GradeCommand implements Callable<Integer> {
                 sandbox = Sandbox.confined();
             } catch (Sandbox.Unavailable e) {
                 throw new CommandFailure(EXIT_USAGE, e.getMessage() + ": install the " + Sandbox.PACKAGE
-                        + " package (apt-get install " + Sandbox.PACKAGE + "), or give --no-sandbox to grade "
-                        + "without a sandbox");
+                        + " package (apt-get install " + Sandbox.PACKAGE + ")" + (vpl() ? "" : ", or give "
+                        + "--no-sandbox to grade without a sandbox"));
             }
             if (sandbox.totalsNotEnforced() != null) {
                 err.println("tick1 grade: warning: " + sandbox.totalsNotEnforced());
