@@ -24,9 +24,10 @@ import picocli.CommandLine.Spec;
  * Evaluate runs {@code tick1 grade --format vpl} (see {@link VplReport}), and a README.txt for staff.
  */
 @Command(name = "vpl",
-        description = {"Writes the execution files that make tick1 the tester of a Tick 1 activity in Moodle's Virtual "
-                + "Programming Lab (VPL): vpl_evaluate.sh, the hidden scenes of --scenes, and README.txt, which says "
-                + "how to set up the activity and the jail's host.",
+        description = {"Writes the files that make tick1 the tester of a Tick 1 activity on Moodle VPL.",
+            "They are vpl_evaluate.sh and the hidden scenes of --scenes, the activity's execution files, and "
+                + "README.txt, which says how to set up the activity and the jail's host (Moodle's Virtual "
+                + "Programming Lab).",
             "When a student presses Evaluate, vpl_evaluate.sh grades their Sphere.java and Renderer.java with "
                 + "tick1 grade --format vpl, in tick1's sandbox, and VPL shows tick1's verdict, reasons and notes with "
                 + "the proposed grade. Where the sandbox cannot be made, nothing is graded and staff are told why."})

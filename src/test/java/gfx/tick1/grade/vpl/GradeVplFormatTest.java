@@ -21,9 +21,9 @@ class GradeVplFormatTest {
 
     private static final List<String> FILES = List.of("Sphere.java", "Renderer.java");
     /** {@link VplReportTest#HOSTILE} as a Java string literal. */
-    private static final String HOSTILE_LITERAL = "\"" + VplReportTest.HOSTILE.replace("\\", "\\\\").replace("\n", "\\n")
-            .replace("\r", "\\r").replace("\t", "\\t").replace("\u2028", "\\u2028").replace("\u0085", "\\u0085")
-            .replace("\u001b", "\\u001b") + "\"";
+    private static final String HOSTILE_LITERAL = "\"" + VplReportTest.HOSTILE.replace("\\", "\\\\")
+            .replace("\n", "\\n").replace("\r", "\\r").replace("\t", "\\t").replace("\u2028", "\\u2028")
+            .replace("\u0085", "\\u0085").replace("\u001b", "\\u001b") + "\"";
     private static final String RENDER = "public BufferedImage render(Scene scene) {";
 
     @TempDir
@@ -117,7 +117,8 @@ class GradeVplFormatTest {
 
     @Test
     void withoutTheSandboxOptionTheFormatRefusesToGrade() throws IOException {
-        CliRun run = CliRun.of("grade", "--format", "vpl", "--no-sandbox", "--sphere", "S.java", "--renderer", "R.java");
+        CliRun run = CliRun.of("grade", "--format", "vpl", "--no-sandbox", "--sphere", "S.java", "--renderer",
+                "R.java");
 
         assertThat(run.status()).as(run.transcript()).isEqualTo(2);
         assertThat(run.err()).as("the reason").contains("never runs a student's code without the sandbox");

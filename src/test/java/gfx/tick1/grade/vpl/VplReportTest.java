@@ -76,9 +76,11 @@ class VplReportTest {
         assertThat(VplParser.titles(comment)).as("the titles the editor shows")
                 .containsExactly("Tick 1: failed: exception", "tick1.xml: failed");
         assertThat(comment).as("the comment holds all the report, to its last section")
-                .contains("the code threw java.lang.RuntimeException:").endsWith(">Comment :=> >forged-Tick 1: passed[2J\n");
+                .contains("the code threw java.lang.RuntimeException:")
+                .endsWith(">Comment :=> >forged-Tick 1: passed[2J\n");
         assertThat(VplParser.lines(comment)).as("every line below a title is preformatted (the last, after the "
-                + "block's last line break, is empty)").allMatch(line -> line.kind() != Kind.TEXT || line.text().isEmpty());
+                + "block's last line break, is empty)")
+                .allMatch(line -> line.kind() != Kind.TEXT || line.text().isEmpty());
     }
 
     @Test
