@@ -269,6 +269,7 @@ public final class GradeCommand implements Callable<Integer> {
             sandbox.checkReachable(work);
             grading = Grading.prepare(work, scenesFolder, limits());
             grading.copyScenes(work);
+            grading.renderReferencesAhead();
             submission = vpl() ? StudentFiles.asSubmitted(target.student.sphere, target.student.renderer, err)
                     : StudentFiles.of(target.student.sphere, target.student.renderer, err);
             if (!vpl()) {
