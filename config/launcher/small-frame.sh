@@ -23,7 +23,7 @@ for tick1_arg in "$@" ; do
         --width=*) tick1_width=${tick1_arg#*=} ;;
         --height=*) tick1_height=${tick1_arg#*=} ;;
         --samples=*) tick1_samples=${tick1_arg#*=} ;;
-        compare|diagnose|diff|grade|starter|bench|preview|help) tick1_small=no ;;
+        compare|diagnose|diff|grade|starter|vpl|bench|preview|help) tick1_small=no ;;
     esac
 done
 if [ $tick1_small = yes ] && tick1_is_count "$tick1_width" && tick1_is_count "$tick1_height" &&

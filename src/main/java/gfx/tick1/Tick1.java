@@ -8,6 +8,7 @@ import gfx.tick1.compare.CompareCommand;
 import gfx.tick1.diagnose.DiagnoseCommand;
 import gfx.tick1.diff.DiffCommand;
 import gfx.tick1.grade.GradeCommand;
+import gfx.tick1.grade.vpl.VplCommand;
 import gfx.tick1.preview.PreviewCommand;
 import gfx.tick1.scene.Misspelling;
 import gfx.tick1.starter.StarterCommand;
@@ -64,6 +65,7 @@ public final class Tick1 {
     private static final List<Subcommand> SUBCOMMANDS = List.of(new Subcommand("compare", CompareCommand::new),
             new Subcommand("diagnose", DiagnoseCommand::new), new Subcommand("diff", DiffCommand::new),
             new Subcommand("grade", GradeCommand::new), new Subcommand("starter", StarterCommand::new),
+            new Subcommand("vpl", VplCommand::new),
             new Subcommand("bench", BenchCommand::new), new Subcommand("preview", PreviewCommand::new),
             new Subcommand("help", HelpCommand::new));
 

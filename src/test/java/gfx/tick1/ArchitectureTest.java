@@ -94,6 +94,7 @@ class ArchitectureTest {
         layeredArchitecture().consideringOnlyDependenciesInLayers()
                 .layer("Grade commands").definedBy("gfx.tick1.grade")
                 .layer("Cohort").definedBy("gfx.tick1.grade.cohort..")
+                .layer("VPL").definedBy("gfx.tick1.grade.vpl..")
                 .layer("Report").definedBy("gfx.tick1.grade.report..")
                 .layer("Grading").definedBy("gfx.tick1.grade.grading..")
                 .layer("Intake").definedBy("gfx.tick1.grade.intake..")
@@ -103,10 +104,11 @@ class ArchitectureTest {
 
                 .whereLayer("Grade commands").mayNotBeAccessedByAnyLayer()
                 .whereLayer("Cohort").mayOnlyBeAccessedByLayers("Grade commands")
+                .whereLayer("VPL").mayOnlyBeAccessedByLayers("Grade commands")
                 .whereLayer("Report").mayOnlyBeAccessedByLayers("Cohort", "Grade commands")
-                .whereLayer("Grading").mayOnlyBeAccessedByLayers("Report", "Cohort", "Grade commands")
+                .whereLayer("Grading").mayOnlyBeAccessedByLayers("Report", "Cohort", "VPL", "Grade commands")
                 .whereLayer("Intake").mayOnlyBeAccessedByLayers("Cohort", "Grade commands")
-                .whereLayer("Sandbox").mayOnlyBeAccessedByLayers("Grading", "Cohort", "Grade commands")
+                .whereLayer("Sandbox").mayOnlyBeAccessedByLayers("Grading", "Cohort", "VPL", "Grade commands")
                 .whereLayer("Harness").mayOnlyBeAccessedByLayers("Sandbox", "Grading", "Cohort", "Grade commands")
                 .check(program);
     }

@@ -9,11 +9,14 @@ import gfx.tick1.grade.model.Submission;
 import gfx.tick1.grade.sandbox.Sandbox;
 import gfx.tick1.grade.sandbox.StudentProcess;
 import gfx.tick1.grade.sandbox.WorkFolder;
+import gfx.tick1.grade.vpl.GradeRange;
+import gfx.tick1.grade.vpl.VplReport;
 import gfx.tick1.io.IoErrors;
 import gfx.tick1.io.OnExit;
 import gfx.tick1.scene.SceneException;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -156,6 +159,21 @@ public final class GradeCommand implements Callable<Integer> {
                     + "(default: ${DEFAULT-VALUE}). The two differ only on hard scenes, such as giant spheres.")
     private ReferenceChoice referenceChoice;
 
+    /** What one student's grade prints: tick1's own report, or VPL's evaluation format. */
+    enum Format { text, vpl }
+
+    @Option(names = "--format", paramLabel = "FORMAT", defaultValue = "text",
+            description = "With --sphere and --renderer: text (default), or vpl: the report in the format of Moodle's "
+                    + "Virtual Programming Lab's evaluation, with the proposed grade as its last line, for the "
+                    + "activity's vpl_execution (see tick1 vpl). Where the sandbox cannot be made it proposes no "
+                    + "grade. It writes no images.")
+    private Format format;
+
+    @Option(names = "--grade-range", paramLabel = "MIN:MAX", defaultValue = "0:1",
+            description = "With --format vpl: the grade of a fail and of a pass, the activity's VPL_GRADEMIN and "
+                    + "VPL_GRADEMAX (default: ${DEFAULT-VALUE}).")
+    private String gradeRange;
+
     @Option(names = "--no-sandbox",
             description = "Run the student's code without the sandbox, with your permissions, your files and the "
                     + "network: only for code you trust, or where bubblewrap cannot run.")
@@ -169,6 +187,14 @@ public final class GradeCommand implements Callable<Integer> {
         if (usage != null) {
             throw new ParameterException(spec.commandLine(), usage);
         }
+        if (format == Format.vpl) {
+            return new VplGrade(this, out, err).call();
+        }
+        return call(out, err);
+    }
+
+    /** The grade, with the checks of the options done: in tick1's own format, or with --format vpl's sandbox. */
+    Integer call(PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
         Sandbox sandbox;
         if (noSandbox) {
             err.println("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions; it can "
@@ -179,8 +205,8 @@ public final class GradeCommand implements Callable<Integer> {
                 sandbox = Sandbox.confined();
             } catch (Sandbox.Unavailable e) {
                 throw new CommandFailure(EXIT_USAGE, e.getMessage() + ": install the " + Sandbox.PACKAGE
-                        + " package (apt-get install " + Sandbox.PACKAGE + "), or give --no-sandbox to grade "
-                        + "without a sandbox");
+                        + " package (apt-get install " + Sandbox.PACKAGE + ")" + (vpl() ? "" : ", or give "
+                        + "--no-sandbox to grade without a sandbox"));
             }
             if (sandbox.totalsNotEnforced() != null) {
                 err.println("tick1 grade: warning: " + sandbox.totalsNotEnforced());
@@ -232,7 +258,7 @@ public final class GradeCommand implements Callable<Integer> {
         if (width < 1 || width > 4096 || height < 1 || height > 4096) {
             return "--width and --height must be from 1 to 4096, not " + width + " x " + height;
         }
-        return null;
+        return format == Format.vpl ? VplGrade.checkOptions(this) : null;
     }
 
     private int grade(Path work, Sandbox sandbox, StudentProcess process, PrintWriter out, PrintWriter err)
@@ -243,20 +269,50 @@ public final class GradeCommand implements Callable<Integer> {
             sandbox.checkReachable(work);
             grading = Grading.prepare(work, scenesFolder, limits());
             grading.copyScenes(work);
-            submission = StudentFiles.of(target.student.sphere, target.student.renderer, err);
-            WorkFolder.removeEarlierReport(reportFolder);
+            grading.renderReferencesAhead();
+            submission = vpl() ? StudentFiles.asSubmitted(target.student.sphere, target.student.renderer, err)
+                    : StudentFiles.of(target.student.sphere, target.student.renderer, err);
+            if (!vpl()) {
+                WorkFolder.removeEarlierReport(reportFolder);
+            }
         } catch (SceneException e) {
             throw new CommandFailure(EXIT_USAGE, e.getMessage());
         } catch (IOException e) {
             throw new CommandFailure(EXIT_USAGE, IoErrors.describe(e));
         }
         StudentProcess.writeHarness(Files.createDirectory(work.resolve("harness")));
-        SubmissionGrader.Graded graded = new SubmissionGrader(grading, sandbox, process, work)
-                .grade(submission, work, reportFolder, out, err);
+        SubmissionGrader.Graded graded = new SubmissionGrader(grading, sandbox, process, work).grade(submission,
+                work, vpl() ? work.resolve("images") : reportFolder, vpl() ? new PrintWriter(Writer.nullWriter()) : out,
+                err);
+        if (vpl()) {
+            out.print(VplReport.of(graded.result(), graded.compileErrors(), gradeRange()));
+            out.flush();
+        }
         if (graded.result().passed()) {
             return EXIT_PASS;
         }
         return graded.imagesUnwritable() ? EXIT_CANNOT_WRITE : EXIT_FAIL;
+    }
+
+    boolean vpl() {
+        return format == Format.vpl;
+    }
+
+    boolean noSandbox() {
+        return noSandbox;
+    }
+
+    boolean oneStudent() {
+        return target != null && target.student != null;
+    }
+
+    String gradeRangeText() {
+        return gradeRange;
+    }
+
+    /** The --grade-range, checked by {@link #checkOptions()} first. */
+    GradeRange gradeRange() {
+        return GradeRange.parse(gradeRange);
     }
 
     Path scenesFolder() {

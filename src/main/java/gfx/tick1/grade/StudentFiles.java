@@ -37,6 +37,21 @@ final class StudentFiles {
         return new Submission("", "", "", sphereFile, rendererFile, null);
     }
 
+    /**
+     * The two files as they are, for {@code --format vpl}: a file that is not UTF-8 is the student's to
+     * mend, so it is graded (and fails, saying so), not refused; it is then taken in the order given.
+     *
+     * @throws IOException one line naming the file: not there, or a folder
+     */
+    static Submission asSubmitted(Path sphere, Path renderer, PrintWriter err) throws IOException {
+        try {
+            return of(sphere, renderer, err);
+        } catch (StudentFile.NotUtf8Exception e) {
+            return new Submission("", "", "", new Submission.SourceFile(sphere.toString(), Files.readAllBytes(sphere)),
+                    new Submission.SourceFile(renderer.toString(), Files.readAllBytes(renderer)), null);
+        }
+    }
+
     private static Submission.SourceFile read(Path file, String option, String wanted) throws IOException {
         if (Files.isDirectory(file)) {
             throw new IOException(file + ": a folder, not a file: " + option + " wants the student's " + wanted);

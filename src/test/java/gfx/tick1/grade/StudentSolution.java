@@ -17,7 +17,7 @@ import java.nio.file.Path;
  */
 public record StudentSolution(String sphere, String renderer) {
 
-    static StudentSolution correct() {
+    public static StudentSolution correct() {
         return new StudentSolution(resource("Sphere.java"), resource("Renderer.java"));
     }
 
@@ -30,16 +30,16 @@ public record StudentSolution(String sphere, String renderer) {
         return new StudentSolution(sphere, StarterKit.source("Renderer"));
     }
 
-    StudentSolution editSphere(String text, String replacement) {
+    public StudentSolution editSphere(String text, String replacement) {
         return new StudentSolution(replaceOnce(sphere, text, replacement), renderer);
     }
 
-    StudentSolution editRenderer(String text, String replacement) {
+    public StudentSolution editRenderer(String text, String replacement) {
         return new StudentSolution(sphere, replaceOnce(renderer, text, replacement));
     }
 
     /** The 1-based line of the correct solution's Sphere.java that holds {@code text}. */
-    static int sphereLineOf(String text) {
+    public static int sphereLineOf(String text) {
         String[] lines = resource("Sphere.java").split("\n");
         for (int i = 0; i < lines.length; i++) {
             if (lines[i].contains(text)) {

@@ -16,6 +16,7 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.stream.Stream;
 
@@ -132,12 +133,44 @@ public final class Grading {
      * The reference image of {@code scene} with {@code intersection}: rendered by the first thread
      * that asks, and waited for by any other that asks meanwhile.
      */
+    /**
+     * Starts rendering every reference image the grade compares with, on a thread of its own, so that they
+     * are ready when the student's code has run: one student's grade leaves a core idle while the code
+     * compiles and runs in its own process. A reference that fails here fails again, as ever, when compared.
+     */
+    public void renderReferencesAhead() {
+        Thread ahead = new Thread(() -> {
+            for (GradingScene scene : scenes) {
+                for (Intersection intersection : limits.referenceChoice().intersections()) {
+                    try {
+                        reference(scene, intersection);
+                    } catch (RuntimeException | Error e) {
+                        return;
+                    }
+                }
+            }
+        }, "tick1-references-ahead");
+        ahead.setDaemon(true);
+        ahead.start();
+    }
+
     BufferedImage reference(GradingScene scene, Intersection intersection) {
         String key = scenes.indexOf(scene) + "/" + intersection;
         CompletableFuture<BufferedImage> mine = new CompletableFuture<>();
         CompletableFuture<BufferedImage> existing = references.putIfAbsent(key, mine);
         if (existing != null) {
-            return existing.join();
+            try {
+                return existing.join();
+            } catch (CompletionException e) {
+                // Rendered ahead and failed there: the failure as the renderer threw it.
+                if (e.getCause() instanceof RuntimeException cause) {
+                    throw cause;
+                }
+                if (e.getCause() instanceof Error cause) {
+                    throw cause;
+                }
+                throw e;
+            }
         }
         try {
             mine.complete(new ReferenceRenderer(limits.width(), limits.height(), intersection).render(scene.scene()));

@@ -41,8 +41,15 @@ public final class SubmissionGrader {
     public record Phases(long compileNanos, long renderNanos, long compareNanos) {
     }
 
-    /** One submission's grade: the result, whether its images could not be written, and the time by phase. */
-    public record Graded(StudentResult result, boolean imagesUnwritable, Phases phases) {
+    /**
+     * One submission's grade: the result, whether its images could not be written, the time by phase, and
+     * the compiler's errors when the code did not compile (else empty).
+     */
+    public record Graded(StudentResult result, boolean imagesUnwritable, Phases phases, List<String> compileErrors) {
+
+        Graded(StudentResult result, boolean imagesUnwritable, Phases phases) {
+            this(result, imagesUnwritable, phases, List.of());
+        }
     }
 
     /** The cohort report's label for a pass, and for each kind of failure that is not a wrong image. */
@@ -139,7 +146,7 @@ public final class SubmissionGrader {
                     : error.size();
             return new Graded(result(grade, submission, false, 0, DOES_NOT_COMPILE,
                     "FAILED: " + heading + ": " + String.join("\n", error.subList(0, quoted)),
-                    error.subList(quoted, error.size())), false, phases(grade));
+                    error.subList(quoted, error.size())), false, phases(grade), List.copyOf(compiled.errors()));
         }
         out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
                 + " with the starter code.");
