@@ -7,6 +7,7 @@ import gfx.tick1.grade.cohort.ResultStore;
 import gfx.tick1.grade.grading.Grading;
 import gfx.tick1.grade.grading.SubmissionGrader;
 import gfx.tick1.grade.intake.Submissions;
+import gfx.tick1.grade.lookalike.Lookalikes;
 import gfx.tick1.grade.model.CohortInputException;
 import gfx.tick1.grade.model.StudentResult;
 import gfx.tick1.grade.model.Submission;
@@ -145,7 +146,7 @@ final class CohortCommand {
     }
 
     /** Writes grades.csv, the feedback folders and index.html from every result, and says what was done. */
-    private int report(CohortGrade.Done done) {
+    private int report(CohortGrade.Done done) throws InterruptedException {
         Path report = options.reportFolder();
         List<StudentResult> results = CohortOutputs.forReport(done.results());
         try {
@@ -153,7 +154,8 @@ final class CohortCommand {
             // The gradebook first: the cohort's page links to it when it is there.
             writeGrades(results, report);
             CohortReport.write(report, results,
-                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())));
+                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())),
+                    options.lookalikes() ? Lookalikes.find(results) : null);
         } catch (CohortInputException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());
         } catch (IOException e) {
