@@ -96,8 +96,8 @@ public final class GradeCommand implements Callable<Integer> {
         @Option(names = "--submissions", paramLabel = "PATH", required = true,
                 description = "Grade a whole cohort instead: PATH is Moodle's \"Download all submissions\" zip, or "
                         + "the folder it unpacks to, with one folder per student. Writes grades.csv (Moodle's "
-                        + "grading worksheet), index.html and a feedback folder per student into the --report "
-                        + "folder.")
+                        + "grading worksheet), index.html, lookalikes.csv and a feedback folder per student into "
+                        + "the --report folder.")
         private Path submissions;
 
         @Option(names = "--worksheet", paramLabel = "FILE.csv",

@@ -11,7 +11,7 @@ import org.junit.jupiter.params.provider.Arguments;
  * Renderer.java: the submissions that GradeCohortTest's cohort holds one of each, and that the
  * grade tests of one student take their slips from.
  */
-public final class Mistakes {
+final class Mistakes {
 
     static final String DIFFUSE = "k_d * Math.max(0, NdotL)";
     static final String NEAR_ROOT = "double s = s1 > 0 ? s1 : s2;";
@@ -34,7 +34,7 @@ public final class Mistakes {
     }
 
     /** The mistakes that tick1.xml and the hidden scene show: each entry and a student's solution that makes it. */
-    public static Stream<Arguments> onTheCoursesScenes() {
+    static Stream<Arguments> onTheCoursesScenes() {
         StudentSolution correct = StudentSolution.correct();
         return Stream.of(
                 Arguments.of(Variant.BACKGROUND_ONLY, StudentSolution.untouchedStarterKit()),

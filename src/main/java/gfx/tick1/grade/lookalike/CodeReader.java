@@ -87,6 +87,9 @@ final class CodeReader {
                 notes.add(file + " does not parse");
             } catch (StackOverflowError e) {
                 notes.add(file + " is nested too deeply to parse");
+            } catch (RuntimeException e) {
+                // A hostile file must cost its own comparison, never the cohort's report.
+                notes.add(file + " could not be read for comparing");
             }
         }
     }
