@@ -37,13 +37,16 @@ final class LookalikePage {
     static String html(Lookalike pair) {
         String title = "Look alike: " + LookalikesCsv.identifier(pair.a()) + " and "
                 + (pair.b() == null ? Lookalikes.REFERENCE : LookalikesCsv.identifier(pair.b()));
+        // A pair listed for its tokens says its share in its reason already.
+        boolean byTokens = pair.reason() == Lookalike.Reason.TOKENS || pair.reason() == Lookalike.Reason.REFERENCE;
         StringBuilder out = new StringBuilder(16_384);
         out.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
                 .append("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n")
                 .append("<title>").append(Html.escape(title)).append("</title>\n<style>\n").append(STYLE)
                 .append("</style>\n</head>\n<body>\n<h1>").append(Html.escape(title)).append("</h1>\n")
-                .append("<p class=\"summary\">").append(Html.escape(pair.why())).append("; ")
-                .append(Lookalikes.percent(pair.similarity())).append(" of their tokens in shared runs.</p>\n")
+                .append("<p class=\"summary\">").append(Html.escape(pair.why()))
+                .append(byTokens ? "" : "; " + Lookalikes.percent(pair.similarity()) + " of the tokens in shared runs")
+                .append(".</p>\n")
                 .append("<p class=\"hint\">A look-alike is a reason to talk with the students, not a verdict: correct "
                         + "code for two short methods converges. Shown: each side's intersectionWith, illuminate and "
                         + "any member it added, as compared: one statement a line, comments dropped, redundant "
