@@ -214,8 +214,8 @@ public final class DiffCommand implements Callable<Integer> {
         }
     }
 
-    /** Our Sphere.java or Renderer.java, parsed. */
-    static JavaMembers ours(String className) {
+    /** Our Sphere.java or Renderer.java, parsed: tick1's reference solution of the tick. */
+    public static JavaMembers ours(String className) {
         String name = className + ".java";
         try {
             return JavaMembers.parse(name, ourSource(className));
@@ -225,7 +225,7 @@ public final class DiffCommand implements Callable<Integer> {
     }
 
     /** The course's starter version of Sphere.java or Renderer.java, as the kit hands it out. */
-    static JavaMembers starter(String className, JavaMembers ours) {
+    public static JavaMembers starter(String className, JavaMembers ours) {
         try {
             return JavaMembers.parse(className + ".java", StarterKit.source(className), name -> ours);
         } catch (JavaMembers.ParseException e) {

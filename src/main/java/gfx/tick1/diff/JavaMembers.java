@@ -24,6 +24,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Function;
+import java.util.function.Predicate;
 import java.util.stream.Collectors;
 
 /**
@@ -78,9 +79,23 @@ public record JavaMembers(String className, Map<String, Member> members) {
         return parse(name, source, className -> like);
     }
 
+    /**
+     * As {@link #parse(String, String, JavaMembers)}, keeping only the members whose signature
+     * {@code wanted} accepts (the others are neither ordered nor printed, which is most of the cost).
+     */
+    public static JavaMembers parse(String name, String source, JavaMembers like, Predicate<String> wanted)
+            throws ParseException {
+        return parse(name, source, className -> like, wanted);
+    }
+
     /** As {@link #parse(String, String, JavaMembers)}, with the members to be like found by the class's name. */
     static JavaMembers parse(String name, String source, Function<String, JavaMembers> likeOf)
             throws ParseException {
+        return parse(name, source, likeOf, signature -> true);
+    }
+
+    private static JavaMembers parse(String name, String source, Function<String, JavaMembers> likeOf,
+            Predicate<String> wanted) throws ParseException {
         JavaParser parser = new JavaParser(new ParserConfiguration()
                 .setLanguageLevel(ParserConfiguration.LanguageLevel.JAVA_17));
         ParseResult<CompilationUnit> result = parser.parse(source);
@@ -101,9 +116,12 @@ public record JavaMembers(String className, Map<String, Member> members) {
         JavaMembers like = likeOf.apply(type.getNameAsString());
         Map<String, Member> members = new LinkedHashMap<>();
         for (BodyDeclaration<?> member : type.getMembers()) {
+            String signature = signature(member);
+            if (!wanted.test(signature)) {
+                continue;
+            }
             boolean todo = member.getAllContainedComments().stream()
                     .anyMatch(comment -> comment.getContent().contains("TODO"));
-            String signature = signature(member);
             Member ours = like == null ? null : like.members().get(signature);
             List<String> preferred = ours == null ? List.of() : ours.key().lines().map(String::strip).toList();
             meaning.order(member, preferred);

@@ -7,6 +7,7 @@ import gfx.tick1.grade.cohort.ResultStore;
 import gfx.tick1.grade.grading.Grading;
 import gfx.tick1.grade.grading.SubmissionGrader;
 import gfx.tick1.grade.intake.Submissions;
+import gfx.tick1.grade.lookalike.Lookalikes;
 import gfx.tick1.grade.model.CohortInputException;
 import gfx.tick1.grade.model.StudentResult;
 import gfx.tick1.grade.model.Submission;
@@ -155,7 +156,7 @@ final class CohortCommand {
     }
 
     /** Writes grades.csv, the feedback folders and index.html from every result, and says what was done. */
-    private int report(CohortGrade.Done done) {
+    private int report(CohortGrade.Done done) throws InterruptedException {
         Path report = options.reportFolder();
         List<StudentResult> results = CohortOutputs.forReport(done.results());
         // A student whose feedback cannot be written is theirs alone: once, with the first reason.
@@ -167,7 +168,8 @@ final class CohortCommand {
             writeGrades(results, done.results().stream().map(StudentResult::submission)
                     .map(Submissions::namedByMoodle).toList(), report);
             CohortReport.write(report, results,
-                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())))
+                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())),
+                    options.lookalikes() ? Lookalikes.find(results) : null)
                     .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
         } catch (CohortInputException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());

@@ -99,8 +99,8 @@ public final class GradeCommand implements Callable<Integer> {
         @Option(names = "--submissions", paramLabel = "PATH", required = true,
                 description = "Grade a whole cohort instead: PATH is Moodle's \"Download all submissions\" zip, or "
                         + "the folder it unpacks to, with one folder per student. Writes grades.csv (Moodle's "
-                        + "grading worksheet), index.html and a feedback folder per student into the --report "
-                        + "folder.")
+                        + "grading worksheet), index.html, lookalikes.csv and a feedback folder per student into "
+                        + "the --report folder.")
         private Path submissions;
 
         @Option(names = "--worksheet", paramLabel = "FILE.csv",
@@ -123,6 +123,12 @@ public final class GradeCommand implements Callable<Integer> {
         @Option(names = "--per-scene",
                 description = "With --submissions: the grade is the share of scenes passed times --max-grade.")
         private boolean perScene;
+
+        @Option(names = "--no-lookalikes", negatable = false,
+                description = "With --submissions: skip the look-alikes (lookalikes.csv and the report's \"Look "
+                        + "alike\" section: pairs of submissions whose methods share most of their tokens, or the "
+                        + "same rare wrong answers, and submissions like tick1's reference).")
+        private boolean noLookalikes;
     }
 
     @Option(names = "--scenes", paramLabel = "DIR",
@@ -343,6 +349,11 @@ public final class GradeCommand implements Callable<Integer> {
 
     boolean perScene() {
         return target.cohort.perScene;
+    }
+
+    /** Whether to look for look-alikes in the cohort (on unless --no-lookalikes). */
+    boolean lookalikes() {
+        return !target.cohort.noLookalikes;
     }
 
     /** The limits and sizes of this grade. */

@@ -38,6 +38,11 @@ final class CohortPage {
      * the gradebook), by their names.
      */
     static String html(List<StudentResult> results, List<String> grades, List<String> beside) {
+        return html(results, grades, beside, "");
+    }
+
+    /** As {@link #html(List, List, List)}, with {@code sections} (HTML: the year at a glance, ...) after the chart. */
+    static String html(List<StudentResult> results, List<String> grades, List<String> beside, String sections) {
         long passed = results.stream().filter(StudentResult::passed).count();
         StringBuilder out = new StringBuilder(4096 + 1024 * results.size());
         out.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
@@ -56,6 +61,7 @@ final class CohortPage {
         }
         out.append("<h2>Failures by diagnosis</h2>\n")
                 .append(DiagnosisChart.svg(results))
+                .append(sections)
                 .append("<h2>Students</h2>\n<p class=\"hint\">Click a column's heading to sort by it; click again "
                         + "to reverse. A name opens the student's feedback.</p>\n")
                 .append("<table id=\"students\">\n<thead><tr>");

@@ -1,5 +1,6 @@
 package gfx.tick1.grade.report;
 
+import gfx.tick1.grade.lookalike.Lookalike;
 import gfx.tick1.grade.model.StudentResult.SceneResult;
 import gfx.tick1.grade.model.StudentResult;
 import gfx.tick1.io.IoErrors;
@@ -50,6 +51,15 @@ public final class CohortReport {
      */
     public static List<Unwritten> write(Path reportFolder, List<StudentResult> given,
             Function<StudentResult, String> grade) throws IOException {
+        return write(reportFolder, given, grade, null);
+    }
+
+    /**
+     * As {@link #write(Path, List, Function)}, with the cohort's look-alikes ({@code lookalikes.csv},
+     * their pages and the index's section), or without them when {@code lookalikes} is null.
+     */
+    public static List<Unwritten> write(Path reportFolder, List<StudentResult> given,
+            Function<StudentResult, String> grade, List<Lookalike> lookalikes) throws IOException {
         checkNames(given);
         List<String> grades = given.stream().map(grade).toList();
         Files.createDirectories(reportFolder);
@@ -76,7 +86,12 @@ public final class CohortReport {
         if (Files.isRegularFile(reportFolder.resolve(ReportFiles.GRADES), LinkOption.NOFOLLOW_LINKS)) {
             beside.add(ReportFiles.GRADES);
         }
-        ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grades, beside));
+        String sections = YearAtAGlance.html(results, grades);
+        if (lookalikes != null) {
+            sections += LookalikeSection.write(reportFolder, lookalikes);
+            beside.add(LookalikesCsv.NAME);
+        }
+        ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grades, beside, sections));
         return List.copyOf(unwritten);
     }
 

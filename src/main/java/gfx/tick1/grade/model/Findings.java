@@ -1,0 +1,60 @@
+package gfx.tick1.grade.model;
+
+import gfx.tick1.grade.model.StudentResult.SceneResult;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * What a result's explanations found, read back from the lines the grader wrote into them, for the
+ * cohort's tallies and comparisons: the catalogue entry that reproduces an image exactly, the facts
+ * of the failed probes (at a failure), the facts noted at a pass, and each wrong scene's difference
+ * figures.
+ *
+ * @param catalogued the title of the first catalogue entry that matches a wrong image exactly, or null
+ * @param failed     the facts of the probes that failed, at a failure, each once, in order
+ * @param notes      the facts of the probes that failed at a pass, which the course's scenes do not test
+ * @param figures    each wrong image's difference figures, as "scene N: mean difference ...", in scene order
+ */
+public record Findings(String catalogued, List<String> failed, List<String> notes, List<String> figures) {
+
+    /** How the grader starts the lines read here (SubmissionGrader, ProbeFindings, Diagnosis). */
+    private static final String PROBE = "probe: ";
+    private static final String NOTE = "note: ";
+    private static final String NOT_TESTED = "; the course's scenes do not test this";
+    private static final String FIGURES = "mean difference ";
+    private static final String VERDICT = "verdict: ";
+    private static final String EXACTLY = ": every pixel matches it exactly.";
+
+    public Findings {
+        failed = List.copyOf(failed);
+        notes = List.copyOf(notes);
+        figures = List.copyOf(figures);
+    }
+
+    /** The findings of {@code result}'s explanations. */
+    public static Findings of(StudentResult result) {
+        String catalogued = null;
+        Set<String> failed = new LinkedHashSet<>();
+        Set<String> notes = new LinkedHashSet<>();
+        List<String> figures = new ArrayList<>();
+        int scene = 0;
+        for (SceneResult each : result.scenes()) {
+            scene++;
+            for (String line : each.explanation()) {
+                if (line.startsWith(PROBE)) {
+                    failed.add(line.substring(PROBE.length()));
+                } else if (line.startsWith(NOTE)) {
+                    int end = line.indexOf(NOT_TESTED);
+                    notes.add(line.substring(NOTE.length(), end < 0 ? line.length() : end));
+                } else if (line.startsWith(FIGURES)) {
+                    figures.add("scene " + scene + ": " + line);
+                } else if (catalogued == null && line.startsWith(VERDICT) && line.endsWith(EXACTLY)) {
+                    catalogued = line.substring(VERDICT.length(), line.length() - EXACTLY.length());
+                }
+            }
+        }
+        return new Findings(catalogued, List.copyOf(failed), List.copyOf(notes), figures);
+    }
+}
