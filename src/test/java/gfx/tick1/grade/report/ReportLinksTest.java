@@ -77,6 +77,18 @@ class ReportLinksTest {
     }
 
     @Test
+    void theLookAlikePagesFolderThatIsALinkIsReplacedNotWrittenOrEmptiedThrough() throws IOException {
+        Files.writeString(elsewhere.resolve(LookalikePage.fileName(7)), "not the report's");
+        Files.createSymbolicLink(report.resolve(LookalikePage.FOLDER), elsewhere);
+
+        CohortReport.write(report, results, SmallCohort::grade, List.of());
+
+        assertThat(elsewhereFiles()).as("the folder the link named, whose pair page an earlier run could have left")
+                .containsExactly(LookalikePage.fileName(7), "precious.png");
+        assertThat(Files.isSymbolicLink(report.resolve(LookalikePage.FOLDER))).as("still a link").isFalse();
+    }
+
+    @Test
     void aFileWhereAFeedbackFolderBelongsIsRefusedAndLeftAsItIs() throws IOException {
         Path feedback = Files.createDirectories(report.resolve("feedback"));
         Files.writeString(feedback.resolve(folderOf(0)), "someone's file");
