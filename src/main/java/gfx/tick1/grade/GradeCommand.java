@@ -17,6 +17,8 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -182,9 +184,14 @@ public final class GradeCommand implements Callable<Integer> {
                         + " package (apt-get install " + Sandbox.PACKAGE + "), or give --no-sandbox to grade "
                         + "without a sandbox");
             }
-            if (sandbox.totalsNotEnforced() != null) {
-                err.println("tick1 grade: warning: " + sandbox.totalsNotEnforced());
+            for (String warning : new String[] {sandbox.totalsNotEnforced(), sandbox.reservationsNotRefused()}) {
+                if (warning != null) {
+                    err.println("tick1 grade: warning: " + warning);
+                }
             }
+        }
+        if (scenesFolder != null) {
+            sandbox = sandbox.hiding(organisersScenes());
         }
         if (target.cohort != null) {
             return new CohortCommand(this, sandbox, out, err).call();
@@ -257,6 +264,20 @@ public final class GradeCommand implements Callable<Integer> {
             return EXIT_PASS;
         }
         return graded.imagesUnwritable() ? EXIT_CANNOT_WRITE : EXIT_FAIL;
+    }
+
+    /**
+     * The --scenes folder and the files in it, for the sandbox to hide: each file stands for the
+     * folder it really is in, which a link may put elsewhere.
+     */
+    private List<Path> organisersScenes() throws IOException {
+        List<Path> scenes = new ArrayList<>(List.of(scenesFolder));
+        if (Files.isDirectory(scenesFolder)) {
+            try (var files = Files.list(scenesFolder)) {
+                files.forEach(scenes::add);
+            }
+        }
+        return scenes;
     }
 
     Path scenesFolder() {

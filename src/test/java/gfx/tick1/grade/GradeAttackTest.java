@@ -28,6 +28,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * The hostile submissions of {@code src/test/resources/students/attacks}, each graded through the
@@ -98,10 +100,23 @@ class GradeAttackTest {
         Path student = Files.createDirectories(dir.resolve(attack));
         Path sphere = student.resolve("Sphere.java"), renderer = student.resolve("Renderer.java");
         String folder = "/students/attacks/" + attack + "/";
+        String first = resourceOr(folder + RENDER_FIRST, "");
+        if (!first.isEmpty()) {
+            // The correct solution, whose render first does what the attack does.
+            StudentSolution attacking = StudentSolution.correct().editRenderer(RENDER, RENDER + first);
+            Files.writeString(sphere, attacking.sphere());
+            Files.writeString(renderer, attacking.renderer());
+            return gradeFiles(sphere, renderer, options);
+        }
         Files.writeString(sphere, resourceOr(folder + "Sphere.java", StarterKit.source("Sphere")));
         Files.writeString(renderer, resourceOr(folder + "Renderer.java", null));
         return gradeFiles(sphere, renderer, options);
     }
+
+    /** An attack's file of the lines the correct solution's render runs first, in place of its own files. */
+    private static final String RENDER_FIRST = "render-first.java.txt";
+    /** The line of the correct solution's Renderer.java that those lines follow. */
+    private static final String RENDER = "    public BufferedImage render(Scene scene) {\n";
 
     private Grade gradeFiles(Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
         return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary, sphere, renderer, options);
@@ -279,10 +294,32 @@ class GradeAttackTest {
     }
 
     @Test
-    void aTreeDeeperThanAPathMayBeLongIsDeletedAndNoNameOfItIsPrinted() throws Exception {
+    void aTreeDeeperThanAPathMayBeLongStopsTheRunIsDeletedAndNoNameOfItIsPrinted() throws Exception {
         Grade grade = grade("deep-tree");
         assertFailedAndHarmedNothing(grade);
-        assertThat(grade.output()).contains("left a deep tree").doesNotContain("\u001b", "cannot delete");
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: its output folder holds "
+                + "something the grader cannot count (a folder made unreadable, or deeper than a path may be long)")
+                .doesNotContain("\u001b", "cannot delete");
+    }
+
+    @Test
+    void diskSpaceReservedBeyondAFilesSizeIsRefused() throws Exception {
+        Grade grade = grade("reserve-the-disk");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("fallocate --keep-size in the sandbox")
+                .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: reserved 0 GiB, then: "
+                        + "fallocate: fallocate failed");
+    }
+
+    /** Sparse files (counted by their size) and many small files, below where a walk of 64 levels looked. */
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+        "deep-sparse-files | it wrote more than 256 MiB to its output folder",
+        "deep-many-files   | it made more than 10000 files and folders in its output folder"})
+    void whatTheCodeWritesAnyDepthDownItsOutputFolderIsCounted(String attack, String limit) throws Exception {
+        Grade grade = grade(attack, "--time-limit", "60");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: " + limit);
     }
 
     @Test
