@@ -40,7 +40,8 @@ import picocli.CommandLine.Spec;
                     + "scene (or the scenes given) with them, and compares each image with the reference render, "
                     + "pixel for pixel. Compiling and rendering run in a separate Java process inside a bubblewrap "
                     + "sandbox, with time, memory and process limits. A failing scene is explained: the difference "
-                    + "figures, the closest entry of the diagnose catalogue, and a heat map (not for hidden scenes). "
+                    + "figures, the closest entry of the diagnose catalogue, and a heat map; of a hidden scene only "
+                    + "its verdict is said, in fixed words. "
                     + "The built-in hidden scene is public (it is in tick1, which students have): anyone can pass it "
                     + "by copying its images; give scenes of your own with --scenes for a grade that counts.",
             "With --submissions it grades a whole cohort from Moodle's download: every submission in a sandbox of "

@@ -1,5 +1,6 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.grade.grading.HiddenVerdict;
 import gfx.tick1.grade.grading.SubmissionGrader;
 import gfx.tick1.grade.sandbox.Sandbox;
 import static org.assertj.core.api.Assertions.assertThat;
@@ -334,8 +335,8 @@ class GradeAttackTest {
     void theHiddenScenesContentNeverReachesTheReport() throws Exception {
         Grade grade = grade("quote-the-hidden-scene");
         assertFailedAndHarmedNothing(grade);
-        assertThat(grade.output()).contains("hidden.xml: FAIL: the code threw java.lang.IllegalStateException "
-                + "(its message is not shown for a hidden scene)", "SCENES /scenes/0.xml");
+        assertThat(grade.output()).contains("hidden.xml: FAIL: " + HiddenVerdict.THREW.words() + "\n",
+                "SCENES /scenes/0.xml");
         String tick1 = resourceOr("/gfx/tick1/scenes/tick1.xml", null);
         assertThat(resourceOr("/gfx/tick1/scenes/hidden.xml", null).lines().map(String::strip)
                 .filter(line -> line.length() > 8 && !tick1.contains(line)))
@@ -351,8 +352,7 @@ class GradeAttackTest {
         String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: FAIL"));
         assertThat(grade.output()).as("the public scene's report keeps the message").contains("HIDDENLEAK");
         assertThat(hidden).as("the hidden scene's report").doesNotContain("HIDDENLEAK")
-                .startsWith("hidden.xml: FAIL: the code threw an exception (its message is not shown for a hidden "
-                        + "scene)\nFAILED");
+                .startsWith("hidden.xml: FAIL: " + HiddenVerdict.THREW.words() + "\nFAILED");
     }
 
     @Test
@@ -362,10 +362,24 @@ class GradeAttackTest {
         String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: FAIL"));
         assertThat(grade.output()).as("the public scene's report keeps the frames")
                 .containsPattern("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: (low|high)");
-        assertThat(hidden).as("the hidden scene's report: fixed words and the class only")
-                .startsWith("hidden.xml: FAIL: the code threw java.lang.IllegalStateException (its message is not "
-                        + "shown for a hidden scene)\nFAILED")
+        assertThat(hidden).as("the hidden scene's report: fixed words only")
+                .startsWith("hidden.xml: FAIL: " + HiddenVerdict.THREW.words() + "\nFAILED")
                 .doesNotContain("leakEven", "leakOdd", "Renderer.java:");
+    }
+
+    /**
+     * A wrong image whose every pixel is a byte of the scene it was given: the public scene's
+     * figures show it, the hidden scene's report is its verdict in fixed words and nothing more.
+     */
+    @Test
+    void aWrongHiddenImageIsOneFixedVerdictWithoutFigures() throws Exception {
+        Grade grade = grade("figures-of-the-hidden-scene");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("the public scene's figures").contains("tick1.xml: FAIL: 19200 of 19200 "
+                + "pixels differ");
+        String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: "));
+        assertThat(hidden).as("the hidden scene's report")
+                .startsWith("hidden.xml: FAIL: " + HiddenVerdict.WRONG.words() + "\nFAILED: 2 of 2 scenes wrong.");
     }
 
     @Test
