@@ -60,13 +60,15 @@ class GradeCohortDiskTest {
         assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
         mounted = small;
         StudentSolution correct = StudentSolution.correct();
-        Path zip = download(correct, correct.editRenderer("return image;", "image.setRGB(0, 0, 0xFFFFFF); return image;"));
+        Path zip = download(correct, correct.editRenderer("return image;",
+                "image.setRGB(0, 0, 0xFFFFFF); return image;"));
         Path report = dir.resolve("report");
 
         String shortRun = grade(small, zip, report);
 
         assertThat(shortRun).as("the failure, on a disk short of space")
-                .contains("Failing Student_102_assignsubmission_file_: not graded", "MiB free, less than the 256 MiB a run may need");
+                .contains("Failing Student_102_assignsubmission_file_: not graded",
+                        "MiB free, less than the 256 MiB a run may need");
         assertThat(stored(report)).as("results stored: the pass only").hasSize(1);
 
         Path roomy = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
@@ -84,7 +86,8 @@ class GradeCohortDiskTest {
     private Path download(StudentSolution passing, StudentSolution failing) throws IOException {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         try (ZipOutputStream zip = new ZipOutputStream(bytes)) {
-            String[] folders = {"Passing Student_101_assignsubmission_file_/", "Failing Student_102_assignsubmission_file_/"};
+            String[] folders = {"Passing Student_101_assignsubmission_file_/",
+                "Failing Student_102_assignsubmission_file_/"};
             StudentSolution[] solutions = {passing, failing};
             for (int i = 0; i < 2; i++) {
                 for (String[] file : new String[][] {{"Sphere.java", solutions[i].sphere()},

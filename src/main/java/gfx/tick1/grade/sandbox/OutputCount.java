@@ -33,7 +33,10 @@ final class OutputCount {
     private OutputCount() {
     }
 
-    /** Why {@code output} holds more than the caps allow, or what cannot be counted, in words for the student, or null. */
+    /**
+     * Why {@code output} holds more than the caps allow, or what in it cannot be counted, in words
+     * for the student; or null.
+     */
     static String overCap(Path output) {
         if (output == null) {
             return null;
