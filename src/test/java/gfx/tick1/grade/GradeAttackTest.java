@@ -382,6 +382,30 @@ class GradeAttackTest {
                 .startsWith("hidden.xml: FAIL: " + HiddenVerdict.WRONG.words() + "\nFAILED: 2 of 2 scenes wrong.");
     }
 
+    /**
+     * The organiser's scenes in a folder under /usr, all of which the sandbox shows read-only: the
+     * code looks for them there, and would quote them in the public scene's report.
+     */
+    @Test
+    void organisersScenesUnderUsrAreHiddenFromTheCode() throws Exception {
+        assumeThat(Files.isWritable(Path.of("/usr"))).as("a folder can be made in /usr (as root)").isTrue();
+        Path scenes = Files.createDirectory(ORGANISERS_SCENES);
+        try {
+            Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml", null)
+                    .replace("<scene>", "<scene><!-- " + secret + " -->"));
+            Grade grade = grade("read-the-organisers-scenes", "--scenes", scenes.toString());
+            assertFailedAndHarmedNothing(grade);
+            assertThat(grade.output()).contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: "
+                    + "read: ").doesNotContain("secret-scene.xml");
+        } finally {
+            Files.deleteIfExists(scenes.resolve("secret-scene.xml"));
+            Files.deleteIfExists(scenes);
+        }
+    }
+
+    /** Where {@link #organisersScenesUnderUsrAreHiddenFromTheCode} puts the organiser's scenes. */
+    private static final Path ORGANISERS_SCENES = Path.of("/usr/tick1-attack-scenes");
+
     @Test
     void theSandboxsFileSystemsInMemoryAreSizedOrReadOnly() throws Exception {
         Grade grade = grade("fill-the-tmpfs");

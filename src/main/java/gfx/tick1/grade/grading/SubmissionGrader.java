@@ -435,13 +435,19 @@ public final class SubmissionGrader {
 
     /**
      * A hidden scene's wrong image: the fixed verdict, and no figure, diagnosis or image of it
-     * (each is the code's to choose); the chart's label is the failed probes' (they ran on public
-     * inputs), or that the mistake is not recognised.
+     * (each is the code's to choose). The failed probes follow, if no earlier scene showed them:
+     * they ran on fixed inputs in the run of the public scenes, which never had a hidden one, so
+     * they carry nothing of it. The chart's label is theirs, or that the mistake is not recognised.
      */
     private static String wrongHiddenImage(Grade grade, GradingScene scene, PrintWriter out) {
-        out.println(scene.name() + ": FAIL: " + HiddenVerdict.WRONG.words());
-        grade.scenes.add(new SceneResult(scene.name(), true, false, List.of(HiddenVerdict.WRONG.words()), null, null,
-                null));
+        List<String> lines = new ArrayList<>(List.of(HiddenVerdict.WRONG.words()));
+        if (grade.probes.anyFailed() && !grade.probesShown) {
+            lines.addAll(grade.probes.failureLines());
+            grade.probesShown = true;
+        }
+        out.println(scene.name() + ": FAIL: " + lines.get(0));
+        lines.subList(1, lines.size()).forEach(line -> out.println("  " + line));
+        grade.scenes.add(new SceneResult(scene.name(), true, false, lines, null, null, null));
         return grade.probes.anyFailed() ? grade.probes.failedProbes().get(0).label() : UNRECOGNISED;
     }
 
