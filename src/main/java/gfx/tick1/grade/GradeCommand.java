@@ -20,6 +20,8 @@ import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -41,7 +43,8 @@ import picocli.CommandLine.Spec;
                     + "scene (or the scenes given) with them, and compares each image with the reference render, "
                     + "pixel for pixel. Compiling and rendering run in a separate Java process inside a bubblewrap "
                     + "sandbox, with time, memory and process limits. A failing scene is explained: the difference "
-                    + "figures, the closest entry of the diagnose catalogue, and a heat map (not for hidden scenes). "
+                    + "figures, the closest entry of the diagnose catalogue, and a heat map; of a hidden scene only "
+                    + "its verdict is said, in fixed words. "
                     + "The built-in hidden scene is public (it is in tick1, which students have): anyone can pass it "
                     + "by copying its images; give scenes of your own with --scenes for a grade that counts.",
             "With --submissions it grades a whole cohort from Moodle's download: every submission in a sandbox of "
@@ -214,9 +217,14 @@ public final class GradeCommand implements Callable<Integer> {
                         + " package (apt-get install " + Sandbox.PACKAGE + ")" + (vpl() ? "" : ", or give "
                         + "--no-sandbox to grade without a sandbox"));
             }
-            if (sandbox.totalsNotEnforced() != null) {
-                err.println("tick1 grade: warning: " + sandbox.totalsNotEnforced());
+            for (String warning : new String[] {sandbox.totalsNotEnforced(), sandbox.reservationsNotRefused()}) {
+                if (warning != null) {
+                    err.println("tick1 grade: warning: " + warning);
+                }
             }
+        }
+        if (scenesFolder != null) {
+            sandbox = sandbox.hiding(organisersScenes());
         }
         if (target.cohort != null) {
             return new CohortCommand(this, sandbox, out, err).call();
@@ -319,6 +327,20 @@ public final class GradeCommand implements Callable<Integer> {
     /** The --grade-range, checked by {@link #checkOptions()} first. */
     GradeRange gradeRange() {
         return GradeRange.parse(gradeRange);
+    }
+
+    /**
+     * The --scenes folder and the files in it, for the sandbox to hide: each file stands for the
+     * folder it really is in, which a link may put elsewhere.
+     */
+    private List<Path> organisersScenes() throws IOException {
+        List<Path> scenes = new ArrayList<>(List.of(scenesFolder));
+        if (Files.isDirectory(scenesFolder)) {
+            try (var files = Files.list(scenesFolder)) {
+                files.forEach(scenes::add);
+            }
+        }
+        return scenes;
     }
 
     Path scenesFolder() {

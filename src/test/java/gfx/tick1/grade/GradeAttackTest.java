@@ -1,5 +1,6 @@
 package gfx.tick1.grade;
 
+import gfx.tick1.grade.grading.HiddenVerdict;
 import gfx.tick1.grade.grading.SubmissionGrader;
 import gfx.tick1.grade.sandbox.Sandbox;
 import static org.assertj.core.api.Assertions.assertThat;
@@ -28,6 +29,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * The hostile submissions of {@code src/test/resources/students/attacks}, each graded through the
@@ -98,10 +101,23 @@ class GradeAttackTest {
         Path student = Files.createDirectories(dir.resolve(attack));
         Path sphere = student.resolve("Sphere.java"), renderer = student.resolve("Renderer.java");
         String folder = "/students/attacks/" + attack + "/";
+        String first = resourceOr(folder + RENDER_FIRST, "");
+        if (!first.isEmpty()) {
+            // The correct solution, whose render first does what the attack does.
+            StudentSolution attacking = StudentSolution.correct().editRenderer(RENDER, RENDER + first);
+            Files.writeString(sphere, attacking.sphere());
+            Files.writeString(renderer, attacking.renderer());
+            return gradeFiles(sphere, renderer, options);
+        }
         Files.writeString(sphere, resourceOr(folder + "Sphere.java", StarterKit.source("Sphere")));
         Files.writeString(renderer, resourceOr(folder + "Renderer.java", null));
         return gradeFiles(sphere, renderer, options);
     }
+
+    /** An attack's file of the lines the correct solution's render runs first, in place of its own files. */
+    private static final String RENDER_FIRST = "render-first.java.txt";
+    /** The line of the correct solution's Renderer.java that those lines follow. */
+    private static final String RENDER = "    public BufferedImage render(Scene scene) {\n";
 
     private Grade gradeFiles(Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
         return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary, sphere, renderer, options);
@@ -279,10 +295,32 @@ class GradeAttackTest {
     }
 
     @Test
-    void aTreeDeeperThanAPathMayBeLongIsDeletedAndNoNameOfItIsPrinted() throws Exception {
+    void aTreeDeeperThanAPathMayBeLongStopsTheRunIsDeletedAndNoNameOfItIsPrinted() throws Exception {
         Grade grade = grade("deep-tree");
         assertFailedAndHarmedNothing(grade);
-        assertThat(grade.output()).contains("left a deep tree").doesNotContain("\u001b", "cannot delete");
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: its output folder holds "
+                + "something the grader cannot count (a folder made unreadable, or deeper than a path may be long)")
+                .doesNotContain("\u001b", "cannot delete");
+    }
+
+    @Test
+    void diskSpaceReservedBeyondAFilesSizeIsRefused() throws Exception {
+        Grade grade = grade("reserve-the-disk");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("fallocate --keep-size in the sandbox")
+                .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: reserved 0 GiB, then: "
+                        + "fallocate: fallocate failed");
+    }
+
+    /** Sparse files (counted by their size) and many small files, below where a walk of 64 levels looked. */
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+        "deep-sparse-files | it wrote more than 256 MiB to its output folder",
+        "deep-many-files   | it made more than 10000 files and folders in its output folder"})
+    void whatTheCodeWritesAnyDepthDownItsOutputFolderIsCounted(String attack, String limit) throws Exception {
+        Grade grade = grade(attack, "--time-limit", "60");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: " + limit);
     }
 
     @Test
@@ -297,8 +335,8 @@ class GradeAttackTest {
     void theHiddenScenesContentNeverReachesTheReport() throws Exception {
         Grade grade = grade("quote-the-hidden-scene");
         assertFailedAndHarmedNothing(grade);
-        assertThat(grade.output()).contains("hidden.xml: FAIL: the code threw java.lang.IllegalStateException "
-                + "(its message is not shown for a hidden scene)", "SCENES /scenes/0.xml");
+        assertThat(grade.output()).contains("hidden.xml: FAIL: " + HiddenVerdict.THREW.words() + "\n",
+                "SCENES /scenes/0.xml");
         String tick1 = resourceOr("/gfx/tick1/scenes/tick1.xml", null);
         assertThat(resourceOr("/gfx/tick1/scenes/hidden.xml", null).lines().map(String::strip)
                 .filter(line -> line.length() > 8 && !tick1.contains(line)))
@@ -314,8 +352,7 @@ class GradeAttackTest {
         String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: FAIL"));
         assertThat(grade.output()).as("the public scene's report keeps the message").contains("HIDDENLEAK");
         assertThat(hidden).as("the hidden scene's report").doesNotContain("HIDDENLEAK")
-                .startsWith("hidden.xml: FAIL: the code threw an exception (its message is not shown for a hidden "
-                        + "scene)\nFAILED");
+                .startsWith("hidden.xml: FAIL: " + HiddenVerdict.THREW.words() + "\nFAILED");
     }
 
     @Test
@@ -325,11 +362,49 @@ class GradeAttackTest {
         String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: FAIL"));
         assertThat(grade.output()).as("the public scene's report keeps the frames")
                 .containsPattern("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: (low|high)");
-        assertThat(hidden).as("the hidden scene's report: fixed words and the class only")
-                .startsWith("hidden.xml: FAIL: the code threw java.lang.IllegalStateException (its message is not "
-                        + "shown for a hidden scene)\nFAILED")
+        assertThat(hidden).as("the hidden scene's report: fixed words only")
+                .startsWith("hidden.xml: FAIL: " + HiddenVerdict.THREW.words() + "\nFAILED")
                 .doesNotContain("leakEven", "leakOdd", "Renderer.java:");
     }
+
+    /**
+     * A wrong image whose every pixel is a byte of the scene it was given: the public scene's
+     * figures show it, the hidden scene's report is its verdict in fixed words and nothing more.
+     */
+    @Test
+    void aWrongHiddenImageIsOneFixedVerdictWithoutFigures() throws Exception {
+        Grade grade = grade("figures-of-the-hidden-scene");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("the public scene's figures").contains("tick1.xml: FAIL: 19200 of 19200 "
+                + "pixels differ");
+        String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: "));
+        assertThat(hidden).as("the hidden scene's report")
+                .startsWith("hidden.xml: FAIL: " + HiddenVerdict.WRONG.words() + "\nFAILED: 2 of 2 scenes wrong.");
+    }
+
+    /**
+     * The organiser's scenes in a folder under /usr, all of which the sandbox shows read-only: the
+     * code looks for them there, and would quote them in the public scene's report.
+     */
+    @Test
+    void organisersScenesUnderUsrAreHiddenFromTheCode() throws Exception {
+        assumeThat(Files.isWritable(Path.of("/usr"))).as("a folder can be made in /usr (as root)").isTrue();
+        Path scenes = Files.createDirectory(ORGANISERS_SCENES);
+        try {
+            Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml", null)
+                    .replace("<scene>", "<scene><!-- " + secret + " -->"));
+            Grade grade = grade("read-the-organisers-scenes", "--scenes", scenes.toString());
+            assertFailedAndHarmedNothing(grade);
+            assertThat(grade.output()).as("what the code found in the folder: nothing")
+                    .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: read: \n");
+        } finally {
+            Files.deleteIfExists(scenes.resolve("secret-scene.xml"));
+            Files.deleteIfExists(scenes);
+        }
+    }
+
+    /** Where {@link #organisersScenesUnderUsrAreHiddenFromTheCode} puts the organiser's scenes. */
+    private static final Path ORGANISERS_SCENES = Path.of("/usr/tick1-attack-scenes");
 
     @Test
     void theSandboxsFileSystemsInMemoryAreSizedOrReadOnly() throws Exception {

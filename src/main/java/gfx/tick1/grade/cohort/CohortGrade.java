@@ -336,6 +336,11 @@ public final class CohortGrade {
             } finally {
                 WorkFolder.delete(submissionWork);
             }
+            String diskShort = graded.result().passed() ? null : GraderDisk.shortOfSpace(folder, graded.result());
+            if (diskShort != null) {
+                WorkFolder.delete(entry);
+                throw new IOException(diskShort);
+            }
             // A grade cut short by stop() ended after stopping was set: it is never stored.
             if (stopping) {
                 WorkFolder.delete(entry);

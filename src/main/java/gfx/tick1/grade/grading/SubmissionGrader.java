@@ -154,7 +154,7 @@ public final class SubmissionGrader {
         long compareStart = System.nanoTime();
         grade.renderNanos = compareStart - started.renderStart();
         grade.probes = ProbeFindings.of(rendered.probes());
-        Graded graded = compare(grade, submission, code, started.classes(), rendered, images, out, err);
+        Graded graded = compare(grade, submission, code, rendered, images, out, err);
         return graded;
     }
 
@@ -223,10 +223,9 @@ public final class SubmissionGrader {
     }
 
     /** Compares every scene's outcome, then gives the verdict with its reasons. */
-    private Graded compare(Grade grade, Submission submission, Sources code, Path classes, Rendered rendered,
+    private Graded compare(Grade grade, Submission submission, Sources code, Rendered rendered,
             Path images, PrintWriter out, PrintWriter err) {
         long compareStart = System.nanoTime();
-        HiddenScenes hiddenScenes = new HiddenScenes(classes);
         List<GradingScene> ordered = new ArrayList<>(grading.batch(false));
         ordered.addAll(grading.batch(true));
         int failures = 0;
@@ -237,7 +236,7 @@ public final class SubmissionGrader {
             String label;
             if (rendered.outcomes().get(i) instanceof Outcome.Failed failedScene) {
                 crashed = true;
-                label = notRendered(grade, scene, failedScene, hiddenScenes, out);
+                label = notRendered(grade, scene, failedScene, out);
             } else {
                 label = checkImage(grade, i + 1, scene, ((Outcome.Rendered) rendered.outcomes().get(i)).image(),
                         rendered.traces().get(i), images, out, err);
@@ -256,10 +255,9 @@ public final class SubmissionGrader {
         return verdict(grade, submission, ordered.size(), failures, diagnosis, out);
     }
 
-    /** A scene the code gave no image for: why, with nothing of the code's own words for a hidden scene. */
-    private static String notRendered(Grade grade, GradingScene scene, Outcome.Failed failedScene,
-            HiddenScenes hiddenScenes, PrintWriter out) {
-        String reason = scene.hidden() ? hiddenScenes.withoutMessages(failedScene.reason()) : failedScene.reason();
+    /** A scene the code gave no image for: why; for a hidden scene, a {@link HiddenVerdict}'s fixed words. */
+    private static String notRendered(Grade grade, GradingScene scene, Outcome.Failed failedScene, PrintWriter out) {
+        String reason = scene.hidden() ? HiddenVerdict.ofNoImage(failedScene.reason()).words() : failedScene.reason();
         out.println(scene.name() + ": FAIL: " + indent(reason));
         grade.scenes.add(new SceneResult(scene.name(), scene.hidden(), false, reason.lines().toList(),
                 null, null, null));
@@ -358,7 +356,8 @@ public final class SubmissionGrader {
             if (scene.passed()) {
                 continue;
             }
-            if (scene.explanation().stream().anyMatch(line -> line.startsWith("mean difference"))) {
+            if (scene.explanation().stream().anyMatch(line -> line.startsWith("mean difference")
+                    || line.equals(HiddenVerdict.WRONG.words()))) {
                 wrongImage = true;
                 continue;
             }
@@ -402,6 +401,12 @@ public final class SubmissionGrader {
             if (check != SampleCheck.Result.AGREES) {
                 return notFromTheCode(grade, scene, check, out);
             }
+            if (scene.hidden()) {
+                // Which reference it matched is the code's to choose, on a scene where the two differ.
+                out.println(scene.name() + ": " + HiddenVerdict.PASS.words());
+                grade.scenes.add(new SceneResult(scene.name(), true, true, List.of(), null, null, null));
+                return null;
+            }
             String which = "the reference", other = "";
             if (handout != null && robust != null && !referencesAgree) {
                 which = handoutMatched ? "the handout-arithmetic reference" : "the robust reference";
@@ -412,6 +417,9 @@ public final class SubmissionGrader {
                     + image.getWidth() * image.getHeight() + " pixels" + other + ")");
             grade.scenes.add(new SceneResult(scene.name(), scene.hidden(), true, List.of(), null, null, null));
             return null;
+        }
+        if (scene.hidden()) {
+            return wrongHiddenImage(grade, scene, out);
         }
         // Explain against the closer reference.
         ImageDifference toHandout = handout == null ? null : ImageDifference.between(handout, image);
@@ -439,10 +447,28 @@ public final class SubmissionGrader {
                 + "intersectionWith and illuminate, its sampled pixels have other colours"
                 : NOT_FROM_THE_CODE + "? Its sampled pixels could not be traced through your intersectionWith and "
                 + "illuminate (they did not return in time, or the harness's record of them is missing)";
-        String shown = scene.hidden() ? NOT_FROM_THE_CODE + " (checked on sampled pixels)" : reason;
+        String shown = scene.hidden() ? HiddenVerdict.NOT_FROM_THE_CODE.words() : reason;
         out.println(scene.name() + ": FAIL: " + shown);
         grade.scenes.add(new SceneResult(scene.name(), scene.hidden(), false, List.of(shown), null, null, null));
         return NOT_FROM_CODE_LABEL;
+    }
+
+    /**
+     * A hidden scene's wrong image: the fixed verdict, and no figure, diagnosis or image of it
+     * (each is the code's to choose). The failed probes follow, if no earlier scene showed them:
+     * they ran on fixed inputs in the run of the public scenes, which never had a hidden one, so
+     * they carry nothing of it. The chart's label is theirs, or that the mistake is not recognised.
+     */
+    private static String wrongHiddenImage(Grade grade, GradingScene scene, PrintWriter out) {
+        List<String> lines = new ArrayList<>(List.of(HiddenVerdict.WRONG.words()));
+        if (grade.probes.anyFailed() && !grade.probesShown) {
+            lines.addAll(grade.probes.failureLines());
+            grade.probesShown = true;
+        }
+        out.println(scene.name() + ": FAIL: " + lines.get(0));
+        lines.subList(1, lines.size()).forEach(line -> out.println("  " + line));
+        grade.scenes.add(new SceneResult(scene.name(), true, false, lines, null, null, null));
+        return grade.probes.anyFailed() ? grade.probes.failedProbes().get(0).label() : UNRECOGNISED;
     }
 
     /** The words of a matching image that their methods do not give. */
@@ -479,15 +505,10 @@ public final class SubmissionGrader {
                 : exact ? diagnosis.explaining().get(0).variant().title() : UNRECOGNISED;
     }
 
-    /** Writes the images of a scene that is not hidden: heat map, theirs, the reference. */
+    /** Writes the images of a scene that is not hidden (a hidden one has none): heat map, theirs, the reference. */
     private void writeImages(Grade grade, int number, GradingScene scene, BufferedImage image,
             ImageDifference difference, BufferedImage expected, List<String> lines, Path images, PrintWriter out,
             PrintWriter err) {
-        if (scene.hidden()) {
-            out.println("  (a hidden scene: no images are written for it)");
-            grade.scenes.add(new SceneResult(scene.name(), true, false, lines, null, null, null));
-            return;
-        }
         String stem = number + "-" + scene.name().replaceAll("[^A-Za-z0-9._-]", "_").replaceAll("\\.xml$", "");
         String heatMap = stem + "-diff.png", yours = stem + "-yours.png", reference = stem + "-expected.png";
         try {

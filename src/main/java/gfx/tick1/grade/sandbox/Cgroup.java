@@ -5,7 +5,6 @@ import java.nio.file.FileAlreadyExistsException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -18,13 +17,12 @@ import java.util.concurrent.atomic.AtomicLong;
  * worth of processor time. cgroup v2 where the unified hierarchy lets this process make a group
  * with the memory and pids controllers; cgroup v1 where the memory and pids hierarchies are
  * mounted and the groups this process is in are writable. The run's first process joins the
- * group before it starts anything ({@link #joinCommand}); the group is removed afterwards.
+ * group before it starts anything ({@link #folders}); the group is removed afterwards.
  */
 final class Cgroup implements AutoCloseable {
 
     private static final Path PROC_CGROUP = Path.of("/proc/self/cgroup");
     private static final Path MOUNTS = Path.of("/proc/self/mountinfo");
-    private static final Path SH = Path.of("/bin/sh");
     private static final long CPU_PERIOD_MICROS = 100_000;
     private static final AtomicLong NEXT = new AtomicLong();
     /** How many names a new group may try, when earlier processes left groups under this process id. */
@@ -187,16 +185,11 @@ final class Cgroup implements AutoCloseable {
     }
 
     /**
-     * The command before the run's own: a shell that moves itself into every one of the groups,
-     * then becomes the run's first program; it fails (status 125) rather than run outside them.
+     * The group's folders, one a controller (one for v2), for the shell that starts the run to move
+     * itself into ({@link Sandbox#wrap}) before it becomes the run's first program.
      */
-    List<String> joinCommand() {
-        List<String> command = new ArrayList<>(List.of(SH.toString(), "-c",
-                "while [ \"$1\" != -- ]; do echo $$ > \"$1/cgroup.procs\" || exit 125; shift; done; shift; "
-                        + "exec \"$@\"", "sh"));
-        groups.values().forEach(group -> command.add(group.toString()));
-        command.add("--");
-        return command;
+    List<Path> folders() {
+        return List.copyOf(groups.values());
     }
 
     /**

@@ -37,6 +37,9 @@ public final class Sandbox {
     private static final Path SETPRIV = Path.of("/usr/bin/setpriv");
     private static final Path PRLIMIT = Path.of("/usr/bin/prlimit");
     private static final Path TASKSET = Path.of("/usr/bin/taskset");
+    private static final Path SH = Path.of("/bin/sh");
+    /** The descriptor bwrap reads the {@link SpaceFilter} from. */
+    private static final int FILTER_FD = 3;
     /** The JDK's configuration files, which java.home links to on Debian. */
     private static final Path JAVA_CONFIG = Path.of("/etc/java-17-openjdk");
 
@@ -71,13 +74,31 @@ public final class Sandbox {
     private final int uid;
     /** Which of the grades this program runs at once this sandbox is for: 0 for a single grade. */
     private final int job;
+    /** The file of the {@link SpaceFilter}, or null where there is none for this machine. */
+    private final Path spaceFilter;
+    /** Folders of the grader's to hide wherever the sandbox would show them: the organiser's scenes. */
+    private final List<Path> secrets;
 
-    private Sandbox(Path bwrap, boolean confined, int uid, int job, Cgroup.Place cgroups) {
+    private Sandbox(Path bwrap, boolean confined, int uid, int job, Cgroup.Place cgroups, Path spaceFilter,
+            List<Path> secrets) {
         this.bwrap = bwrap;
         this.confined = confined;
         this.cgroups = cgroups;
         this.uid = uid;
         this.job = job;
+        this.spaceFilter = spaceFilter;
+        this.secrets = List.copyOf(secrets);
+    }
+
+    /**
+     * The same sandbox, which also hides {@code folders} (the organiser's scenes) under an empty
+     * folder of its own, should they lie in what it shows (/usr, the JDK's folders): the runs get
+     * their scenes only through the folder bound for them, never through a path of the grader's.
+     */
+    public Sandbox hiding(List<Path> folders) {
+        List<Path> all = new ArrayList<>(secrets);
+        all.addAll(folders);
+        return new Sandbox(bwrap, confined, uid, job, cgroups, spaceFilter, all);
     }
 
     /**
@@ -89,7 +110,8 @@ public final class Sandbox {
         if (job < 0 || job >= MOST_JOBS) {
             throw new IllegalArgumentException("job " + job + ": must be from 0 to " + (MOST_JOBS - 1));
         }
-        return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + job * JOB_UID_STEP, job, cgroups);
+        return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + job * JOB_UID_STEP, job, cgroups, spaceFilter,
+                secrets);
     }
 
     /**
@@ -98,12 +120,13 @@ public final class Sandbox {
      * process limit nor can signal each other. Only for a sandbox {@link #forJob} made.
      */
     public Sandbox forCompiler() {
-        return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job, cgroups);
+        return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job, cgroups,
+                spaceFilter, secrets);
     }
 
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
     public static Sandbox unconfined() {
-        return new Sandbox(null, false, -1, 0, null);
+        return new Sandbox(null, false, -1, 0, null, null, List.of());
     }
 
     /**
@@ -125,8 +148,15 @@ public final class Sandbox {
         }
         // A user of its own for each grade running at the same time (the grader's process id is
         // unique), far above the ranges of real users and of containers' subordinate ids.
+        Path spaceFilter;
+        try {
+            spaceFilter = SpaceFilter.writeForThisMachine();
+        } catch (IOException e) {
+            throw new Unavailable("cannot write the sandbox's seccomp filter (" + e.getMessage() + ")");
+        }
         Sandbox sandbox = new Sandbox(bwrap, true,
-                root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0, Cgroup.find());
+                root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0, Cgroup.find(),
+                spaceFilter, List.of());
         sandbox.probe();
         return sandbox;
     }
@@ -152,6 +182,16 @@ public final class Sandbox {
         return !confined || cgroups != null ? null
                 : "no control group can be made here (cgroup v2 not delegated, cgroup v1 memory and pids not "
                         + "writable): the limits are per process; memory, processes and CPU are not limited in all";
+    }
+
+    /**
+     * Null when the sandbox refuses the calls that reserve disk space a size does not show
+     * ({@link SpaceFilter}); else the one line that says it does not, on this machine.
+     */
+    public String reservationsNotRefused() {
+        return !confined || spaceFilter != null ? null
+                : "tick1 has no seccomp filter for this machine (" + System.getProperty("os.arch") + "): disk space "
+                        + "the code reserves with fallocate is not counted in its output folder's limit";
     }
 
     /** A control group for one run held to {@code totals}, or null when none can be made. */
@@ -212,10 +252,7 @@ public final class Sandbox {
         if (!confined) {
             return command;
         }
-        List<String> wrapped = new ArrayList<>();
-        if (cgroup != null) {
-            wrapped.addAll(cgroup.joinCommand());
-        }
+        List<String> wrapped = new ArrayList<>(startCommand(cgroup));
         String core = oneCore ? oneAllowedCore(job) : null;
         if (core != null) {
             wrapped.addAll(List.of(TASKSET.toString(), "--cpu-list", core));
@@ -241,16 +278,31 @@ public final class Sandbox {
                 "--setenv", "MALLOC_ARENA_MAX", "2",
                 "--ro-bind", "/usr", "/usr",
                 "--symlink", "usr/bin", "/bin", "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64", "/lib64"));
+        if (spaceFilter != null) {
+            wrapped.addAll(List.of("--seccomp", Integer.toString(FILTER_FD)));
+        }
         if (Files.isDirectory(JAVA_CONFIG)) {
             wrapped.addAll(List.of("--ro-bind", JAVA_CONFIG.toString(), JAVA_CONFIG.toString()));
         }
         Path javaHome = Path.of(System.getProperty("java.home")).toAbsolutePath();
+        List<Path> shown = new ArrayList<>(List.of(Path.of("/usr")));
+        if (Files.isDirectory(JAVA_CONFIG)) {
+            shown.add(JAVA_CONFIG);
+        }
         if (!javaHome.startsWith("/usr")) {
             wrapped.addAll(List.of("--ro-bind", javaHome.toString(), javaHome.toString()));
+            shown.add(javaHome);
         }
-        // tick1 itself may be installed under /usr: hide it, so that there is no renderer to copy.
-        for (Path folder : ownCodeUnder(Path.of("/usr"), ownCode())) {
-            wrapped.addAll(List.of("--size", Long.toString(HIDING_BYTES), "--tmpfs", folder.toString()));
+        // tick1 itself, the organiser's scenes and the grader's temporary folder (every work folder, with
+        // the hidden scenes each job copies) may lie in what is shown: hide them, so that there is no
+        // renderer to copy and no scene to read but those bound in for the run.
+        List<Path> hide = new ArrayList<>(ownCode());
+        hide.addAll(secrets);
+        hide.add(Path.of(System.getProperty("java.io.tmpdir")));
+        for (Path system : shown) {
+            for (Path folder : foldersUnder(system, hide)) {
+                wrapped.addAll(List.of("--size", Long.toString(HIDING_BYTES), "--tmpfs", folder.toString()));
+            }
         }
         // Every tmpfs has a size, and / and /dev (bwrap's own, of half the host's memory) are read-only.
         wrapped.addAll(List.of("--proc", "/proc", "--dev", "/dev",
@@ -262,6 +314,27 @@ public final class Sandbox {
         wrapped.addAll(List.of("--remount-ro", "/", "--chdir", "/", "--"));
         wrapped.addAll(command);
         return wrapped;
+    }
+
+    /**
+     * The shell that starts the sandbox: it moves itself into the run's control group (when there
+     * is one; it fails with status 125 rather than run outside it), opens the {@link SpaceFilter}
+     * on descriptor {@value #FILTER_FD} for bwrap (the one way to hand bwrap a descriptor through
+     * Java's ProcessBuilder), and becomes the run's first program. Empty when there is neither.
+     */
+    private List<String> startCommand(Cgroup cgroup) {
+        if (cgroup == null && spaceFilter == null) {
+            return List.of();
+        }
+        List<String> command = new ArrayList<>(List.of(SH.toString(), "-c",
+                "f=$1; shift; while [ \"$1\" != -- ]; do echo $$ > \"$1/cgroup.procs\" || exit 125; shift; done; "
+                        + "shift; if [ -n \"$f\" ]; then exec \"$@\" " + FILTER_FD + "<\"$f\"; else exec \"$@\"; fi",
+                "sh", spaceFilter == null ? "" : spaceFilter.toString()));
+        if (cgroup != null) {
+            cgroup.folders().forEach(group -> command.add(group.toString()));
+        }
+        command.add("--");
+        return command;
     }
 
     /** Where this program's own classes and libraries are: its class path and its own jar or folder. */
@@ -281,10 +354,10 @@ public final class Sandbox {
     }
 
     /**
-     * The folders holding {@code code} (jars: the folder they are in; class folders: themselves)
-     * that lie inside {@code system}, the part of the file system the sandbox shows.
+     * The folders holding {@code code} (files such as jars: the folder they are in; folders:
+     * themselves) that lie inside {@code system}, a part of the file system the sandbox shows.
      */
-    static List<Path> ownCodeUnder(Path system, List<Path> code) {
+    static List<Path> foldersUnder(Path system, List<Path> code) {
         List<Path> folders = new ArrayList<>();
         for (Path entry : code) {
             Path real;

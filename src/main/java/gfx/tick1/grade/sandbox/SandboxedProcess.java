@@ -91,9 +91,13 @@ final class SandboxedProcess {
                 tail.join(1000);
                 kill(process);
                 String reached = started.limitReached();
-                return new Run(waited.finished() && waited.overOutputCap() == null, process.exitValue(),
+                // Counted once more now that nothing of the run's can write: what it wrote after the last
+                // count, or in the moments before it ended, counts as much as what it wrote before.
+                String over = waited.overOutputCap() != null ? waited.overOutputCap()
+                        : OutputCount.overCap(request.output());
+                return new Run(waited.finished() && over == null, process.exitValue(),
                         ChildOutput.printable(tail.text()), waited.compiledAt() >= 0, waited.compileNanos(),
-                        waited.overOutputCap() != null ? waited.overOutputCap() : reached);
+                        over != null ? over : reached);
             } finally {
                 running = null;
             }

@@ -22,6 +22,12 @@ public final class WorkFolder {
     /** The names {@code grade} gives report images: 2-hidden-diff.png, 1-tick1-yours.png, ... */
     private static final Pattern REPORT_IMAGE = Pattern.compile("\\d+-.+-(diff|yours|expected)\\.png");
 
+    /**
+     * The free space a grade's work folder needs for one run: what the run's output folder may
+     * hold ({@link OutputCount#BYTES_CAP}). With less, a failed run may be the disk's doing.
+     */
+    public static final long RUN_SPACE = OutputCount.BYTES_CAP;
+
     private WorkFolder() {
     }
 

@@ -24,7 +24,7 @@ class SandboxTest {
         Path classes = Files.createDirectories(system.resolve("lib/tick1/classes"));
         Path elsewhere = Files.writeString(Files.createDirectories(dir.resolve("home")).resolve("tick1.jar"), "a jar");
 
-        assertThat(Sandbox.ownCodeUnder(system.toRealPath(), List.of(jar, picocli, classes, elsewhere,
+        assertThat(Sandbox.foldersUnder(system.toRealPath(), List.of(jar, picocli, classes, elsewhere,
                 dir.resolve("missing.jar"))))
                 .containsExactly(lib.toRealPath(), classes.toRealPath());
     }
@@ -33,6 +33,6 @@ class SandboxTest {
     void theSystemFolderItselfIsNeverHidden() throws IOException {
         Path system = Files.createDirectories(dir.resolve("usr"));
         Path jar = Files.writeString(system.resolve("tick1.jar"), "a jar");
-        assertThat(Sandbox.ownCodeUnder(system.toRealPath(), List.of(jar, system))).isEmpty();
+        assertThat(Sandbox.foldersUnder(system.toRealPath(), List.of(jar, system))).isEmpty();
     }
 }
