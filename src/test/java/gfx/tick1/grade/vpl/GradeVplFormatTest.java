@@ -94,7 +94,8 @@ class GradeVplFormatTest {
                 "k_d * NdotL").renderer());
         String comment = VplParser.proposedComment(VplParser.throughPty(run.out()));
 
-        assertThat(VplParser.titles(comment)).as(run.transcript()).contains("tick1.xml: failed", "hidden scene 1: failed");
+        assertThat(VplParser.titles(comment)).as(run.transcript())
+                .contains("tick1.xml: failed", "hidden scene 1: failed");
         assertThat(section(comment, "hidden scene 1: failed")).as("what the hidden scene's section says")
                 .containsExactly("the image is wrong");
         assertThat(section(comment, VplParser.titles(comment).get(0))).as("the verdict's lines")

@@ -60,7 +60,8 @@ class VplReportTest {
                         + "for a hidden scene)")), List.of(), TEN));
         String comment = VplParser.proposedComment(report);
 
-        assertThat(VplParser.titles(comment)).as("the titles").containsExactly("Tick 1: failed", "hidden scene 1: failed");
+        assertThat(VplParser.titles(comment)).as("the titles")
+                .containsExactly("Tick 1: failed", "hidden scene 1: failed");
         assertThat(VplParser.lines(comment)).as("the comment's lines").map(VplParser.Line::text)
                 .noneMatch(line -> line.contains("IllegalStateException"))
                 .contains("FAILED: 1 of 2 scenes wrong.", "the code threw an exception");
