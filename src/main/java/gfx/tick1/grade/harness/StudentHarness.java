@@ -163,7 +163,7 @@ public final class StudentHarness {
                     ImageIO.write(image, "png", output.resolve(index + ".png").toFile());
                     trace(student, scenes.get(index), width, height, output.resolve(index + TRACE_SUFFIX));
                 } catch (Throwable failure) { // the student's code may throw anything, errors included
-                    Files.writeString(output.resolve(index + ".error"), describe(failure), StandardCharsets.UTF_8);
+                    writeFailure(output.resolve(index + ".error"), failure);
                 }
                 log(progress, "end " + index);
             }
@@ -213,19 +213,45 @@ public final class StudentHarness {
     }
 
     /**
+     * Writes what {@code failure} was into {@code file}: a message the code made may hold a lone surrogate, which
+     * {@link String#getBytes} writes as '?' where {@link Files#writeString} would throw; and the code's
+     * exception may throw from its own toString or getStackTrace, which leaves only its class's name.
+     */
+    static void writeFailure(Path file, Throwable failure) throws IOException {
+        Throwable cause = failure instanceof StudentCodeException ? failure.getCause() : failure;
+        String text;
+        try {
+            text = describe(cause);
+        } catch (Throwable thrown) { // the exception's own methods are the student's code
+            text = cause.getClass().getName();
+        }
+        Files.write(file, text.getBytes(StandardCharsets.UTF_8));
+    }
+
+    /**
      * The exception, then its stack frames in the student's and the starter's code: the classes
      * of package gfx.tick1 itself, not of this harness in gfx.tick1.grade.
      */
-    private static String describe(Throwable failure) {
-        Throwable cause = failure instanceof StudentCodeException ? failure.getCause() : failure;
+    private static String describe(Throwable cause) {
         List<String> lines = new ArrayList<>();
-        lines.add(cause instanceof OutOfMemoryError ? cause + " (the memory limit was reached)" : cause.toString());
+        lines.add(reachedTheMemoryLimit(cause) ? cause + " (the memory limit was reached)" : cause.toString());
         for (StackTraceElement frame : cause.getStackTrace()) {
             if (frame.getClassName().matches("gfx\\.tick1\\.[^.]+") && lines.size() <= 8) {
                 lines.add("at " + frame);
             }
         }
         return String.join("\n", lines);
+    }
+
+    /**
+     * An OutOfMemoryError of the heap or the metaspace, the limits the grader sets (its messages are HotSpot's,
+     * "Java heap space", "GC overhead limit exceeded", "Metaspace", "Compressed class space"); not one such as
+     * "unable to create native thread", which is the limit on threads or the machine's own memory.
+     */
+    private static boolean reachedTheMemoryLimit(Throwable cause) {
+        String message = cause instanceof OutOfMemoryError ? cause.getMessage() : null;
+        return message != null && (message.startsWith("Java heap space") || message.startsWith("GC overhead limit")
+                || message.startsWith("Metaspace") || message.startsWith("Compressed class space"));
     }
 
     private static void log(Path progress, String line) throws IOException {

@@ -30,7 +30,8 @@ public final class VplReport {
 
     /**
      * The report of {@code result}: the verdict and its reason, each failing scene's explanation (the
-     * figures, the diagnosis, what to reread), or the compile errors; then the grade of {@code range}.
+     * figures, the diagnosis, what to reread; of a hidden scene, only {@link HiddenSceneFailure}'s words), or
+     * the compile errors; then the grade of {@code range}.
      *
      * @param compileErrors the compiler's errors when the code did not compile, each
      *                      {@code Sphere.java:L:C: error: ...} and the lines it quotes; else empty
@@ -38,7 +39,8 @@ public final class VplReport {
     public static String of(StudentResult result, List<String> compileErrors, GradeRange range) {
         List<String> lines = new ArrayList<>();
         lines.add(BEGIN);
-        lines.add(VplText.title(result.passed() ? PASSED : FAILED + ": " + result.diagnosis()));
+        boolean hiddenOnly = failedOnlyOnHiddenScenes(result.scenes());
+        lines.add(VplText.title(result.passed() ? PASSED : hiddenOnly ? FAILED : FAILED + ": " + result.diagnosis()));
         if (!compileErrors.isEmpty()) {
             lines.addAll(VplText.quoted(result.reason().substring(0, reasonHead(result.reason())), MOST_LINES));
             compileErrors.stream().limit(MOST_ERRORS).forEach(error -> lines.addAll(VplText.quoted(error,
@@ -47,7 +49,8 @@ public final class VplReport {
                 lines.add(">[" + (compileErrors.size() - MOST_ERRORS) + " more errors not shown]");
             }
         } else {
-            lines.addAll(VplText.quoted(result.reason(), MOST_LINES));
+            lines.addAll(VplText.quoted(anyHiddenSceneFailed(result.scenes()) ? scenesWrong(result.scenes())
+                    : result.reason(), MOST_LINES));
             lines.addAll(scenes(result.scenes()));
         }
         lines.add(END);
@@ -71,9 +74,28 @@ public final class VplReport {
                 continue;
             }
             lines.add(VplText.title(name + ": failed"));
-            lines.addAll(VplText.quoted(String.join("\n", scene.explanation()), MOST_LINES));
+            lines.addAll(VplText.quoted(scene.hidden() ? HiddenSceneFailure.of(scene).words()
+                    : String.join("\n", scene.explanation()), MOST_LINES));
         }
         return lines;
+    }
+
+    private static boolean anyHiddenSceneFailed(List<SceneResult> scenes) {
+        return scenes.stream().anyMatch(scene -> scene.hidden() && !scene.passed());
+    }
+
+    /** The diagnosis then came from a hidden scene, and says what its image is. */
+    private static boolean failedOnlyOnHiddenScenes(List<SceneResult> scenes) {
+        return anyHiddenSceneFailed(scenes) && scenes.stream().allMatch(scene -> scene.hidden() || scene.passed());
+    }
+
+    /**
+     * The verdict's line where a hidden scene failed: the grade's own reason speaks of every scene, and of a
+     * hidden one it may name a mistake its image shows or the exception the code threw.
+     */
+    private static String scenesWrong(List<SceneResult> scenes) {
+        long wrong = scenes.stream().filter(scene -> !scene.passed()).count();
+        return "FAILED: " + wrong + " of " + scenes.size() + " scene" + (scenes.size() == 1 ? "" : "s") + " wrong.";
     }
 
     /**

@@ -8,6 +8,7 @@ import gfx.tick1.grade.vpl.VplParser.Annotation;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -70,6 +71,35 @@ class GradeVplFormatTest {
         assertThat(VplParser.titles(comment)).as("the titles")
                 .containsExactly("Tick 1: failed: exception", "tick1.xml: failed", "hidden scene 1: failed");
         assertThat(run.out().lines().toList()).as("the report's last line").last().isEqualTo("Grade :=>>0");
+    }
+
+    /** What the editor shows under {@code title}, up to the next title. */
+    private static List<String> section(String comment, String title) {
+        List<String> shown = new ArrayList<>();
+        boolean in = false;
+        for (VplParser.Line line : VplParser.lines(comment)) {
+            if (line.kind() == VplParser.Kind.TITLE) {
+                in = line.text().equals(title);
+            } else if (in && !line.text().isBlank()) {
+                shown.add(line.text());
+            }
+        }
+        return shown;
+    }
+
+    @Test
+    void aWrongImageOnAHiddenSceneIsSaidInFixedWordsWithNoFigures() throws IOException {
+        // N.L not clamped (the handout's Figure 6b): wrong on tick1.xml and on the hidden scene.
+        CliRun run = grade("Sphere.java", sphere(), StudentSolution.correct().editRenderer("k_d * Math.max(0, NdotL)",
+                "k_d * NdotL").renderer());
+        String comment = VplParser.proposedComment(VplParser.throughPty(run.out()));
+
+        assertThat(VplParser.titles(comment)).as(run.transcript())
+                .contains("tick1.xml: failed", "hidden scene 1: failed");
+        assertThat(section(comment, "hidden scene 1: failed")).as("what the hidden scene's section says")
+                .containsExactly("the image is wrong");
+        assertThat(section(comment, VplParser.titles(comment).get(0))).as("the verdict's lines")
+                .noneMatch(line -> line.contains("hidden") || line.contains("A hidden scene"));
     }
 
     @Test

@@ -12,7 +12,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.BeforeAll;
@@ -78,30 +80,29 @@ class VplEvaluateTest {
 
     /** Lays out the VPL home folder and runs the evaluation in the jail of {@code mode}. */
     private Evaluation evaluate(String mode, StudentSolution solution) throws IOException, InterruptedException {
+        return evaluate(mode, solution, Map.of());
+    }
+
+    /**
+     * Lays out the VPL home folder with the student's two files and {@code more} files they submitted (name to
+     * text), and runs the evaluation in the jail of {@code mode}.
+     */
+    private Evaluation evaluate(String mode, StudentSolution solution, Map<String, String> more) throws IOException,
+            InterruptedException {
         Path home = Files.createDirectory(dir.resolve("p" + UID));
         try (Stream<Path> files = Files.list(activity)) {
             for (Path file : files.filter(f -> !f.getFileName().toString().equals(VplCommand.README)).toList()) {
                 Files.copy(file, home.resolve(file.getFileName()), java.nio.file.StandardCopyOption.COPY_ATTRIBUTES);
             }
         }
-        Files.writeString(home.resolve("Sphere.java"), solution.sphere());
-        Files.writeString(home.resolve("Renderer.java"), solution.renderer());
-        // As the jail writes it: VPL's variables, for the scripts to source.
-        Files.writeString(home.resolve("vpl_environment.sh"), """
-                #!/bin/bash
-                export VPL_SUBFILE0=Sphere.java
-                export VPL_SUBFILE1=Renderer.java
-                export VPL_SUBFILES="Sphere.java Renderer.java"
-                export VPL_MAXTIME=240
-                export VPL_MAXMEMORY=268435456
-                export VPL_MAXFILESIZE=67108864
-                export VPL_MAXPROCESSES=200
-                export VPL_GRADEMIN=0
-                export VPL_GRADEMAX=10
-                export VPL_EVALUATION_COUNT=1
-                export MOODLE_USER_ID=7
-                export MOODLE_USER_NAME="A Student"
-                """);
+        Map<String, String> submitted = new LinkedHashMap<>();
+        submitted.put("Sphere.java", solution.sphere());
+        submitted.put("Renderer.java", solution.renderer());
+        submitted.putAll(more);
+        for (Map.Entry<String, String> file : submitted.entrySet()) {
+            Files.writeString(home.resolve(file.getKey()), file.getValue());
+        }
+        Files.writeString(home.resolve("vpl_environment.sh"), environment(List.copyOf(submitted.keySet())));
         chown(home);
         Path jail = dir.resolve("jail.sh");
         try (InputStream in = VplEvaluateTest.class.getResourceAsStream("/vpl/jail.sh")) {
@@ -116,6 +117,37 @@ class VplEvaluateTest {
         assertThat(split).as("the evaluation ran to its end:\n" + printed).isNotNegative();
         return new Evaluation(printed.substring(0, split),
                 VplParser.throughPty(printed.substring(split + EXECUTION.length() + 1)), home);
+    }
+
+    /**
+     * vpl_environment.sh as VPL writes it for an evaluation (moodle-mod_vpl 4.4, vpl_submission_CE.class.php's
+     * prepare_execution_info and get_bash_export_for_subfiles, lib.php's vpl_bash_export): integers bare, other
+     * values in single quotes (the grades come from the gradebook as text), and VPL_SUBFILES in double quotes,
+     * one name a line, unescaped.
+     */
+    private static String environment(List<String> submitted) {
+        StringBuilder text = new StringBuilder("""
+                #!/bin/bash
+                export VPL_LANG='en_US.UTF-8'
+                export MOODLE_USER_ID=7
+                export MOODLE_USER_NAME='A Student'
+                export MOODLE_USER_EMAIL='student@example.org'
+                export VPL_MAXTIME=240
+                export VPL_MAXMEMORY=268435456
+                export VPL_MAXFILESIZE=67108864
+                export VPL_MAXPROCESSES=200
+                export VPL_GRADEMIN='0.00000'
+                export VPL_GRADEMAX='10.00000'
+                export VPL_PLN='java'
+                export VPL_COMPILATIONFAILED='The compilation or preparation of execution has failed'
+                """);
+        for (int i = 0; i < submitted.size(); i++) {
+            text.append("export VPL_SUBFILE").append(i).append("='").append(submitted.get(i).replace("'", "'\\''"))
+                    .append("'\n");
+        }
+        text.append("export VPL_SUBFILES=\"");
+        submitted.forEach(name -> text.append(name).append('\n'));
+        return text.append("\"\nexport VPL_VARIATION='-'\n").toString();
     }
 
     private static void chown(Path home) throws IOException, InterruptedException {
@@ -183,5 +215,21 @@ class VplEvaluateTest {
         assertThat(VplParser.titles(evaluation.comment())).as("the titles").containsExactly(VplReport.NOT_SET_UP);
         assertThat(evaluation.compilation()).as("the Compilation section")
                 .contains("not set up", "vpl-jail-system 5.x", "user namespaces");
+    }
+
+    @Test
+    void aThirdFileNamedToRunTheStudentsCodeRunsNothingAndProposesNoGrade() throws IOException,
+            InterruptedException {
+        // VPL writes the third name into VPL_SUBFILES unescaped: sourced, it would run Renderer.java as a script,
+        // which this first line makes one that leaves a mark.
+        StudentSolution solution = new StudentSolution(StudentSolution.correct().sphere(),
+                "//bin/true; touch ran-outside-the-sandbox; exit 0\n" + StudentSolution.correct().renderer());
+        Evaluation evaluation = evaluate("plain", solution, Map.of("$(bash Renderer.java)", "a third file\n"));
+
+        assertThat(evaluation.home().resolve("ran-outside-the-sandbox")).as("what Renderer.java run as a script "
+                + "leaves").doesNotExist();
+        assertThat(VplParser.proposedGrade(evaluation.execution())).as(evaluation.toString()).isEmpty();
+        assertThat(VplParser.titles(evaluation.comment())).as("the titles").containsExactly(VplReport.NOT_SET_UP);
+        assertThat(evaluation.compilation()).as("the Compilation section").contains("maximum number of files");
     }
 }

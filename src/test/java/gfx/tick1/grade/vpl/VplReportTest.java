@@ -52,6 +52,22 @@ class VplReportTest {
     }
 
     @Test
+    void aHiddenSceneOnWhichTheCodeThrewIsSaidInFixedWordsAndNotItsException() {
+        String report = received(VplReport.of(result(false, "exception", "FAILED: 1 of 2 scenes wrong. hidden scene "
+                + "1: the code threw java.lang.IllegalStateException (its message is not shown for a hidden scene).",
+                new SceneResult("tick1.xml", false, true, List.of(), null, null, null),
+                failed("secret.xml", true, "the code threw java.lang.IllegalStateException (its message is not shown "
+                        + "for a hidden scene)")), List.of(), TEN));
+        String comment = VplParser.proposedComment(report);
+
+        assertThat(VplParser.titles(comment)).as("the titles")
+                .containsExactly("Tick 1: failed", "hidden scene 1: failed");
+        assertThat(VplParser.lines(comment)).as("the comment's lines").map(VplParser.Line::text)
+                .noneMatch(line -> line.contains("IllegalStateException"))
+                .contains("FAILED: 1 of 2 scenes wrong.", "the code threw an exception");
+    }
+
+    @Test
     void aFailProposesTheMinimumGradeWithItsDiagnosisAsTitleAndItsReasonsBelow() {
         String report = received(VplReport.of(result(false, "N.L not clamped (Figure 6b)",
                 "FAILED: 1 of 2 scenes wrong. tick1.xml is exactly the image of \"N.L not clamped (Figure 6b)\".",
