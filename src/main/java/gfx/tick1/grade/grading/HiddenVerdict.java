@@ -1,5 +1,7 @@
 package gfx.tick1.grade.grading;
 
+import java.util.List;
+
 /**
  * All that tick1 says of a hidden scene, anywhere (the one-student output, feedback.txt and
  * feedback.html, grades.csv, the cohort page): one of these verdicts, in these fixed words. The
@@ -30,6 +32,21 @@ public enum HiddenVerdict {
     /** The verdict's fixed words. */
     public String words() {
         return words;
+    }
+
+    /**
+     * The verdict a hidden scene's explanation states: its first line is one verdict's words, as the
+     * grader wrote it. Whatever the lines hold, the answer is one of the verdicts (a failure whose
+     * words are not a verdict's is {@link #NO_IMAGE}), so a report that shows only the verdict's words
+     * shows nothing the code chose.
+     */
+    public static HiddenVerdict statedBy(List<String> explanation) {
+        for (HiddenVerdict verdict : values()) {
+            if (!explanation.isEmpty() && explanation.get(0).equals(verdict.words)) {
+                return verdict;
+            }
+        }
+        return NO_IMAGE;
     }
 
     /**

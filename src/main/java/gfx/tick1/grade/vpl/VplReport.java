@@ -1,5 +1,6 @@
 package gfx.tick1.grade.vpl;
 
+import gfx.tick1.grade.grading.HiddenVerdict;
 import gfx.tick1.grade.model.StudentResult;
 import gfx.tick1.grade.model.StudentResult.SceneResult;
 import java.util.ArrayList;
@@ -30,7 +31,7 @@ public final class VplReport {
 
     /**
      * The report of {@code result}: the verdict and its reason, each failing scene's explanation (the
-     * figures, the diagnosis, what to reread; of a hidden scene, only {@link HiddenSceneFailure}'s words), or
+     * figures, the diagnosis, what to reread; of a hidden scene, only its {@link HiddenVerdict}'s words), or
      * the compile errors; then the grade of {@code range}.
      *
      * @param compileErrors the compiler's errors when the code did not compile, each
@@ -74,7 +75,7 @@ public final class VplReport {
                 continue;
             }
             lines.add(VplText.title(name + ": failed"));
-            lines.addAll(VplText.quoted(scene.hidden() ? HiddenSceneFailure.of(scene).words()
+            lines.addAll(VplText.quoted(scene.hidden() ? HiddenVerdict.statedBy(scene.explanation()).words()
                     : String.join("\n", scene.explanation()), MOST_LINES));
         }
         return lines;

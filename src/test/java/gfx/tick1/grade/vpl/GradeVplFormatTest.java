@@ -3,6 +3,7 @@ package gfx.tick1.grade.vpl;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.grade.grading.HiddenVerdict;
 import gfx.tick1.grade.StudentSolution;
 import gfx.tick1.grade.vpl.VplParser.Annotation;
 import java.io.IOException;
@@ -97,7 +98,7 @@ class GradeVplFormatTest {
         assertThat(VplParser.titles(comment)).as(run.transcript())
                 .contains("tick1.xml: failed", "hidden scene 1: failed");
         assertThat(section(comment, "hidden scene 1: failed")).as("what the hidden scene's section says")
-                .containsExactly("the image is wrong");
+                .containsExactly(HiddenVerdict.WRONG.words());
         assertThat(section(comment, VplParser.titles(comment).get(0))).as("the verdict's lines")
                 .noneMatch(line -> line.contains("hidden") || line.contains("A hidden scene"));
     }

@@ -3,6 +3,7 @@ package gfx.tick1.grade.vpl;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import gfx.tick1.grade.grading.HiddenVerdict;
 import gfx.tick1.grade.model.StudentResult;
 import gfx.tick1.grade.model.StudentResult.SceneResult;
 import gfx.tick1.grade.model.Submission;
@@ -56,15 +57,14 @@ class VplReportTest {
         String report = received(VplReport.of(result(false, "exception", "FAILED: 1 of 2 scenes wrong. hidden scene "
                 + "1: the code threw java.lang.IllegalStateException (its message is not shown for a hidden scene).",
                 new SceneResult("tick1.xml", false, true, List.of(), null, null, null),
-                failed("secret.xml", true, "the code threw java.lang.IllegalStateException (its message is not shown "
-                        + "for a hidden scene)")), List.of(), TEN));
+                failed("secret.xml", true, HiddenVerdict.THREW.words())), List.of(), TEN));
         String comment = VplParser.proposedComment(report);
 
         assertThat(VplParser.titles(comment)).as("the titles")
                 .containsExactly("Tick 1: failed", "hidden scene 1: failed");
         assertThat(VplParser.lines(comment)).as("the comment's lines").map(VplParser.Line::text)
                 .noneMatch(line -> line.contains("IllegalStateException"))
-                .contains("FAILED: 1 of 2 scenes wrong.", "the code threw an exception");
+                .contains("FAILED: 1 of 2 scenes wrong.", HiddenVerdict.THREW.words());
     }
 
     @Test
