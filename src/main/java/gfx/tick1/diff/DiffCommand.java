@@ -114,40 +114,62 @@ public final class DiffCommand implements Callable<Integer> {
             }
         }
         Colours colours = new Colours(CommandLine.Help.Ansi.AUTO.enabled());
-        boolean differs = false;
+        List<String> report = new ArrayList<>();
+        boolean onlyMethodsDiffer = true;
         for (int i = 0; i < theirs.size(); i++) {
             String className = theirs.get(i).className();
             JavaMembers ours = ours(className);
-            List<String> report = compare(ours, starter(className, ours), theirs.get(i), files.get(i), colours);
-            report.forEach(out::println);
-            differs |= !report.isEmpty();
+            JavaMembers starter = starter(className, ours);
+            report.addAll(compare(ours, starter, theirs.get(i), files.get(i), colours));
+            onlyMethodsDiffer &= BEHAVIOUR_COVERS.containsAll(differingMembers(ours, starter, theirs.get(i)).keySet()
+                    .stream().filter(signature -> ours.members().containsKey(signature)).toList());
         }
-        if (differs) {
-            hints(theirs, out, colours);
+        if (report.isEmpty()) {
+            return EXIT_SAME;
         }
-        return differs ? EXIT_DIFFERENT : EXIT_SAME;
+        Hints.Said said = hints(theirs, out, colours);
+        report.forEach(out::println);
+        if (said != null) {
+            said.after().forEach(line -> out.println(colours.yellow(line)));
+        }
+        // Methods that behave as ours are no difference, however written; a changed render() or constructor is.
+        return said != null && said.behavesAsOurs() && onlyMethodsDiffer ? EXIT_SAME : EXIT_DIFFERENT;
     }
 
-    /** The hints of the probes of their methods, or the one line that says why there are none. */
-    private void hints(List<JavaMembers> theirs, PrintWriter out, Colours colours) {
+    /**
+     * The members whose meaning the behaviour comparison checks: the two methods it calls, and
+     * getNormalAt, whose answer is intersectionWith's normal. Members only in theirs are helpers of these or unused.
+     */
+    private static final Set<String> BEHAVIOUR_COVERS = Set.of("intersectionWith(Ray)", "getNormalAt(Vector3)",
+            "illuminate(Scene, Sphere, Vector3, Vector3)");
+
+    /**
+     * What their methods did, first, one line each (or why it could not be checked); null, with a
+     * line printed, when the files could not be given to the sandbox.
+     */
+    private Hints.Said hints(List<JavaMembers> theirs, PrintWriter out, Colours colours) {
         Map<String, String> given = new LinkedHashMap<>(), starter = new LinkedHashMap<>();
         for (int i = 0; i < theirs.size(); i++) {
             try {
                 given.put(theirs.get(i).className(), read(files.get(i)));
             } catch (IOException e) {
-                out.println(colours.yellow("no hints: " + files.get(i) + ": " + IoErrors.reason(e)));
-                return;
+                out.println(colours.yellow("behaviour could not be checked: " + files.get(i) + ": "
+                        + IoErrors.reason(e)));
+                return null;
             }
         }
-        // A file not given is the starter kit's: its methods' probes are not reported.
+        // A file not given is the starter kit's: its method is not reported.
         for (String className : StarterKit.STUDENT_CLASSES) {
             starter.put(className, StarterKit.source(className));
         }
         try {
-            Hints.of(given, starter).forEach(line -> out.println(colours.yellow(line)));
+            Hints.Said said = Hints.of(given, starter);
+            said.first().forEach(line -> out.println(colours.yellow(line)));
+            return said;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            out.println(colours.yellow("no hints: stopped before the probes of your methods had run"));
+            out.println(colours.yellow("behaviour could not be checked: stopped before your methods had run"));
+            return null;
         }
     }
 
@@ -158,9 +180,25 @@ public final class DiffCommand implements Callable<Integer> {
      */
     static List<String> compare(JavaMembers ours, JavaMembers starter, JavaMembers theirs, Path file,
             Colours colours) {
+        List<String> lines = new ArrayList<>();
+        differingMembers(ours, starter, theirs).forEach((signature, hunks) -> {
+            if (lines.isEmpty()) {
+                lines.add(colours.bold("--- ours: " + ours.className() + ".java"));
+                lines.add(colours.bold("+++ yours: " + file));
+            }
+            boolean mine = ours.members().containsKey(signature), yours = theirs.members().containsKey(signature);
+            lines.addAll(member(signature, !mine ? " (only in yours)" : !yours ? " (missing from yours)" : "", hunks,
+                    colours));
+        });
+        return lines;
+    }
+
+    /** The members that differ in meaning, by signature, with their hunks: in our order, then those only theirs has. */
+    static Map<String, List<List<LineDiff.Line>>> differingMembers(JavaMembers ours, JavaMembers starter,
+            JavaMembers theirs) {
         Set<String> signatures = new LinkedHashSet<>(ours.members().keySet());
         signatures.addAll(theirs.members().keySet());
-        List<String> lines = new ArrayList<>();
+        Map<String, List<List<LineDiff.Line>>> differing = new LinkedHashMap<>();
         for (String signature : signatures) {
             JavaMembers.Member our = ours.members().get(signature);
             JavaMembers.Member their = theirs.members().get(signature);
@@ -173,17 +211,11 @@ public final class DiffCommand implements Callable<Integer> {
             List<String> b = their == null ? List.of() : their.lines();
             List<List<LineDiff.Line>> hunks = LineDiff.hunks(a, our == null ? a : our.keyLines(), b,
                     their == null ? b : their.keyLines());
-            if (hunks.isEmpty()) {
-                continue;
+            if (!hunks.isEmpty()) {
+                differing.put(signature, hunks);
             }
-            if (lines.isEmpty()) {
-                lines.add(colours.bold("--- ours: " + ours.className() + ".java"));
-                lines.add(colours.bold("+++ yours: " + file));
-            }
-            lines.addAll(member(signature, a.isEmpty() ? " (only in yours)" : b.isEmpty() ? " (missing from yours)"
-                    : "", hunks, colours));
         }
-        return lines;
+        return differing;
     }
 
     /** One member's hunks, each headed by its signature. */

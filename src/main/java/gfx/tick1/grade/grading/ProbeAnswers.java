@@ -37,12 +37,17 @@ final class ProbeAnswers {
     record Failed(String how) implements Answer {
     }
 
-    private static final int MAX_LINES = 200;
+    /** Every call's line, the phong line, and a few to spare. */
+    private static final int MAX_LINES = ProbeCalls.INTERSECTIONS.size() + ProbeCalls.ILLUMINATIONS.size()
+            + 2 * ProbeCalls.RANDOM_COUNT + 10;
     private static final String NUMBER = "(-?(?:\\d{1,20}(?:\\.\\d{0,20})?(?:E-?\\d{1,3})?|Infinity)|NaN)";
-    private static final Pattern LINE = Pattern.compile("([a-z-]{1,20}) (?:hit ([01])((?: " + NUMBER + "){7})"
+    private static final Pattern PHONG = Pattern.compile("phong (set|fixed)");
+    private static final Pattern LINE = Pattern.compile("([a-z][a-z0-9-]{0,19}) (?:hit ([01])((?: " + NUMBER + "){7})"
             + "|(none)|colour((?: " + NUMBER + "){3})|(null|threw|timeout|absent))");
 
     private final Map<String, Answer> answers = new HashMap<>();
+    /** Whether the random shadings' k_d, k_s and n were set on the student's spheres (else the course's). */
+    private Boolean phongSet;
 
     private ProbeAnswers() {
     }
@@ -56,7 +61,14 @@ final class ProbeAnswers {
         Set<String> names = new HashSet<>();
         ProbeCalls.INTERSECTIONS.forEach(call -> names.add(call.name()));
         ProbeCalls.ILLUMINATIONS.forEach(call -> names.add(call.name()));
+        ProbeCalls.RANDOM_INTERSECTIONS.forEach(call -> names.add(call.name()));
+        ProbeCalls.RANDOM_ILLUMINATIONS.forEach(call -> names.add(call.name()));
         log.lines().limit(MAX_LINES).forEach(line -> {
+            Matcher phong = PHONG.matcher(line);
+            if (phong.matches() && parsed.phongSet == null) {
+                parsed.phongSet = phong.group(1).equals("set");
+                return;
+            }
             Matcher m = LINE.matcher(line);
             if (m.matches() && names.contains(m.group(1)) && !parsed.answers.containsKey(m.group(1))) {
                 parsed.answers.put(m.group(1), answer(m));
@@ -92,6 +104,11 @@ final class ProbeAnswers {
     /** Whether the log held any answer at all: without one, the probes did not run. */
     boolean any() {
         return !answers.isEmpty();
+    }
+
+    /** Whether the random shadings' spheres had their k_d, k_s and n set (else they kept the course's). */
+    boolean phongSet() {
+        return Boolean.TRUE.equals(phongSet);
     }
 
     /** The answer to the call {@code name}; "missing" when none was logged. */

@@ -41,8 +41,11 @@ public final class SubmissionGrader {
     public record Phases(long compileNanos, long renderNanos, long compareNanos) {
     }
 
-    /** One submission's grade: the result, whether its images could not be written, and the time by phase. */
-    public record Graded(StudentResult result, boolean imagesUnwritable, Phases phases) {
+    /**
+     * One submission's grade: the result, whether its images could not be written, the time by
+     * phase, and how its two methods behaved on the probes' inputs (not run: {@link Behaviour#ran} false).
+     */
+    public record Graded(StudentResult result, boolean imagesUnwritable, Phases phases, Behaviour behaviour) {
     }
 
     /** The cohort report's label for a pass, and for each kind of failure that is not a wrong image. */
@@ -134,7 +137,7 @@ public final class SubmissionGrader {
             compiled.errors().forEach(out::println);
             return new Graded(result(grade, submission, false, 0, DOES_NOT_COMPILE,
                     "FAILED: " + heading + ": " + compiled.errors().get(0).lines().findFirst().orElse("")),
-                    false, phases(grade));
+                    false, phases(grade), grade.probes.behaviour());
         }
         out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
                 + " with the starter code.");
@@ -261,7 +264,7 @@ public final class SubmissionGrader {
             String verdict = "FAILED: " + failures + " of " + count(scenes, "scene") + " wrong.";
             out.println(verdict);
             return new Graded(result(grade, submission, false, scenes - failures, diagnosis,
-                    verdict + reasons(grade)), grade.imagesUnwritable, phases(grade));
+                    verdict + reasons(grade)), grade.imagesUnwritable, phases(grade), grade.probes.behaviour());
         }
         out.println(CONGRATULATIONS);
         List<String> notes = grade.probes.notes();
@@ -272,16 +275,16 @@ public final class SubmissionGrader {
             grade.scenes.set(0, new SceneResult(first.name(), first.hidden(), true,
                     notes.stream().map(note -> "note: " + note).toList(), null, null, null));
         }
-        String reason = notes.isEmpty() ? CONGRATULATIONS : CONGRATULATIONS + " Note: "
-                + String.join("; ", grade.probes.facts()) + " (the course's scenes do not test this).";
-        return new Graded(result(grade, submission, true, scenes, PASSED, reason), false, phases(grade));
+        String reason = notes.isEmpty() ? CONGRATULATIONS : CONGRATULATIONS + " Note: " + String.join("; ", notes)
+                + ".";
+        return new Graded(result(grade, submission, true, scenes, PASSED, reason), false, phases(grade), grade.probes.behaviour());
     }
 
     /** A submission that fails before any scene is run: one line saying why. */
     private Graded failed(Grade grade, Submission submission, PrintWriter out, String diagnosis,
             String reason) {
         out.println("FAILED: " + reason);
-        return new Graded(result(grade, submission, false, 0, diagnosis, "FAILED: " + reason), false, phases(grade));
+        return new Graded(result(grade, submission, false, 0, diagnosis, "FAILED: " + reason), false, phases(grade), grade.probes.behaviour());
     }
 
     private StudentResult result(Grade grade, Submission submission, boolean passed, int scenesPassed,
@@ -344,21 +347,25 @@ public final class SubmissionGrader {
             }
             text.append(' ').append(name).append(": ").append(scene.explanation().get(0)).append('.');
         }
+        if (wrongImage && grade.exactly != null) {
+            text.append(' ').append(grade.exactly);
+        }
         if (grade.probes.anyFailed()) {
             text.append(' ').append(grade.probes.sentence());
-        } else if (wrongImage) {
-            text.append(' ').append(grade.exactly != null ? grade.exactly
-                    : grade.probes.ran() ? UNSURE_WITH_PROBES : UNSURE_WITHOUT_PROBES);
+        } else if (wrongImage && grade.exactly == null) {
+            text.append(' ').append(grade.probes.ran() ? UNSURE_WITH_PROBES : UNSURE_WITHOUT_PROBES);
         }
         return text.toString().replace("..", ".");
     }
 
-    /** Why a wrong image has no cause to name, when every probe holds. */
-    static final String UNSURE_WITH_PROBES = "Every probe of your intersectionWith and illuminate holds, so tick1 "
-            + "is unsure what makes the difference (see the feedback).";
-    /** Why a wrong image has no cause to name, when the probes did not run. */
-    static final String UNSURE_WITHOUT_PROBES = "The probes of your intersectionWith and illuminate did not run, "
-            + "so tick1 is unsure what makes the difference (see the feedback).";
+    /** Why a wrong image has no cause to name, when both methods behave as ours. */
+    static final String UNSURE_WITH_PROBES = "Your intersectionWith and illuminate behave as ours on every input "
+            + "tick1 tried, and no mistake of its catalogue gives this image, so tick1 does not recognise what makes "
+            + "the difference.";
+    /** Why a wrong image has no cause to name, when the methods could not be run on their own. */
+    static final String UNSURE_WITHOUT_PROBES = "Your intersectionWith and illuminate could not be run on their own "
+            + "inputs, and no mistake of tick1's catalogue gives this image, so tick1 does not recognise what makes "
+            + "the difference.";
 
     /**
      * Compares one student image with the references --reference allows, and, when it matches,
@@ -440,23 +447,23 @@ public final class SubmissionGrader {
                 mean[2], difference.psnr()));
         Diagnosis diagnosis = new Diagnoser().diagnose(image, scene.scene());
         boolean exact = diagnosis.verdict() == Diagnosis.Verdict.EXPLAINED;
-        boolean probesSay = grade.probes.anyFailed();
-        // What to reread comes from the failed probes; the image's own entry only when it matches exactly.
-        diagnosis.report().stream().filter(line -> !line.startsWith("reread:") || exact && !probesSay)
+        boolean behaviourSays = grade.probes.anyFailed();
+        // What to reread comes from the tested findings; the image's own entry only when it matches exactly.
+        diagnosis.report().stream().filter(line -> !line.startsWith("reread:") || exact && !behaviourSays)
                 .forEach(lines::add);
-        if (probesSay && !grade.probesShown) {
+        if (!grade.probesShown && (behaviourSays || !grade.probes.untested().isEmpty())) {
             lines.addAll(grade.probes.failureLines());
             grade.probesShown = true;
-        } else if (!probesSay && !exact) {
-            lines.add(grade.probes.ran() ? "probes: every probe of your intersectionWith and illuminate holds"
-                    : "probes: they did not run");
+        } else if (!behaviourSays && !exact) {
+            lines.add(grade.probes.noFindingLine());
         }
         if (exact && grade.exactly == null) {
             grade.exactly = (scene.hidden() ? "A hidden scene" : scene.name()) + " is exactly the image of \""
                     + diagnosis.explaining().get(0).variant().title() + "\".";
         }
-        return probesSay ? grade.probes.failedProbes().get(0).label()
-                : exact ? diagnosis.explaining().get(0).variant().title() : UNRECOGNISED;
+        // The chart counts exact matches first, then tested findings; never what the scenes cannot show.
+        return exact ? diagnosis.explaining().get(0).variant().title()
+                : behaviourSays ? grade.probes.label() : UNRECOGNISED;
     }
 
     /** Writes the images of a scene that is not hidden: heat map, theirs, the reference. */
