@@ -31,8 +31,8 @@ import picocli.CommandLine.Spec;
  * sides are parsed; comments, layout, the package, imports and the order of members are set
  * aside, members are matched by signature, a member that means the same as ours (or, where the
  * starter code gives it whole, as the starter's) is left out ({@link SameMeaning}), and what still
- * differs is shown as a unified diff, member by member. The hints after it come only from probes
- * of the student's own methods, run in the sandbox as {@code grade} runs them ({@link Hints}).
+ * differs is shown as a unified diff, member by member. Before it, one line a method says how the
+ * student's own methods behaved, run in the sandbox as {@code grade} runs them ({@link Hints}).
  */
 @Command(name = "diff",
         description = {"Shows where your Sphere.java and Renderer.java differ from ours in meaning.",
@@ -42,15 +42,15 @@ import picocli.CommandLine.Spec;
                     + "do not depend on each other. Fields, constructors and methods are matched by signature; each "
                     + "one that still differs from ours (and, for what the starter code gives whole, from the "
                     + "starter's) is shown as a unified diff (- ours, + yours). When something differs and the "
-                    + "files compile, your intersectionWith and illuminate are run in the sandbox on fixed inputs, "
-                    + "and each property they get wrong is a hint with the handout section to reread; without the "
-                    + "sandbox there are no hints, and a line says why. A file is recognised by its class. Colour "
-                    + "on a terminal only."})
+                    + "files compile, your intersectionWith and illuminate are first run in the sandbox on the inputs "
+                    + "grade uses, and one line each says that it behaves as ours or where it does not; exit 0 when "
+                    + "they behave as ours and nothing else differs. Without the sandbox a line says behaviour could "
+                    + "not be checked. A file is recognised by its class. Colour on a terminal only."})
 public final class DiffCommand implements Callable<Integer> {
 
-    @ExitStatus("nothing differs in meaning (and nothing is printed)")
+    @ExitStatus("nothing differs in meaning, or only the methods that behave as ours on every input")
     public static final int EXIT_SAME = 0;
-    @ExitStatus("something differs")
+    @ExitStatus("something else differs, a method does not behave as ours, or behaviour could not be checked")
     public static final int EXIT_DIFFERENT = 1;
     @ExitStatus("a file cannot be read or parsed, or is not a Sphere or Renderer class")
     public static final int EXIT_CANNOT_COMPARE = 2;

@@ -34,7 +34,7 @@ public final class CodeProbe {
     }
 
     /** The words of a method's line when it behaves as ours. */
-    static final String BEHAVES_AS_OURS = ": behaves as ours on ";
+    static final String BEHAVES_AS_OURS = " behaves as ours on ";
 
     private static final Duration TIME_LIMIT = Duration.ofSeconds(30);
     private static final int MEMORY_MEGABYTES = 512;
@@ -107,12 +107,13 @@ public final class CodeProbe {
                 continue;
             }
             if (method.behavesAsOurs()) {
-                behaviour.add(method.method() + BEHAVES_AS_OURS + SubmissionGrader.count(method.inputs(), "input"));
+                behaviour.add("your " + method.method() + BEHAVES_AS_OURS + SubmissionGrader.count(method.inputs(),
+                        "input"));
             } else {
                 ours = false;
                 ProbeFindings.Finding finding = findings.tested().stream()
                         .filter(f -> f.method().equals(method.method())).findFirst().orElseThrow();
-                behaviour.add(method.method() + ": " + finding.fact());
+                behaviour.add(finding.fact());
                 hints.add("hint: reread handout " + finding.section() + ".");
             }
             method.untested().forEach(note -> hints.add("note: " + note));
