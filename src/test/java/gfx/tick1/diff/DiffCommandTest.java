@@ -101,7 +101,8 @@ class DiffCommandTest {
                         "Vector3 ambient = C_diff.scale(I_a);", "Vector3 ambient = I_a;"),
                 Arguments.of(Variant.SPECULAR_WITHOUT_I, "Renderer", ILLUMINATE,
                         "C_spec.scale(I).scale(k_s", "C_spec.scale(k_s"),
-                Arguments.of(Variant.UNNORMALISED_L_V, "Renderer", ILLUMINATE,
+                // V alone not normalised: no entry's model gives its answers (the catalogue's leaves L so too).
+                Arguments.of(null, "Renderer", ILLUMINATE,
                         "Vector3 V = P.scale(-1).normalised();", "Vector3 V = P.scale(-1);"),
                 Arguments.of(Variant.UNCLAMPED_N_DOT_L, "Renderer", ILLUMINATE,
                         "k_d * Math.max(0, NdotL)", "k_d * NdotL"),
@@ -289,6 +290,25 @@ class DiffCommandTest {
         assertThat(hints(run)).as(run.transcript()).isEmpty();
     }
 
+    static Stream<gfx.tick1.grade.grading.WrittenStyles.Style> writtenStyles() {
+        return gfx.tick1.grade.grading.WrittenStyles.all().values().stream();
+    }
+
+    /** A correct solution of a style of its own behaves as ours: no hint, no note, exit 0. */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("writtenStyles")
+    void aCorrectSolutionOfAStyleOfItsOwnExitsZeroWithNoHintAndNoNote(gfx.tick1.grade.grading.WrittenStyles.Style style)
+            throws IOException, InterruptedException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
+        Path folder = Files.createDirectories(styles.resolve("written-" + Math.abs(style.name().hashCode())));
+        CliRun run = CliRun.of("diff", Files.writeString(folder.resolve("Sphere.java"), style.sphere()).toString(),
+                Files.writeString(folder.resolve("Renderer.java"), style.renderer()).toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
+        assertThat(hints(run)).as(run.transcript()).isEmpty();
+        assertThat(run.out().lines().limit(2)).as(run.transcript()).allMatch(line -> line.startsWith("your ")
+                && line.contains(" behaves as ours on "));
+    }
+
     @Test
     void withoutTheSandboxThereAreNoHintsAndOneLineSaysWhy() throws IOException {
         Path file = write("Renderer.java", StarterKit.source("Renderer"));
@@ -329,6 +349,11 @@ class DiffCommandTest {
             assertThat(run.out()).as(run.transcript()).startsWith("your " + called + " behaves as ours on ");
             assertThat(run.status()).as(run.transcript()).isEqualTo(method.equals(RENDER) ? DiffCommand.EXIT_DIFFERENT
                     : DiffCommand.EXIT_SAME);
+        } else if (mistake == null) {
+            assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+            assertThat(run.out().lines().findFirst().orElse("")).as(run.transcript())
+                    .startsWith("your " + called + " differs from ours on ").contains("; the simplest: for ")
+                    .endsWith("; tick1 does not recognise this mistake");
         } else {
             assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
             assertThat(run.out()).as(run.transcript()).startsWith("your " + called + " gives the answers of \""

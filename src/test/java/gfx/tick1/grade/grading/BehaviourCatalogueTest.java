@@ -148,6 +148,25 @@ class BehaviourCatalogueTest {
         }
     }
 
+    /**
+     * A slip the catalogue has no model of (one channel of the specular term takes another's
+     * light) is shown by its simplest counterexample, in which only that channel differs, and
+     * said to be unrecognised: never named as something it is not.
+     */
+    @Test
+    void aMistakeWithoutAModelIsShownByItsSimplestCounterexampleAndNotNamed(@TempDir Path folder) throws Exception {
+        ProbeFindings findings = ProbedSolution.correct().renderer(
+                "Vector3 specular = C_spec.scale(I).scale(k_s * Math.pow(Math.max(0, RdotV), n));",
+                "Vector3 specular = C_spec.scale(new Vector3(I.x, I.y, I.y)).scale(k_s * Math.pow(Math.max(0, RdotV), "
+                        + "n));").findings(folder);
+        MethodBehaviour illuminate = findings.behaviour().illuminate();
+        assertThat(illuminate.mistake()).as("the entries named").isEmpty();
+        assertThat(findings.facts()).as("the findings").singleElement().asString()
+                .startsWith("your illuminate differs from ours on ").contains("; the simplest: for ")
+                .endsWith("; tick1 does not recognise this mistake");
+        assertThat(findings.behaviour().intersectionWith().behavesAsOurs()).as("intersectionWith, untouched").isTrue();
+    }
+
     @Test
     void everyEntryOfTheCatalogueIsHeldAgainstItsModel() {
         Set<String> named = catalogue().keySet();

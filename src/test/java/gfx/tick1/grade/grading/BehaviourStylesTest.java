@@ -124,6 +124,19 @@ class BehaviourStylesTest {
                 """)));
     }
 
+    /** Styles of this project's own writing, each as its two files. */
+    static Stream<Arguments> writtenStyles() {
+        return WrittenStyles.all().values().stream().map(style -> Arguments.of(style.name(),
+                new ProbedSolution(style.sphere(), style.renderer())));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("writtenStyles")
+    void aCorrectSolutionOfOurOwnStyleBehavesAsOurs(String style, ProbedSolution solution, @TempDir Path folder)
+            throws Exception {
+        aCorrectSolutionInAnotherStyleBehavesAsOurs(style, solution, folder);
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("styles")
     void aCorrectSolutionInAnotherStyleBehavesAsOurs(String style, ProbedSolution solution, @TempDir Path folder)
