@@ -133,7 +133,8 @@ public enum Variant {
     KD_SWAPPED_WITH_KS("k_d swapped with k_s", "",
             "the diffuse term uses k_s and the specular term k_d; the course's spheres all have k_d = k_s, so "
                     + "their images do not show it",
-            "section 5, \"The Phong illumination model\" (C_diff k_d I max(0, N.L) + C_spec k_s I max(0, R.V)^n)", false),
+            "section 5, \"The Phong illumination model\" (C_diff k_d I max(0, N.L) + C_spec k_s I max(0, R.V)^n)",
+            false),
     HIGHLIGHT_COLOURED("highlight coloured by C_diff", "",
             "the specular term uses the sphere's colour C_diff where C_spec is white, so the highlights take the "
                     + "sphere's colour",

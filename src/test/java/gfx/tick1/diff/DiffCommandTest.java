@@ -358,7 +358,8 @@ class DiffCommandTest {
             assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
             assertThat(run.out()).as(run.transcript()).startsWith("your " + called + " gives the answers of \""
                     + mistake.title() + "\" on all ");
-            assertThat(hints(run)).as(run.transcript()).containsExactly("hint: reread handout " + mistake.reread() + ".");
+            assertThat(hints(run)).as(run.transcript())
+                    .containsExactly("hint: reread handout " + mistake.reread() + ".");
         }
         assertThat(run.out()).doesNotContain("\u001B[");
     }

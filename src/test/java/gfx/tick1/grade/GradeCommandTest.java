@@ -94,7 +94,8 @@ class GradeCommandTest {
         Variant mistake = Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT;
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
         assertThat(run.out()).as(run.transcript()).contains("tick1.xml: PASS", "camera-inside-sphere.xml: FAIL",
-                "  closest: " + mistake.title() + " (100.000% of pixels exact", "  reread: handout " + mistake.reread());
+                "  closest: " + mistake.title() + " (100.000% of pixels exact",
+                "  reread: handout " + mistake.reread());
         assertThat(run.out()).as("the handout's six steps find no hit from inside either: a correct answer")
                 .doesNotContain("  behaviour: ", "  note: ");
     }

@@ -79,6 +79,7 @@ final class Mistakes {
                 Arguments.of(Variant.DIFFUSE_WITHOUT_C_DIFF, correct.editRenderer("C_diff.scale(I).scale(k_d",
                         "I.scale(k_d")),
                 Arguments.of(Variant.L_FROM_THE_LIGHT, correct.editRenderer(
-                        "light.getPosition().subtract(P).normalised()", "P.subtract(light.getPosition()).normalised()")));
+                        "light.getPosition().subtract(P).normalised()",
+                        "P.subtract(light.getPosition()).normalised()")));
     }
 }

@@ -87,7 +87,8 @@ public final class CodeProbe {
                 "Sphere.java", "Renderer.java", 1, 1, TIME_LIMIT, true);
         if (!run.compiled().compiled()) {
             return Hints.none("behaviour could not be checked: it comes from running your "
-                    + "methods, and the files do not compile with the starter code" + (run.compiled().failure() == null ? ""
+                    + "methods, and the files do not compile with the starter code"
+                    + (run.compiled().failure() == null ? ""
                     : " (" + run.compiled().failure() + ")"));
         }
         ProbeFindings findings = ProbeFindings.of(run.rendered().probes());

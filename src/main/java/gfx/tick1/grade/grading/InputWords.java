@@ -116,7 +116,8 @@ final class InputWords {
 
     static double roughness(ProbeCalls.Illumination call) {
         return roughness(concat(call.point(), call.normal(), call.colour(), call.ambient(), call.light(),
-                call.lightColour(), new double[] {call.kD(), call.kS(), call.n() / 10, call.intensity() / (4 * Math.PI)}));
+                call.lightColour(), new double[] {call.kD(), call.kS(), call.n() / 10,
+                    call.intensity() / (4 * Math.PI)}));
     }
 
     private static double[] concat(double[]... parts) {

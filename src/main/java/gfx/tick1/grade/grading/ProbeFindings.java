@@ -48,7 +48,8 @@ final class ProbeFindings {
         if (!b.mistake().isEmpty()) {
             List<String> explained = b.mistake().stream().map(Variant::explanation).toList();
             return new Finding(b.method(), "your " + b.method() + " gives the answers of \""
-                    + BehaviourJudge.titles(b.mistake()) + "\" on all " + inputs + ": " + String.join("; and ", explained)
+                    + BehaviourJudge.titles(b.mistake()) + "\" on all " + inputs + ": "
+                    + String.join("; and ", explained)
                     + "; for example, " + b.counterexample(), b.mistake().get(0).reread(),
                     String.join(" + ", b.mistake().stream().map(Variant::title).toList()));
         }
@@ -95,7 +96,7 @@ final class ProbeFindings {
         return tested.stream().map(Finding::fact).toList();
     }
 
-    /** "behaviour: ..." lines for a failure's explanation, then the untested notes, then "reread: handout ..." lines. */
+    /** "behaviour: ..." lines for a failure's explanation, then the untested notes, then "reread: ..." lines. */
     List<String> failureLines() {
         List<String> lines = new ArrayList<>();
         tested.forEach(f -> lines.add("behaviour: " + f.fact()));
@@ -107,7 +108,8 @@ final class ProbeFindings {
     /** The line for a wrong image when no method differs: what the comparison did find. */
     String noFindingLine() {
         return behaviour.ran() ? "behaviour: your intersectionWith and illuminate behave as ours on "
-                + SubmissionGrader.count(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(), "input")
+                + SubmissionGrader.count(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(),
+                        "input")
                 : "behaviour: your intersectionWith and illuminate could not be checked: the harness logged no answer";
     }
 

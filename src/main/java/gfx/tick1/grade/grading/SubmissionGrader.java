@@ -27,6 +27,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 
 /**
  * Grades one submission as the course's tester does: compiles the two files with the starter
@@ -94,8 +95,12 @@ public final class SubmissionGrader {
     private record Started(StudentProcess.Compiled compiled, Path classes, long renderStart) {
     }
 
-    /** Every scene's outcome and traced samples in grading order, the probes' log, and what the code printed. */
-    private record Rendered(List<Outcome> outcomes, List<String> traces, String probes, String publicPrinted) {
+    /**
+     * Every scene's outcome and traced samples in grading order, what the behaviour comparison
+     * found (judged while the hidden scenes render), and what the code printed.
+     */
+    private record Rendered(List<Outcome> outcomes, List<String> traces, CompletableFuture<ProbeFindings> probes,
+            String publicPrinted) {
     }
 
     /**
@@ -144,7 +149,7 @@ public final class SubmissionGrader {
         Rendered rendered = renderAll(started, work);
         long compareStart = System.nanoTime();
         grade.renderNanos = compareStart - started.renderStart();
-        grade.probes = ProbeFindings.of(rendered.probes());
+        grade.probes = rendered.probes().join();
         Graded graded = compare(grade, submission, code, started.classes(), rendered, images, out, err);
         return graded;
     }
@@ -187,7 +192,8 @@ public final class SubmissionGrader {
         long deadline = started.renderStart() + limits.timeLimit().toNanos();
         List<Outcome> outcomes = new ArrayList<>();
         List<String> traces = new ArrayList<>();
-        String probes = null, publicPrinted = "";
+        CompletableFuture<ProbeFindings> probes = null;
+        String publicPrinted = "";
         for (boolean hidden : new boolean[] {false, true}) {
             List<GradingScene> batch = grading.batch(hidden);
             if (batch.isEmpty()) {
@@ -207,10 +213,13 @@ public final class SubmissionGrader {
             traces.addAll(result.traces());
             if (!hidden) {
                 publicPrinted = result.outputTail();
-                probes = result.probes();
+                // The answers are judged in the grader while the hidden scenes render in their own JVM.
+                String log = result.probes();
+                probes = CompletableFuture.supplyAsync(() -> ProbeFindings.of(log));
             }
         }
-        return new Rendered(outcomes, traces, probes, publicPrinted);
+        return new Rendered(outcomes, traces, probes == null ? CompletableFuture.completedFuture(ProbeFindings.of(null))
+                : probes, publicPrinted);
     }
 
     /** Compares every scene's outcome, then gives the verdict with its reasons. */
@@ -277,14 +286,16 @@ public final class SubmissionGrader {
         }
         String reason = notes.isEmpty() ? CONGRATULATIONS : CONGRATULATIONS + " Note: " + String.join("; ", notes)
                 + ".";
-        return new Graded(result(grade, submission, true, scenes, PASSED, reason), false, phases(grade), grade.probes.behaviour());
+        return new Graded(result(grade, submission, true, scenes, PASSED, reason), false, phases(grade),
+                grade.probes.behaviour());
     }
 
     /** A submission that fails before any scene is run: one line saying why. */
     private Graded failed(Grade grade, Submission submission, PrintWriter out, String diagnosis,
             String reason) {
         out.println("FAILED: " + reason);
-        return new Graded(result(grade, submission, false, 0, diagnosis, "FAILED: " + reason), false, phases(grade), grade.probes.behaviour());
+        return new Graded(result(grade, submission, false, 0, diagnosis, "FAILED: " + reason), false, phases(grade),
+                grade.probes.behaviour());
     }
 
     private StudentResult result(Grade grade, Submission submission, boolean passed, int scenesPassed,
@@ -328,8 +339,8 @@ public final class SubmissionGrader {
 
     /**
      * A failure's reasons for the gradebook's row, in one sentence: the scenes that gave no image
-     * or an image their code does not give, by their first lines; then the failed probes' facts;
-     * failing those, an exact match with a catalogue entry, or that tick1 is unsure. A hidden
+     * or an image their code does not give, by their first lines; then the catalogue's exact image
+     * match; then the tested findings; failing both, that tick1 does not recognise it. A hidden
      * scene is "hidden scene N", as on the feedback page: its file name may tell what it holds.
      */
     private static String reasons(Grade grade) {

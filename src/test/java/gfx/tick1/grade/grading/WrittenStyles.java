@@ -22,8 +22,8 @@ public final class WrittenStyles {
     }
 
     private static final String INTERSECTION_FROM = "        // A negative discriminant";
-    private static final String INTERSECTION_TO = "        // Currently returning empty RaycastHit for no intersection\n"
-            + "        return new RaycastHit();\n";
+    private static final String INTERSECTION_TO =
+            "        // Currently returning empty RaycastHit for no intersection\n        return new RaycastHit();\n";
     private static final String SHADING_FROM = "        // L and V, unit vectors";
     private static final String SHADING_TO = "return ambient.add(diffuse).add(specular);\n";
 
@@ -162,11 +162,11 @@ public final class WrittenStyles {
                         Vector3 L = light.getPosition().subtract(P).normalised();
                         Vector3 V = P.scale(-1).normalised();
                         Vector3 R = L.reflectIn(N);
-                        double diffuseFactor = k_d * Math.max(0, N.dot(L));
-                        double specularFactor = k_s * Math.pow(Math.max(0, R.dot(V)), n);
-                        double red = C_diff.x * I_a.x + C_diff.x * I.x * diffuseFactor + C_spec.x * I.x * specularFactor;
-                        double green = C_diff.y * I_a.y + C_diff.y * I.y * diffuseFactor + C_spec.y * I.y * specularFactor;
-                        double blue = C_diff.z * I_a.z + C_diff.z * I.z * diffuseFactor + C_spec.z * I.z * specularFactor;
+                        double kd = k_d * Math.max(0, N.dot(L));
+                        double ks = k_s * Math.pow(Math.max(0, R.dot(V)), n);
+                        double red = C_diff.x * I_a.x + C_diff.x * I.x * kd + C_spec.x * I.x * ks;
+                        double green = C_diff.y * I_a.y + C_diff.y * I.y * kd + C_spec.y * I.y * ks;
+                        double blue = C_diff.z * I_a.z + C_diff.z * I.z * kd + C_spec.z * I.z * ks;
                         return new Vector3(red, green, blue);
                 """);
         renderer(styles, "ternaries for the clamps, R written out", """
