@@ -26,7 +26,7 @@ public final class ChildOutput {
 
     /** The most text read from one file of the child's. */
     static final int TEXT_CAP = 64 * 1024;
-    /** The cap on the probes' log: about 300 KB of answers to the random inputs, with room to spare. */
+    /** The cap on the probes' log: about 250 KB of answers to the random inputs, with room to spare. */
     static final int PROBES_CAP = 1 << 20;
 
     /** The eight bytes that begin every PNG file. */
