@@ -135,7 +135,9 @@ class GradeCommandTest {
                 "sphere-through-camera.xml: FAIL: " + HiddenVerdict.WRONG.words(),
                 "  note: not tested by the course's scenes; the handout's six steps leave it open: for a ray that "
                         + "starts on a sphere's surface")
-                .as("the scene is hidden: no catalogue entry").doesNotContain("closest: ", mistake.title());
+                .as("the scene is hidden: no catalogue entry for its image").doesNotContain("closest: ");
+        assertThat(run.out()).as("the note names the model every answer of the public run's fits")
+                .contains("every answer of yours is that of \"" + mistake.title() + "\"");
     }
 
     /**
