@@ -109,16 +109,57 @@ public enum Variant {
     RED_BLUE_SWAPPED("red and blue swapped", "",
             "red and blue are exchanged: a colour Vector3 holds r, g, b in x, y, z and toRGB() packs them as "
                     + "0xRRGGBB",
-            "section 2, \"Vector3\": colours are x, y, z = r, g, b");
+            "section 2, \"Vector3\": colours are x, y, z = r, g, b"),
+    NORMAL_NOT_NORMALISED("normal not normalised", "",
+            "the hit's normal is P - C without normalising it, so its length is the sphere's radius r and every "
+                    + "term that uses N is r times too strong or too weak",
+            "section 4, \"Ray-sphere intersection code\" (Vector3 normal = this.getNormalAt(point))"),
+    ROOTS_IN_FLOAT("roots in float", "",
+            "the roots s1 and s2 are kept in float, so the distance and the point are right to about 7 digits "
+                    + "only, and a pixel here and there on a sphere's edge comes out differently",
+            "section 4, step 3: compute s1 and s2 in double, as a, b and c are", false),
+    DIVIDED_BY_2_TIMES_A("/ 2 * a for / (2 * a)", "",
+            "the roots are computed as (-b +- sqrt(b^2 - 4ac)) / 2 * a, which divides by 2 and then multiplies "
+                    + "by a; it is right only while D is a unit vector (a = 1), as the camera's rays are",
+            "section 4, step 3: the quadratic formula divides by 2a", false),
+    DISTANCE_ALWAYS_S1("distance always s1", "",
+            "the hit's distance is always the first root s1, while its point is at the root chosen; the two "
+                    + "differ only where the ray starts inside the sphere, where s1 is negative",
+            "section 4, \"Ray-sphere intersection code\" (return the distance the ray travelled, s)", false),
+    HANDOUT_SIX_STEPS("the handout's six steps, literally", "",
+            "the hit is at s1 when s1 > 0 and s1 < s2, and there is none otherwise: a ray that starts inside a "
+                    + "sphere or on its surface, or that grazes it, finds no hit. This is a correct answer",
+            "section 4, steps 1 to 6", false),
+    KD_SWAPPED_WITH_KS("k_d swapped with k_s", "",
+            "the diffuse term uses k_s and the specular term k_d; the course's spheres all have k_d = k_s, so "
+                    + "their images do not show it",
+            "section 5, \"The Phong illumination model\" (C_diff k_d I max(0, N.L) + C_spec k_s I max(0, R.V)^n)",
+            false),
+    HIGHLIGHT_COLOURED("highlight coloured by C_diff", "",
+            "the specular term uses the sphere's colour C_diff where C_spec is white, so the highlights take the "
+                    + "sphere's colour",
+            "section 5, \"The Phong illumination model\" (specular lighting: C_spec is white)"),
+    DIFFUSE_WITHOUT_C_DIFF("diffuse term without C_diff", "",
+            "the diffuse term is k_d I max(0, N.L) without the sphere's colour C_diff, so the lit sides are washed "
+                    + "in the light's colour",
+            "section 5, \"The Phong illumination model\" (diffuse lighting: C_diff k_d I max(0, N.L))"),
+    L_FROM_THE_LIGHT("L pointing from the light", "",
+            "L is normalise(P - L_pos), from the light to the point, where it should point from the point to the "
+                    + "light, so the lit and unlit sides are exchanged",
+            "section 5, step 1 (L is the direction to the light)");
 
     private final String label;
     private final String figure;
     private final String explanation;
     private final String reread;
     /**
-     * Whether the mistake can change an image at all. One cannot: an unchecked negative
-     * discriminant gives NaN distances, which the starter's Scene never takes as the closest hit.
-     * {@code diagnose} leaves such entries out; {@code tick1 diff} still names them in code.
+     * Whether {@code diagnose} looks for the entry in images. Some cannot change an image at all
+     * (an unchecked negative discriminant gives NaN distances, which the starter's Scene never
+     * takes as the closest hit; the handout's six steps taken literally); others draw the
+     * reference's image on the course's scenes, pixel for pixel or but for a pixel (k_d swapped
+     * with k_s where every sphere has k_d = k_s, / 2 * a for the camera's unit directions, roots
+     * in float, the distance s1 where no ray starts inside a sphere). {@code grade} and
+     * {@code diff} still find every one of them by the answers of the methods.
      */
     private final boolean showsInImages;
 
@@ -160,7 +201,35 @@ public enum Variant {
         return seen;
     }
 
+    /** Whether this entry is a correct answer: the reference, or the handout's six steps taken literally. */
     public boolean isCorrect() {
-        return this == CORRECT;
+        return this == CORRECT || this == HANDOUT_SIX_STEPS;
+    }
+
+    /** The student's method an entry changes, or where else it happens. */
+    public enum Method { INTERSECTION_WITH, ILLUMINATE, RENDER, NONE }
+
+    /** The method this entry changes: intersectionWith, illuminate, or neither (render, or the reference itself). */
+    public Method method() {
+        return switch (this) {
+            case CORRECT -> Method.NONE;
+            case BACKGROUND_ONLY, FAR_ROOT, HIT_REJECTED_ON_A_NEGATIVE_ROOT, ROOTS_ACCEPTED_AT_ZERO,
+                    UNCHECKED_NEGATIVE_SQUARE_ROOT, NORMAL_NOT_NORMALISED, ROOTS_IN_FLOAT, DIVIDED_BY_2_TIMES_A,
+                    DISTANCE_ALWAYS_S1, HANDOUT_SIX_STEPS -> Method.INTERSECTION_WITH;
+            case ROUNDED_BYTES, UPSIDE_DOWN, RED_BLUE_SWAPPED -> Method.RENDER;
+            default -> Method.ILLUMINATE;
+        };
+    }
+
+    /**
+     * Whether tick1.xml and the hidden scene can show the entry at all: these entries change only
+     * what a ray does when it starts inside a sphere or on its surface, which neither scene has.
+     */
+    public boolean testedByTheCoursesScenes() {
+        return switch (this) {
+            case HIT_REJECTED_ON_A_NEGATIVE_ROOT, ROOTS_ACCEPTED_AT_ZERO, DISTANCE_ALWAYS_S1, HANDOUT_SIX_STEPS,
+                    UNCHECKED_NEGATIVE_SQUARE_ROOT -> false;
+            default -> true;
+        };
     }
 }

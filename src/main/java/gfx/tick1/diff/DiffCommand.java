@@ -31,8 +31,8 @@ import picocli.CommandLine.Spec;
  * sides are parsed; comments, layout, the package, imports and the order of members are set
  * aside, members are matched by signature, a member that means the same as ours (or, where the
  * starter code gives it whole, as the starter's) is left out ({@link SameMeaning}), and what still
- * differs is shown as a unified diff, member by member. The hints after it come only from probes
- * of the student's own methods, run in the sandbox as {@code grade} runs them ({@link Hints}).
+ * differs is shown as a unified diff, member by member. Before it, one line a method says how the
+ * student's own methods behaved, run in the sandbox as {@code grade} runs them ({@link Hints}).
  */
 @Command(name = "diff",
         description = {"Shows where your Sphere.java and Renderer.java differ from ours in meaning.",
@@ -43,15 +43,15 @@ import picocli.CommandLine.Spec;
                     + "do not depend on each other. Fields, constructors and methods are matched by signature; each "
                     + "one that still differs from ours (and, for what the starter code gives whole, from the "
                     + "starter's) is shown as a unified diff (- ours, + yours). When something differs and the "
-                    + "files compile, your intersectionWith and illuminate are run in the sandbox on fixed inputs, "
-                    + "and each property they get wrong is a hint with the handout section to reread; without the "
-                    + "sandbox there are no hints, and a line says why. A file is recognised by its class. Colour "
-                    + "on a terminal only."})
+                    + "files compile, your intersectionWith and illuminate are first run in the sandbox on the inputs "
+                    + "grade uses, and one line each says that it behaves as ours or where it does not; exit 0 when "
+                    + "they behave as ours and nothing else differs. Without the sandbox a line says behaviour could "
+                    + "not be checked. A file is recognised by its class. Colour on a terminal only."})
 public final class DiffCommand implements Callable<Integer> {
 
-    @ExitStatus("nothing differs in meaning (and nothing is printed)")
+    @ExitStatus("nothing differs in meaning, or only the methods that behave as ours on every input")
     public static final int EXIT_SAME = 0;
-    @ExitStatus("something differs")
+    @ExitStatus("something else differs, a method does not behave as ours, or behaviour could not be checked")
     public static final int EXIT_DIFFERENT = 1;
     @ExitStatus("a file cannot be read or parsed, or is not a Sphere or Renderer class")
     public static final int EXIT_CANNOT_COMPARE = 2;
@@ -115,40 +115,62 @@ public final class DiffCommand implements Callable<Integer> {
             }
         }
         Colours colours = new Colours(CommandLine.Help.Ansi.AUTO.enabled());
-        boolean differs = false;
+        List<String> report = new ArrayList<>();
+        boolean onlyMethodsDiffer = true;
         for (int i = 0; i < theirs.size(); i++) {
             String className = theirs.get(i).className();
             JavaMembers ours = ours(className);
-            List<String> report = compare(ours, starter(className, ours), theirs.get(i), files.get(i), colours);
-            report.forEach(out::println);
-            differs |= !report.isEmpty();
+            JavaMembers starter = starter(className, ours);
+            report.addAll(compare(ours, starter, theirs.get(i), files.get(i), colours));
+            onlyMethodsDiffer &= BEHAVIOUR_COVERS.containsAll(differingMembers(ours, starter, theirs.get(i)).keySet()
+                    .stream().filter(signature -> ours.members().containsKey(signature)).toList());
         }
-        if (differs) {
-            hints(theirs, out, colours);
+        if (report.isEmpty()) {
+            return EXIT_SAME;
         }
-        return differs ? EXIT_DIFFERENT : EXIT_SAME;
+        Hints.Said said = hints(theirs, out, colours);
+        report.forEach(out::println);
+        if (said != null) {
+            said.after().forEach(line -> out.println(colours.yellow(line)));
+        }
+        // Methods that behave as ours are no difference, however written; a changed render() or constructor is.
+        return said != null && said.behavesAsOurs() && onlyMethodsDiffer ? EXIT_SAME : EXIT_DIFFERENT;
     }
 
-    /** The hints of the probes of their methods, or the one line that says why there are none. */
-    private void hints(List<JavaMembers> theirs, PrintWriter out, Colours colours) {
+    /**
+     * The members whose meaning the behaviour comparison checks: the two methods it calls, and
+     * getNormalAt, whose answer is intersectionWith's normal. Members only in theirs are helpers of these or unused.
+     */
+    private static final Set<String> BEHAVIOUR_COVERS = Set.of("intersectionWith(Ray)", "getNormalAt(Vector3)",
+            "illuminate(Scene, Sphere, Vector3, Vector3)");
+
+    /**
+     * What their methods did, first, one line each (or why it could not be checked); null, with a
+     * line printed, when the files could not be given to the sandbox.
+     */
+    private Hints.Said hints(List<JavaMembers> theirs, PrintWriter out, Colours colours) {
         Map<String, String> given = new LinkedHashMap<>(), starter = new LinkedHashMap<>();
         for (int i = 0; i < theirs.size(); i++) {
             try {
                 given.put(theirs.get(i).className(), read(files.get(i)));
             } catch (IOException e) {
-                out.println(colours.yellow("no hints: " + files.get(i) + ": " + IoErrors.reason(e)));
-                return;
+                out.println(colours.yellow("behaviour could not be checked: " + files.get(i) + ": "
+                        + IoErrors.reason(e)));
+                return null;
             }
         }
-        // A file not given is the starter kit's: its methods' probes are not reported.
+        // A file not given is the starter kit's: its method is not reported.
         for (String className : StarterKit.STUDENT_CLASSES) {
             starter.put(className, StarterKit.source(className));
         }
         try {
-            Hints.of(given, starter).forEach(line -> out.println(colours.yellow(line)));
+            Hints.Said said = Hints.of(given, starter);
+            said.first().forEach(line -> out.println(colours.yellow(line)));
+            return said;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            out.println(colours.yellow("no hints: stopped before the probes of your methods had run"));
+            out.println(colours.yellow("behaviour could not be checked: stopped before your methods had run"));
+            return null;
         }
     }
 
@@ -159,9 +181,25 @@ public final class DiffCommand implements Callable<Integer> {
      */
     static List<String> compare(JavaMembers ours, JavaMembers starter, JavaMembers theirs, Path file,
             Colours colours) {
+        List<String> lines = new ArrayList<>();
+        differingMembers(ours, starter, theirs).forEach((signature, hunks) -> {
+            if (lines.isEmpty()) {
+                lines.add(colours.bold("--- ours: " + ours.className() + ".java"));
+                lines.add(colours.bold("+++ yours: " + file));
+            }
+            boolean mine = ours.members().containsKey(signature), yours = theirs.members().containsKey(signature);
+            lines.addAll(member(signature, !mine ? " (only in yours)" : !yours ? " (missing from yours)" : "", hunks,
+                    colours));
+        });
+        return lines;
+    }
+
+    /** The members that differ in meaning, by signature, with their hunks: in our order, then those only theirs has. */
+    static Map<String, List<List<LineDiff.Line>>> differingMembers(JavaMembers ours, JavaMembers starter,
+            JavaMembers theirs) {
         Set<String> signatures = new LinkedHashSet<>(ours.members().keySet());
         signatures.addAll(theirs.members().keySet());
-        List<String> lines = new ArrayList<>();
+        Map<String, List<List<LineDiff.Line>>> differing = new LinkedHashMap<>();
         for (String signature : signatures) {
             JavaMembers.Member our = ours.members().get(signature);
             JavaMembers.Member their = theirs.members().get(signature);
@@ -174,17 +212,11 @@ public final class DiffCommand implements Callable<Integer> {
             List<String> b = their == null ? List.of() : their.lines();
             List<List<LineDiff.Line>> hunks = LineDiff.hunks(a, our == null ? a : our.keyLines(), b,
                     their == null ? b : their.keyLines());
-            if (hunks.isEmpty()) {
-                continue;
+            if (!hunks.isEmpty()) {
+                differing.put(signature, hunks);
             }
-            if (lines.isEmpty()) {
-                lines.add(colours.bold("--- ours: " + ours.className() + ".java"));
-                lines.add(colours.bold("+++ yours: " + file));
-            }
-            lines.addAll(member(signature, a.isEmpty() ? " (only in yours)" : b.isEmpty() ? " (missing from yours)"
-                    : "", hunks, colours));
         }
-        return lines;
+        return differing;
     }
 
     /** One member's hunks, each headed by its signature. */

@@ -44,13 +44,14 @@ class UncataloguedMistakesTest {
                         s.ambient().add(s.diffuse(0.8)).add(s.specular(0.5, 10))),
                 Arguments.of("exponent n of 20", (Function<Shading, Vector3>) s ->
                         s.ambient().add(s.diffuse(0.8)).add(s.specular(0.8, 20))),
-                Arguments.of("diffuse term without C_diff", (Function<Shading, Vector3>) s ->
-                        s.ambient().add(s.I().scale(0.8 * Math.max(0, s.N().dot(s.L())))).add(s.specular(0.8, 10))),
+                // (A diffuse term without C_diff and a highlight in the sphere's colour are catalogued now.)
+                Arguments.of("ambient term twice", (Function<Shading, Vector3>) s ->
+                        s.ambient().scale(2).add(s.diffuse(0.8)).add(s.specular(0.8, 10))),
                 Arguments.of("specular term without I, at half strength", (Function<Shading, Vector3>) s ->
                         s.ambient().add(s.diffuse(0.8)).add(new Vector3(1).scale(0.8
                                 * Math.pow(Math.max(0, s.R().dot(s.V())), 10)).scale(0.5))),
-                Arguments.of("specular term in the sphere's colour", (Function<Shading, Vector3>) s ->
-                        s.ambient().add(s.diffuse(0.8)).add(s.specular(0.8, 10).scale(s.C_diff()))),
+                Arguments.of("exponent n of 5", (Function<Shading, Vector3>) s ->
+                        s.ambient().add(s.diffuse(0.8)).add(s.specular(0.8, 5))),
                 Arguments.of("diffuse term twice", (Function<Shading, Vector3>) s ->
                         s.ambient().add(s.diffuse(0.8)).add(s.diffuse(0.8)).add(s.specular(0.8, 10))),
                 Arguments.of("a light 1% too weak", (Function<Shading, Vector3>) s -> {

@@ -8,6 +8,7 @@ import gfx.tick1.starter.StarterKit;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Set;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -100,7 +101,8 @@ class DiffCommandTest {
                         "Vector3 ambient = C_diff.scale(I_a);", "Vector3 ambient = I_a;"),
                 Arguments.of(Variant.SPECULAR_WITHOUT_I, "Renderer", ILLUMINATE,
                         "C_spec.scale(I).scale(k_s", "C_spec.scale(k_s"),
-                Arguments.of(Variant.UNNORMALISED_L_V, "Renderer", ILLUMINATE,
+                // V alone not normalised: no entry's model gives its answers (the catalogue's leaves L so too).
+                Arguments.of(null, "Renderer", ILLUMINATE,
                         "Vector3 V = P.scale(-1).normalised();", "Vector3 V = P.scale(-1);"),
                 Arguments.of(Variant.UNCLAMPED_N_DOT_L, "Renderer", ILLUMINATE,
                         "k_d * Math.max(0, NdotL)", "k_d * NdotL"),
@@ -171,7 +173,6 @@ class DiffCommandTest {
     void aCorrectSolutionWrittenAnotherWayShowsTheMembersItChangesAndNoOthers(CorrectStyles.Style style)
             throws IOException {
         CliRun run = diffOf(style);
-        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
         assertThat(membersShown(run)).as(run.transcript()).isEqualTo(style.changedMembers());
     }
 
@@ -244,6 +245,25 @@ class DiffCommandTest {
         }
     }
 
+    /** The members whose meaning the behaviour comparison checks by running them. */
+    private static final Set<String> RUN = Set.of(INTERSECTION, ILLUMINATE, "getNormalAt(Vector3)");
+
+    /**
+     * A correct solution whose only differences are in the methods the comparison runs behaves as
+     * ours, whatever its form: exit 0; one that also changes another member (render, a constructor) exits 1.
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("otherCode")
+    void aCorrectSolutionExitsZeroWhenOnlyTheMethodsThatBehaveAsOursDiffer(CorrectStyles.Style style)
+            throws IOException, InterruptedException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
+        CliRun run = diffOf(style);
+        assertThat(run.status()).as(run.transcript()).isEqualTo(RUN.containsAll(style.changedMembers())
+                ? DiffCommand.EXIT_SAME : DiffCommand.EXIT_DIFFERENT);
+        assertThat(run.out().lines().filter(line -> line.contains(" behaves as ours on "))).as(run.transcript())
+                .hasSize(2);
+    }
+
     /**
      * The kit as handed out, in our layout and in the course's own (which writes
      * {@code this.phong_kD = SPHERE_KD} and calls the traced colour {@code pixel}): only the two
@@ -308,29 +328,30 @@ class DiffCommandTest {
     }
 
     private static java.util.List<String> hints(CliRun run) {
-        return run.out().lines().filter(line -> line.startsWith("hint: ") || line.startsWith("no hints: ")).toList();
+        return run.out().lines().filter(line -> line.startsWith("hint: ") || line.startsWith("note: ")
+                || line.startsWith("behaviour could not be checked: ")).toList();
     }
 
     /**
      * The kit's files as handed out: the two stages before any code is written, each named by the
-     * probe of the method the kit leaves to write (the other file is ours).
+     * model of the method the kit leaves to write (the other file is ours), in a first line, with
+     * the section to reread as the one hint.
      */
     @ParameterizedTest(name = "{0}")
-    @CsvSource({"Sphere, intersectionWith(Ray), 'hint: your intersectionWith finds no hit for a ray that meets a "
-            + "sphere in front of it: reread handout section 4'",
-        "Renderer, 'illuminate(Scene, Sphere, Vector3, Vector3)', 'hint: your illuminate returns the sphere''s colour "
-            + "C_diff whatever the light (the starter code''s placeholder): reread handout section 5'"})
-    void theUntouchedKitExitsOneWithTheHintOfItsProbe(String className, String method, String hint)
-            throws IOException, InterruptedException {
+    @CsvSource({"Sphere, intersectionWith(Ray), intersectionWith, BACKGROUND_ONLY",
+        "Renderer, 'illuminate(Scene, Sphere, Vector3, Vector3)', illuminate, FLAT_COLOUR"})
+    void theUntouchedKitExitsOneAndNamesTheStageItsMethodIsAt(String className, String member, String method,
+            Variant stage) throws IOException, InterruptedException {
         org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
         Path file = write(className + ".java", StarterKit.source(className));
         CliRun run = CliRun.of("diff", file.toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
-        assertThat(run.out()).as(run.transcript()).contains("@@ " + method + " @@");
-        assertThat(hints(run)).as(run.transcript()).hasSize(1).allMatch(line -> line.startsWith(hint));
+        assertThat(run.out()).as(run.transcript()).startsWith("your " + method + " gives the answers of \""
+                + stage.title() + "\" on all ").contains("@@ " + member + " @@");
+        assertThat(hints(run)).as(run.transcript()).containsExactly("hint: reread handout " + stage.reread() + ".");
     }
 
-    /** Hints rest on probes of the code: a correct solution, however written, gets none. */
+    /** Hints rest on the answers of the code: a correct solution, however written, gets no hint and no note. */
     @ParameterizedTest(name = "{0}")
     @MethodSource("otherCode")
     void aCorrectSolutionWrittenAnotherWayGetsNoHint(CorrectStyles.Style style)
@@ -338,6 +359,25 @@ class DiffCommandTest {
         org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
         CliRun run = diffOf(style);
         assertThat(hints(run)).as(run.transcript()).isEmpty();
+    }
+
+    static Stream<gfx.tick1.grade.grading.WrittenStyles.Style> writtenStyles() {
+        return gfx.tick1.grade.grading.WrittenStyles.all().values().stream();
+    }
+
+    /** A correct solution of a style of its own behaves as ours: no hint, no note, exit 0. */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("writtenStyles")
+    void aCorrectSolutionOfAStyleOfItsOwnExitsZeroWithNoHintAndNoNote(gfx.tick1.grade.grading.WrittenStyles.Style style)
+            throws IOException, InterruptedException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
+        Path folder = Files.createDirectories(styles.resolve("written-" + Math.abs(style.name().hashCode())));
+        CliRun run = CliRun.of("diff", Files.writeString(folder.resolve("Sphere.java"), style.sphere()).toString(),
+                Files.writeString(folder.resolve("Renderer.java"), style.renderer()).toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
+        assertThat(hints(run)).as(run.transcript()).isEmpty();
+        assertThat(run.out().lines().limit(2)).as(run.transcript()).allMatch(line -> line.startsWith("your ")
+                && line.contains(" behaves as ours on "));
     }
 
     @Test
@@ -348,8 +388,8 @@ class DiffCommandTest {
         try {
             CliRun run = CliRun.of("diff", file.toString());
             assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
-            assertThat(hints(run)).as(run.transcript()).hasSize(1)
-                    .allMatch(line -> line.startsWith("no hints: they come from running your methods in the sandbox"));
+            assertThat(hints(run)).as(run.transcript()).hasSize(1).allMatch(line -> line.startsWith(
+                    "behaviour could not be checked: it comes from running your methods in the sandbox"));
         } finally {
             if (bwrap == null) {
                 System.clearProperty("tick1.grade.bwrap");
@@ -369,17 +409,28 @@ class DiffCommandTest {
         assertThat(source).as("the edit's text must be in the correct " + className).containsOnlyOnce(text);
         Path file = write(className + ".java", source.replace(text, replacement));
         CliRun run = CliRun.of("diff", file.toString());
-        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
         assertThat(run.out()).as(run.transcript()).contains("@@ " + method + " @@");
-        // A mistake of render's, or one that changes nothing the method returns (sqrt of a negative
-        // discriminant is NaN, and NaN > 0 is false), gives no hint: no probe fails.
-        if (method.equals(RENDER) || mistake == Variant.UNCHECKED_NEGATIVE_SQUARE_ROOT) {
+        String called = className.equals("Sphere") ? "intersectionWith" : "illuminate";
+        // A mistake of render's, or one that changes nothing the method returns where the course's scenes look
+        // (sqrt of a negative discriminant is NaN, and NaN > 0 is false; no hit from inside, as the handout's
+        // six steps), gives no hint: the method behaves as ours.
+        if (method.equals(RENDER) || mistake == Variant.UNCHECKED_NEGATIVE_SQUARE_ROOT
+                || mistake == Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT) {
             assertThat(hints(run)).as(run.transcript()).isEmpty();
+            assertThat(run.out()).as(run.transcript()).startsWith("your " + called + " behaves as ours on ");
+            assertThat(run.status()).as(run.transcript()).isEqualTo(method.equals(RENDER) ? DiffCommand.EXIT_DIFFERENT
+                    : DiffCommand.EXIT_SAME);
+        } else if (mistake == null) {
+            assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+            assertThat(run.out().lines().findFirst().orElse("")).as(run.transcript())
+                    .startsWith("your " + called + " differs from ours on ").contains("; the simplest: for ")
+                    .endsWith("; tick1 does not recognise this mistake");
         } else {
-            String called = className.equals("Sphere") ? "intersectionWith" : "illuminate";
-            assertThat(hints(run)).as(run.transcript()).isNotEmpty().allMatch(line -> line.startsWith("hint: ")
-                    && line.contains("your " + called) && line.contains(": reread handout section ")
-                    && line.endsWith("."));
+            assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+            assertThat(run.out()).as(run.transcript()).startsWith("your " + called + " gives the answers of \""
+                    + mistake.title() + "\" on all ");
+            assertThat(hints(run)).as(run.transcript())
+                    .containsExactly("hint: reread handout " + mistake.reread() + ".");
         }
         assertThat(run.out()).doesNotContain("\u001B[");
     }

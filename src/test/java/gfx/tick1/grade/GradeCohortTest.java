@@ -287,18 +287,18 @@ class GradeCohortTest {
         Map<String, String> reasons = new LinkedHashMap<>();
         cohort.forEach(student -> reasons.put(student.name(), rows.get("Participant " + student.id()).get(9)));
         assertThat(reasons.get("Correct Student 0")).isEqualTo(SubmissionGrader.CONGRATULATIONS);
-        assertThat(reasons.get("Inside Sphere")).as("a pass with a note").startsWith(SubmissionGrader.CONGRATULATIONS)
-                .contains("Note: your intersectionWith finds no hit for a ray that starts inside a sphere");
+        // No hit from inside a sphere is what the handout's six steps give: a correct answer, with nothing to note.
+        assertThat(reasons.get("Inside Sphere")).as("a pass").isEqualTo(SubmissionGrader.CONGRATULATIONS);
         assertThat(reasons.get("Missing Renderer")).contains("Renderer.java");
         assertThat(reasons.get("Does Not Compile")).contains("does not compile", "Sphere.java:");
         assertThat(reasons.get("Loops Forever")).contains("time limit");
         assertThat(reasons.get("Copies The Reference")).contains("ClassNotFoundException");
         assertThat(reasons.get("Other Package")).contains("package gfx.tick1");
         assertThat(reasons.get("Latin One")).contains("not UTF-8");
-        // The reason names the property the probes found wrong, not the closest picture; Moodle keeps the cell as
-        // HTML, so its "<" is written as "&lt;".
+        // The reason gives the catalogue's exact image match first, then what the methods' answers show.
         assertThat(reasons.get("Mistake UNCLAMPED N DOT L"))
-                .contains("Your illuminate gives negative diffuse light when N.L &lt; 0");
+                .contains("is exactly the image of \"" + Variant.UNCLAMPED_N_DOT_L.title() + "\".")
+                .contains("Your illuminate gives the answers of \"" + Variant.UNCLAMPED_N_DOT_L.title() + "\" on all ");
         assertThat(reasons.values()).allMatch(reason -> !reason.contains("\n"));
     }
 
@@ -326,7 +326,7 @@ class GradeCohortTest {
 
     /**
      * A student's feedback.txt holds what {@code tick1 grade} prints for them alone, scene by
-     * scene: the closest entry of the catalogue, the probes' findings and what to reread.
+     * scene: the closest entry of the catalogue, what the methods' answers show and what to reread.
      */
     @ParameterizedTest(name = "{0}")
     @MethodSource("mistakes")
@@ -341,16 +341,17 @@ class GradeCohortTest {
                 .allMatch(line -> line.startsWith("  closest: " + mistake.title() + " (100.000% of pixels exact"));
         assertThat(feedback).as("the hidden scene: fixed words only\n" + text)
                 .containsSubsequence("hidden scene 1: failed", "  " + HiddenVerdict.WRONG.words());
-        // What to reread: the sections of the failed probes, or, for a mistake of render's that no probe of
-        // intersectionWith and illuminate can see, the entry the image matches exactly.
-        List<String> probes = feedback.stream().filter(line -> line.startsWith("  probe: ")).toList();
+        // What to reread: the sections of the tested findings, or, for a mistake of render's that the answers of
+        // intersectionWith and illuminate cannot show, the entry the image matches exactly.
+        List<String> probes = feedback.stream().filter(line -> line.startsWith("  behaviour: ")).toList();
         List<String> reread = feedback.stream().filter(line -> line.startsWith("  reread: handout ")).toList();
         if (Mistakes.RENDER_ONLY.contains(mistake)) {
             assertThat(probes).as(text).isEmpty();
             assertThat(reread).as(text).anyMatch(line -> line.startsWith("  reread: handout " + mistake.reread()));
         } else {
             assertThat(probes).as(text).isNotEmpty();
-            // One wrong image carries the probes' lines; the other scene's diagnosis asks nothing to reread.
+            assertThat(probes).as(text).first().asString().contains("\"" + mistake.title() + "\"");
+            // One wrong image carries the findings' lines; the other scene's diagnosis asks nothing to reread.
             assertThat(reread).as(text).isNotEmpty().hasSizeLessThanOrEqualTo(3);
         }
     }

@@ -71,6 +71,15 @@ final class Mistakes {
                 Arguments.of(Variant.UPSIDE_DOWN, correct.editRenderer(RGB,
                         "image.setRGB(x, height - 1 - y, linearRGB.toRGB());")),
                 Arguments.of(Variant.RED_BLUE_SWAPPED, correct.editRenderer(RGB,
-                        "image.setRGB(x, y, new Vector3(linearRGB.z, linearRGB.y, linearRGB.x).toRGB());")));
+                        "image.setRGB(x, y, new Vector3(linearRGB.z, linearRGB.y, linearRGB.x).toRGB());")),
+                Arguments.of(Variant.NORMAL_NOT_NORMALISED, correct.editSphere(
+                        "Vector3 normal = this.getNormalAt(point);", "Vector3 normal = point.subtract(position);")),
+                Arguments.of(Variant.HIGHLIGHT_COLOURED, correct.editRenderer("Vector3 C_spec = new Vector3(1);",
+                        "Vector3 C_spec = C_diff;")),
+                Arguments.of(Variant.DIFFUSE_WITHOUT_C_DIFF, correct.editRenderer("C_diff.scale(I).scale(k_d",
+                        "I.scale(k_d")),
+                Arguments.of(Variant.L_FROM_THE_LIGHT, correct.editRenderer(
+                        "light.getPosition().subtract(P).normalised()",
+                        "P.subtract(light.getPosition()).normalised()")));
     }
 }

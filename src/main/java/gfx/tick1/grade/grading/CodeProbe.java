@@ -13,16 +13,28 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The probes of a Sphere.java and a Renderer.java on their own, for {@code tick1 diff}: compiled
- * with the starter kit and run in the sandbox, as {@code grade} runs them, with no scene. The
- * hints are the facts of the failed probes of the methods asked about; where the probes cannot
- * run (no sandbox, the files do not compile), there are none, and one line says why.
+ * The behaviour of a Sphere.java and a Renderer.java on their own, for {@code tick1 diff}: compiled
+ * with the starter kit and run in the sandbox, as {@code grade} runs them, with no scene, on the
+ * probes' inputs. For each method asked about, one line: that it behaves as ours, or the finding
+ * ({@link ProbeFindings}); then the notes on what the course's scenes cannot show, and the hints
+ * of what to reread. Where the methods cannot run (no sandbox, the files do not compile), there
+ * is nothing but one line that says why.
  */
 public final class CodeProbe {
 
-    /** The hints, each "fact: reread handout section.", or none and why. */
-    public record Hints(List<String> hints, String whyNone) {
+    /**
+     * What the methods asked about did: one line each, first; then "note: ..." and "hint: ..."
+     * lines; or, when they could not be run, none and why.
+     */
+    public record Hints(List<String> behaviour, List<String> hints, String whyNone, boolean behavesAsOurs) {
+
+        static Hints none(String why) {
+            return new Hints(List.of(), List.of(), why, false);
+        }
     }
+
+    /** The words of a method's line when it behaves as ours. */
+    static final String BEHAVES_AS_OURS = " behaves as ours on ";
 
     private static final Duration TIME_LIMIT = Duration.ofSeconds(30);
     private static final int MEMORY_MEGABYTES = 512;
@@ -39,15 +51,16 @@ public final class CodeProbe {
         try {
             sandbox = Sandbox.confined();
         } catch (Sandbox.Unavailable e) {
-            return new Hints(List.of(), "no hints: they come from running your methods in the sandbox, and "
-                    + e.getMessage() + " (install " + Sandbox.PACKAGE + ")");
+            return Hints.none("behaviour could not be checked: it comes from running your methods in "
+                    + "the sandbox, and " + e.getMessage() + " (install " + Sandbox.PACKAGE + ")");
         }
         Path work = null;
         try {
             work = Files.createTempDirectory("tick1-diff");
             return probe(sandbox, work, sphere, renderer, asked);
         } catch (IOException e) {
-            return new Hints(List.of(), "no hints: the probes of your methods could not run (" + e.getMessage() + ")");
+            return Hints.none("behaviour could not be checked: your methods could not be run ("
+                    + e.getMessage() + ")");
         } finally {
             if (work != null) {
                 WorkFolder.delete(work);
@@ -73,23 +86,39 @@ public final class CodeProbe {
         StudentProcess.CompiledAndRendered run = process.compileAndRender(sources, scenes, List.of(), output,
                 "Sphere.java", "Renderer.java", 1, 1, TIME_LIMIT, true);
         if (!run.compiled().compiled()) {
-            return new Hints(List.of(), "no hints: they come from running your methods, and the files do not "
-                    + "compile with the starter code" + (run.compiled().failure() == null ? ""
+            return Hints.none("behaviour could not be checked: it comes from running your "
+                    + "methods, and the files do not compile with the starter code"
+                    + (run.compiled().failure() == null ? ""
                     : " (" + run.compiled().failure() + ")"));
         }
         ProbeFindings findings = ProbeFindings.of(run.rendered().probes());
         if (!findings.ran()) {
-            return new Hints(List.of(), "no hints: the probes of your methods did not run to the end");
+            return Hints.none("behaviour could not be checked: your methods gave no answer");
         }
-        List<String> hints = new ArrayList<>();
-        List<ProbeJudge.Judgement> failed = findings.failed();
-        for (ProbeJudge.Judgement j : failed) {
-            boolean mine = j.probe().method().equals("intersectionWith") ? asked.contains("Sphere")
-                    : asked.contains("Renderer");
-            if (mine) {
-                hints.add(j.fact() + ": reread handout " + j.section() + ".");
+        return hints(findings, asked);
+    }
+
+    /** The lines of the methods of the files named in {@code asked}. */
+    static Hints hints(ProbeFindings findings, List<String> asked) {
+        List<String> behaviour = new ArrayList<>(), hints = new ArrayList<>();
+        boolean ours = true;
+        Behaviour b = findings.behaviour();
+        for (MethodBehaviour method : List.of(b.intersectionWith(), b.illuminate())) {
+            if (!asked.contains(method.method().equals("intersectionWith") ? "Sphere" : "Renderer")) {
+                continue;
             }
+            if (method.behavesAsOurs()) {
+                behaviour.add("your " + method.method() + BEHAVES_AS_OURS + SubmissionGrader.count(method.inputs(),
+                        "input"));
+            } else {
+                ours = false;
+                ProbeFindings.Finding finding = findings.tested().stream()
+                        .filter(f -> f.method().equals(method.method())).findFirst().orElseThrow();
+                behaviour.add(finding.fact());
+                hints.add("hint: reread handout " + finding.section() + ".");
+            }
+            method.untested().forEach(note -> hints.add("note: " + note));
         }
-        return new Hints(hints, null);
+        return new Hints(behaviour, hints, null, ours);
     }
 }

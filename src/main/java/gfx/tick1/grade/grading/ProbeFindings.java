@@ -1,101 +1,140 @@
 package gfx.tick1.grade.grading;
 
-import gfx.tick1.grade.grading.ProbeJudge.Judgement;
-import gfx.tick1.grade.grading.ProbeJudge.State;
+import gfx.tick1.diagnose.Variant;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.stream.Stream;
 
 /**
- * What the probes found, in the words every report uses: the facts of the failed probes (the
- * reasons of a failure, the notes of a pass), one short sentence for a gradebook row, and the
- * sections to reread, at most three.
+ * What the behaviour comparison found, in the words every report uses: for each method that
+ * does not behave as ours, one tested finding (the catalogue's mistake whose model gives every
+ * answer, or the simplest counterexample and what the answers show); then the notes on what the
+ * course's scenes cannot show, always after the tested findings and always with the one label
+ * {@link BehaviourJudge#UNTESTED}; the sections to reread, at most three.
  */
 final class ProbeFindings {
 
-    /** The most facts a row's sentence names; the rest are counted. */
-    private static final int ROW_FACTS = 3;
     /** The most sections a report lists to reread. */
     static final int SECTIONS = 3;
 
-    private final boolean ran;
-    private final List<Judgement> failed;
+    private static final String INTERSECTION_SECTION = "section 4, \"Ray-sphere intersection code\"";
+    private static final String ILLUMINATE_SECTION = "section 5, \"Phong illumination code\"";
 
-    private ProbeFindings(boolean ran, List<Judgement> failed) {
-        this.ran = ran;
-        this.failed = failed;
+    /** One method's tested finding: the fact, the section to reread, and the cohort chart's label. */
+    record Finding(String method, String fact, String section, String label) {
+    }
+
+    private final Behaviour behaviour;
+    private final List<Finding> tested = new ArrayList<>();
+
+    private ProbeFindings(Behaviour behaviour) {
+        this.behaviour = behaviour;
+        if (behaviour.ran()) {
+            Stream.of(behaviour.intersectionWith(), behaviour.illuminate()).filter(b -> !b.behavesAsOurs())
+                    .forEach(b -> tested.add(finding(b)));
+        }
     }
 
     /** The findings of the probes' log {@code log} (null when the child left none). */
     static ProbeFindings of(String log) {
-        ProbeAnswers answers = ProbeAnswers.parse(log);
-        if (!answers.any()) {
-            return new ProbeFindings(false, List.of());
+        return new ProbeFindings(BehaviourJudge.judge(ProbeAnswers.parse(log)));
+    }
+
+    private static Finding finding(MethodBehaviour b) {
+        String inputs = SubmissionGrader.count(b.inputs(), "input");
+        boolean sphere = b.method().equals("intersectionWith");
+        if (!b.mistake().isEmpty()) {
+            List<String> explained = b.mistake().stream().map(Variant::explanation).toList();
+            return new Finding(b.method(), "your " + b.method() + " gives the answers of \""
+                    + BehaviourJudge.titles(b.mistake()) + "\" on all " + inputs + ": "
+                    + String.join("; and ", explained)
+                    + "; for example, " + b.counterexample(), b.mistake().get(0).reread(),
+                    String.join(" + ", b.mistake().stream().map(Variant::title).toList()));
         }
-        return new ProbeFindings(true, ProbeJudge.judge(answers).stream().filter(j -> j.state() == State.FAILS)
-                .toList());
+        StringBuilder fact = new StringBuilder("your " + b.method() + " differs from ours on " + b.differing().size()
+                + " of " + inputs + "; the simplest: " + b.counterexample());
+        b.properties().forEach(p -> fact.append("; ").append(p));
+        fact.append("; tick1 does not recognise this mistake");
+        return new Finding(b.method(), fact.toString(), sphere ? INTERSECTION_SECTION : ILLUMINATE_SECTION,
+                b.method() + ": differs from ours");
+    }
+
+    /** The comparison itself, for any report that wants the answers' verdicts. */
+    Behaviour behaviour() {
+        return behaviour;
     }
 
     /** Whether the probes ran (the child logged answers). */
     boolean ran() {
-        return ran;
+        return behaviour.ran();
     }
 
-    /** The failed probes. */
-    List<Probe> failedProbes() {
-        return failed.stream().map(Judgement::probe).toList();
-    }
-
-    /** The failed probes' judgements, in the catalogue's order. */
-    List<Judgement> failed() {
-        return failed;
-    }
-
+    /** Whether a method does not behave as ours on a tested input. */
     boolean anyFailed() {
-        return !failed.isEmpty();
+        return !tested.isEmpty();
     }
 
-    /** The facts of the failed probes, one a line. */
+    /** The tested findings, intersectionWith's first. */
+    List<Finding> tested() {
+        return tested;
+    }
+
+    /** The cohort chart's label of the first tested finding. */
+    String label() {
+        return tested.get(0).label();
+    }
+
+    /** The notes on what the course's scenes cannot show, each with the label. */
+    List<String> untested() {
+        return behaviour.ran() ? behaviour.intersectionWith().untested() : List.of();
+    }
+
+    /** The tested findings' facts, one a line. */
     List<String> facts() {
-        return failed.stream().map(Judgement::fact).toList();
+        return tested.stream().map(Finding::fact).toList();
     }
 
-    /** "fact (section ...)" lines for a failure's explanation, then "reread: handout ..." lines. */
+    /** "behaviour: ..." lines for a failure's explanation, then the untested notes, then "reread: ..." lines. */
     List<String> failureLines() {
         List<String> lines = new ArrayList<>();
-        failed.forEach(j -> lines.add("probe: " + j.fact()));
+        tested.forEach(f -> lines.add("behaviour: " + f.fact()));
+        untested().forEach(note -> lines.add("note: " + note));
         sections().forEach(section -> lines.add("reread: handout " + section));
         return lines;
     }
 
-    /** The notes of a pass: each failed probe's fact, that the course does not test it, and why it may not matter. */
+    /** The line for a wrong image when no method differs: what the comparison did find. */
+    String noFindingLine() {
+        return behaviour.ran() ? "behaviour: your intersectionWith and illuminate behave as ours on "
+                + SubmissionGrader.count(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(),
+                        "input")
+                : "behaviour: your intersectionWith and illuminate could not be checked: the harness logged no answer";
+    }
+
+    /**
+     * The notes of a pass: each tested finding, which tick1.xml and the hidden scene do not show,
+     * then the untested notes.
+     */
     List<String> notes() {
         List<String> notes = new ArrayList<>();
-        for (Judgement j : failed) {
-            String leftOpen = j.probe().leftOpen();
-            notes.add(j.fact() + "; the course's scenes do not test this" + (leftOpen == null ? "" : "; " + leftOpen)
-                    + " (handout " + j.section() + ")");
-        }
+        tested.forEach(f -> notes.add(f.fact() + " (tick1.xml and the hidden scene do not show this; handout "
+                + f.section() + ")"));
+        notes.addAll(untested());
         return notes;
     }
 
-    /** The failed probes' sections, each once, at most {@link #SECTIONS}. */
+    /** The tested findings' sections, each once, at most {@link #SECTIONS}. */
     List<String> sections() {
         Set<String> sections = new LinkedHashSet<>();
-        failed.forEach(j -> sections.add(j.section()));
+        tested.forEach(f -> sections.add(f.section()));
         return sections.stream().limit(SECTIONS).toList();
     }
 
-    /** The facts in one sentence for a row: "a; b; and 2 more." */
+    /** The tested facts in one sentence for a row. */
     String sentence() {
-        List<String> facts = facts();
-        StringBuilder text = new StringBuilder(capitalised(String.join("; ", facts.subList(0,
-                Math.min(ROW_FACTS, facts.size())))));
-        if (facts.size() > ROW_FACTS) {
-            text.append("; and ").append(facts.size() - ROW_FACTS).append(" more (see the feedback)");
-        }
-        return text.append('.').toString();
+        return capitalised(String.join("; ", facts())) + ".";
     }
 
     static String capitalised(String text) {

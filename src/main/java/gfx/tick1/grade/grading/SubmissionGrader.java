@@ -27,6 +27,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 
 /**
  * Grades one submission as the course's tester does: compiles the two files with the starter
@@ -42,13 +43,15 @@ public final class SubmissionGrader {
     }
 
     /**
-     * One submission's grade: the result, whether its images could not be written, the time by phase, and
-     * the compiler's errors when the code did not compile (else empty).
+     * One submission's grade: the result, whether its images could not be written, the time by phase, how its
+     * two methods behaved on the behaviour inputs (not run: {@link Behaviour#ran} false), and the compiler's errors
+     * when the code did not compile (else empty).
      */
-    public record Graded(StudentResult result, boolean imagesUnwritable, Phases phases, List<String> compileErrors) {
+    public record Graded(StudentResult result, boolean imagesUnwritable, Phases phases, Behaviour behaviour,
+            List<String> compileErrors) {
 
-        Graded(StudentResult result, boolean imagesUnwritable, Phases phases) {
-            this(result, imagesUnwritable, phases, List.of());
+        Graded(StudentResult result, boolean imagesUnwritable, Phases phases, Behaviour behaviour) {
+            this(result, imagesUnwritable, phases, behaviour, List.of());
         }
     }
 
@@ -98,8 +101,12 @@ public final class SubmissionGrader {
     private record Started(StudentProcess.Compiled compiled, Path classes, long renderStart) {
     }
 
-    /** Every scene's outcome and traced samples in grading order, the probes' log, and what the code printed. */
-    private record Rendered(List<Outcome> outcomes, List<String> traces, String probes, String publicPrinted) {
+    /**
+     * Every scene's outcome and traced samples in grading order, what the behaviour comparison
+     * found (judged while the hidden scenes render), and what the code printed.
+     */
+    private record Rendered(List<Outcome> outcomes, List<String> traces, CompletableFuture<ProbeFindings> probes,
+            String publicPrinted) {
     }
 
     /**
@@ -146,14 +153,15 @@ public final class SubmissionGrader {
                     : error.size();
             return new Graded(result(grade, submission, false, 0, DOES_NOT_COMPILE,
                     "FAILED: " + heading + ": " + String.join("\n", error.subList(0, quoted)),
-                    error.subList(quoted, error.size())), false, phases(grade), List.copyOf(compiled.errors()));
+                    error.subList(quoted, error.size())), false, phases(grade), grade.probes.behaviour(),
+                    List.copyOf(compiled.errors()));
         }
         out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
                 + " with the starter code.");
         Rendered rendered = renderAll(started, work);
         long compareStart = System.nanoTime();
         grade.renderNanos = compareStart - started.renderStart();
-        grade.probes = ProbeFindings.of(rendered.probes());
+        grade.probes = rendered.probes().join();
         Graded graded = compare(grade, submission, code, rendered, images, out, err);
         return graded;
     }
@@ -196,7 +204,8 @@ public final class SubmissionGrader {
         long deadline = started.renderStart() + limits.timeLimit().toNanos();
         List<Outcome> outcomes = new ArrayList<>();
         List<String> traces = new ArrayList<>();
-        String probes = null, publicPrinted = "";
+        CompletableFuture<ProbeFindings> probes = null;
+        String publicPrinted = "";
         for (boolean hidden : new boolean[] {false, true}) {
             List<GradingScene> batch = grading.batch(hidden);
             if (batch.isEmpty()) {
@@ -216,10 +225,13 @@ public final class SubmissionGrader {
             traces.addAll(result.traces());
             if (!hidden) {
                 publicPrinted = result.outputTail();
-                probes = result.probes();
+                // The answers are judged in the grader while the hidden scenes render in their own JVM.
+                String log = result.probes();
+                probes = CompletableFuture.supplyAsync(() -> ProbeFindings.of(log));
             }
         }
-        return new Rendered(outcomes, traces, probes, publicPrinted);
+        return new Rendered(outcomes, traces, probes == null ? CompletableFuture.completedFuture(ProbeFindings.of(null))
+                : probes, publicPrinted);
     }
 
     /** Compares every scene's outcome, then gives the verdict with its reasons. */
@@ -271,7 +283,7 @@ public final class SubmissionGrader {
             String verdict = "FAILED: " + failures + " of " + count(scenes, "scene") + " wrong.";
             out.println(verdict);
             return new Graded(result(grade, submission, false, scenes - failures, diagnosis,
-                    verdict + reasons(grade)), grade.imagesUnwritable, phases(grade));
+                    verdict + reasons(grade)), grade.imagesUnwritable, phases(grade), grade.probes.behaviour());
         }
         out.println(CONGRATULATIONS);
         List<String> notes = grade.probes.notes();
@@ -282,16 +294,18 @@ public final class SubmissionGrader {
             grade.scenes.set(0, new SceneResult(first.name(), first.hidden(), true,
                     notes.stream().map(note -> "note: " + note).toList(), null, null, null));
         }
-        String reason = notes.isEmpty() ? CONGRATULATIONS : CONGRATULATIONS + " Note: "
-                + String.join("; ", grade.probes.facts()) + " (the course's scenes do not test this).";
-        return new Graded(result(grade, submission, true, scenes, PASSED, reason), false, phases(grade));
+        String reason = notes.isEmpty() ? CONGRATULATIONS : CONGRATULATIONS + " Note: " + String.join("; ", notes)
+                + ".";
+        return new Graded(result(grade, submission, true, scenes, PASSED, reason), false, phases(grade),
+                grade.probes.behaviour());
     }
 
     /** A submission that fails before any scene is run: one line saying why. */
     private Graded failed(Grade grade, Submission submission, PrintWriter out, String diagnosis,
             String reason) {
         out.println("FAILED: " + reason);
-        return new Graded(result(grade, submission, false, 0, diagnosis, "FAILED: " + reason), false, phases(grade));
+        return new Graded(result(grade, submission, false, 0, diagnosis, "FAILED: " + reason), false, phases(grade),
+                grade.probes.behaviour());
     }
 
     private StudentResult result(Grade grade, Submission submission, boolean passed, int scenesPassed,
@@ -343,8 +357,8 @@ public final class SubmissionGrader {
 
     /**
      * A failure's reasons for the gradebook's row, in one sentence: the scenes that gave no image
-     * or an image their code does not give, by their first lines; then the failed probes' facts;
-     * failing those, an exact match with a catalogue entry, or that tick1 is unsure. A hidden
+     * or an image their code does not give, by their first lines; then the catalogue's exact image
+     * match; then the tested findings; failing both, that tick1 does not recognise it. A hidden
      * scene is "hidden scene N", as on the feedback page: its file name may tell what it holds.
      */
     private static String reasons(Grade grade) {
@@ -363,21 +377,25 @@ public final class SubmissionGrader {
             }
             text.append(' ').append(name).append(": ").append(scene.explanation().get(0)).append('.');
         }
+        if (wrongImage && grade.exactly != null) {
+            text.append(' ').append(grade.exactly);
+        }
         if (grade.probes.anyFailed()) {
             text.append(' ').append(grade.probes.sentence());
-        } else if (wrongImage) {
-            text.append(' ').append(grade.exactly != null ? grade.exactly
-                    : grade.probes.ran() ? UNSURE_WITH_PROBES : UNSURE_WITHOUT_PROBES);
+        } else if (wrongImage && grade.exactly == null) {
+            text.append(' ').append(grade.probes.ran() ? UNSURE_WITH_PROBES : UNSURE_WITHOUT_PROBES);
         }
         return text.toString().replace("..", ".");
     }
 
-    /** Why a wrong image has no cause to name, when every probe holds. */
-    static final String UNSURE_WITH_PROBES = "Every probe of your intersectionWith and illuminate holds, so tick1 "
-            + "is unsure what makes the difference (see the feedback).";
-    /** Why a wrong image has no cause to name, when the probes did not run. */
-    static final String UNSURE_WITHOUT_PROBES = "The probes of your intersectionWith and illuminate did not run, "
-            + "so tick1 is unsure what makes the difference (see the feedback).";
+    /** Why a wrong image has no cause to name, when both methods behave as ours. */
+    static final String UNSURE_WITH_PROBES = "Your intersectionWith and illuminate behave as ours on every input "
+            + "tick1 tried, and no mistake of its catalogue gives this image, so tick1 does not recognise what makes "
+            + "the difference.";
+    /** Why a wrong image has no cause to name, when the methods could not be run on their own. */
+    static final String UNSURE_WITHOUT_PROBES = "Your intersectionWith and illuminate could not be run on their own "
+            + "inputs, and no mistake of tick1's catalogue gives this image, so tick1 does not recognise what makes "
+            + "the difference.";
 
     /**
      * Compares one student image with the references --reference allows, and, when it matches,
@@ -455,20 +473,21 @@ public final class SubmissionGrader {
 
     /**
      * A hidden scene's wrong image: the fixed verdict, and no figure, diagnosis or image of it
-     * (each is the code's to choose). The failed probes follow, if no earlier scene showed them:
-     * they ran on fixed inputs in the run of the public scenes, which never had a hidden one, so
-     * they carry nothing of it. The chart's label is theirs, or that the mistake is not recognised.
+     * (each is the code's to choose). The behaviour comparison's findings and notes follow, if no
+     * earlier scene showed them: its inputs are fixed and ran in the run of the public scenes, which
+     * never had a hidden one, so they carry nothing of it. The chart's label is the first tested
+     * finding's, or that the mistake is not recognised.
      */
     private static String wrongHiddenImage(Grade grade, GradingScene scene, PrintWriter out) {
         List<String> lines = new ArrayList<>(List.of(HiddenVerdict.WRONG.words()));
-        if (grade.probes.anyFailed() && !grade.probesShown) {
+        if (!grade.probesShown && (grade.probes.anyFailed() || !grade.probes.untested().isEmpty())) {
             lines.addAll(grade.probes.failureLines());
             grade.probesShown = true;
         }
         out.println(scene.name() + ": FAIL: " + lines.get(0));
         lines.subList(1, lines.size()).forEach(line -> out.println("  " + line));
         grade.scenes.add(new SceneResult(scene.name(), true, false, lines, null, null, null));
-        return grade.probes.anyFailed() ? grade.probes.failedProbes().get(0).label() : UNRECOGNISED;
+        return grade.probes.anyFailed() ? grade.probes.label() : UNRECOGNISED;
     }
 
     /** The words of a matching image that their methods do not give. */
@@ -486,23 +505,23 @@ public final class SubmissionGrader {
                 mean[2], difference.psnr()));
         Diagnosis diagnosis = new Diagnoser().diagnose(image, scene.scene());
         boolean exact = diagnosis.verdict() == Diagnosis.Verdict.EXPLAINED;
-        boolean probesSay = grade.probes.anyFailed();
-        // What to reread comes from the failed probes; the image's own entry only when it matches exactly.
-        diagnosis.report().stream().filter(line -> !line.startsWith("reread:") || exact && !probesSay)
+        boolean behaviourSays = grade.probes.anyFailed();
+        // What to reread comes from the tested findings; the image's own entry only when it matches exactly.
+        diagnosis.report().stream().filter(line -> !line.startsWith("reread:") || exact && !behaviourSays)
                 .forEach(lines::add);
-        if (probesSay && !grade.probesShown) {
+        if (!grade.probesShown && (behaviourSays || !grade.probes.untested().isEmpty())) {
             lines.addAll(grade.probes.failureLines());
             grade.probesShown = true;
-        } else if (!probesSay && !exact) {
-            lines.add(grade.probes.ran() ? "probes: every probe of your intersectionWith and illuminate holds"
-                    : "probes: they did not run");
+        } else if (!behaviourSays && !exact) {
+            lines.add(grade.probes.noFindingLine());
         }
         if (exact && grade.exactly == null) {
             grade.exactly = (scene.hidden() ? "A hidden scene" : scene.name()) + " is exactly the image of \""
                     + diagnosis.explaining().get(0).variant().title() + "\".";
         }
-        return probesSay ? grade.probes.failedProbes().get(0).label()
-                : exact ? diagnosis.explaining().get(0).variant().title() : UNRECOGNISED;
+        // The chart counts exact matches first, then tested findings; never what the scenes cannot show.
+        return exact ? diagnosis.explaining().get(0).variant().title()
+                : behaviourSays ? grade.probes.label() : UNRECOGNISED;
     }
 
     /** Writes the images of a scene that is not hidden (a hidden one has none): heat map, theirs, the reference. */

@@ -4,6 +4,7 @@ import java.lang.reflect.Constructor;
 import java.lang.reflect.Field;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
+import java.lang.reflect.Modifier;
 
 /**
  * The starter kit's classes and the student's two, reached by reflection in the JVM that runs the
@@ -17,6 +18,8 @@ final class StarterApi {
     private final Constructor<?> newVector3, newRay, newSphere, newScene, newPointLight, newRenderer, newCamera;
     private final Method intersectionWith, illuminate, castRay, toRgb, setAmbientLight, setPointLight;
     private final Method getObjectHit, getDistance, getLocation, getNormal, findClosestIntersection;
+    /** The starter Sphere's fields of k_d, k_s and n, opened; null when the student's Sphere lacks one. */
+    private final Field[] phong;
     private final Field x, y, z;
 
     StarterApi(ClassLoader student) throws ReflectiveOperationException {
@@ -46,6 +49,7 @@ final class StarterApi {
         getDistance = hit.getMethod("getDistance");
         getLocation = hit.getMethod("getLocation");
         getNormal = hit.getMethod("getNormal");
+        phong = phongFields();
         x = vector3.getField("x");
         y = vector3.getField("y");
         z = vector3.getField("z");
@@ -59,6 +63,35 @@ final class StarterApi {
         } catch (NoSuchMethodException | RuntimeException e) {
             return null;
         }
+    }
+
+    private Field[] phongFields() {
+        try {
+            Field[] fields = {sphere.getDeclaredField("phong_kD"), sphere.getDeclaredField("phong_kS"),
+                sphere.getDeclaredField("phong_n")};
+            for (Field field : fields) {
+                if (field.getType() != double.class || Modifier.isFinal(field.getModifiers())
+                        || Modifier.isStatic(field.getModifiers())) {
+                    return null;
+                }
+                field.setAccessible(true);
+            }
+            return fields;
+        } catch (NoSuchFieldException | RuntimeException e) {
+            return null;
+        }
+    }
+
+    /** Whether a sphere's k_d, k_s and n can be set: the student's Sphere keeps the starter's fields. */
+    boolean hasPhongFields() {
+        return phong != null;
+    }
+
+    /** Sets k_d, k_s and n of {@code aSphere} through the starter's fields (see {@link #hasPhongFields}). */
+    void setPhong(Object aSphere, double kD, double kS, double n) throws ReflectiveOperationException {
+        phong[0].setDouble(aSphere, kD);
+        phong[1].setDouble(aSphere, kS);
+        phong[2].setDouble(aSphere, n);
     }
 
     boolean hasIlluminate() {

@@ -9,20 +9,22 @@ import java.util.Set;
 /**
  * What a result's explanations found, read back from the lines the grader wrote into them, for the
  * cohort's tallies and comparisons: the catalogue entry that reproduces an image exactly, the facts
- * of the failed probes (at a failure), the facts noted at a pass, and each wrong scene's difference
+ * of the behaviour comparison's tested findings (at a failure), the notes (what a pass noted, and what
+ * the course's scenes cannot show), and each wrong scene's difference
  * figures.
  *
  * @param catalogued the title of the first catalogue entry that matches a wrong image exactly, or null
- * @param failed     the facts of the probes that failed, at a failure, each once, in order
- * @param notes      the facts of the probes that failed at a pass, which the course's scenes do not test
+ * @param failed     the facts of the tested findings, at a failure, each once, in order
+ * @param notes      the notes: tested findings noted at a pass, and behaviour the course's scenes cannot show
  * @param figures    each wrong image's difference figures, as "scene N: mean difference ...", in scene order
  */
 public record Findings(String catalogued, List<String> failed, List<String> notes, List<String> figures) {
 
     /** How the grader starts the lines read here (SubmissionGrader, ProbeFindings, Diagnosis). */
-    private static final String PROBE = "probe: ";
+    private static final String PROBE = "behaviour: ";
     private static final String NOTE = "note: ";
-    private static final String NOT_TESTED = "; the course's scenes do not test this";
+    /** What follows a tested finding's fact when it is noted at a pass (ProbeFindings.notes). */
+    private static final String NOT_TESTED = " (tick1.xml and the hidden scene do not show this";
     private static final String FIGURES = "mean difference ";
     private static final String VERDICT = "verdict: ";
     private static final String EXACTLY = ": every pixel matches it exactly.";

@@ -26,6 +26,8 @@ public final class ChildOutput {
 
     /** The most text read from one file of the child's. */
     static final int TEXT_CAP = 64 * 1024;
+    /** The cap on the probes' log: about 250 KB of answers to the random inputs, with room to spare. */
+    static final int PROBES_CAP = 1 << 20;
 
     /** The eight bytes that begin every PNG file. */
     private static final byte[] PNG_SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
@@ -76,7 +78,12 @@ public final class ChildOutput {
 
     /** The text of the regular file {@code file}, capped and made printable, or null when it is not one. */
     static String readText(Path file) throws IOException {
-        byte[] bytes = read(file, TEXT_CAP);
+        return readText(file, TEXT_CAP);
+    }
+
+    /** As {@link #readText(Path)}, with at most {@code cap} bytes read. */
+    static String readText(Path file, int cap) throws IOException {
+        byte[] bytes = read(file, cap);
         return bytes == null ? null : printable(new String(bytes, StandardCharsets.UTF_8));
     }
 

@@ -309,7 +309,7 @@ public final class StudentProcess implements AutoCloseable {
         }
         return new Result(run.limitReached() == null ? outcomes
                 : outcomes.stream().map(outcome -> withLimit(outcome, run.limitReached())).toList(), run.outputTail(),
-                traces, ChildOutput.readText(output.resolve(StudentHarness.PROBES_FILE)));
+                traces, ChildOutput.readText(output.resolve(StudentHarness.PROBES_FILE), ChildOutput.PROBES_CAP));
     }
 
     /**

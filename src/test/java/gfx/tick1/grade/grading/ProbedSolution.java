@@ -68,9 +68,9 @@ record ProbedSolution(String sphere, String renderer) {
         return Files.readString(log);
     }
 
-    /** The probes these two files fail. */
-    List<Probe> failedProbes(Path folder) throws Exception {
-        return ProbeFindings.of(probeLog(folder)).failedProbes();
+    /** What the behaviour comparison finds of these two files. */
+    ProbeFindings findings(Path folder) throws Exception {
+        return ProbeFindings.of(probeLog(folder));
     }
 
     /** The compiled classes, loaded from memory, beside the JDK only. */

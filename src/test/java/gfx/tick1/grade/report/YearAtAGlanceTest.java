@@ -22,10 +22,10 @@ class YearAtAGlanceTest {
     }
 
     private static final List<StudentResult> COHORT = List.of(
-            result("1", false, List.of("probe: " + FACT, "reread: handout section 5, Figure 6(b)."), 800),
+            result("1", false, List.of("behaviour: " + FACT, "reread: handout section 5, Figure 6(b)."), 800),
             result("2", false, List.of("verdict: far root: every pixel matches it exactly.",
                     "reread: handout section 4, steps 4 and 5."), 2_000),
-            result("3", true, List.of("note: " + FACT + "; the course's scenes do not test this (handout 5)"), 70_000));
+            result("3", true, List.of("note: " + FACT + " (tick1.xml and the hidden scene do not show this; handout section 5)"), 70_000));
 
     @Test
     void aFindingIsCountedAmongTheFailedAndANoteAtAPassAmongThePassed() {

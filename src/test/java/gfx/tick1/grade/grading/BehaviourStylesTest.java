@@ -3,7 +3,6 @@ package gfx.tick1.grade.grading;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
-import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -11,10 +10,10 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * Correct solutions written in other styles than ours fail no probe: a probe may name only what
- * the code gets wrong, never how it is written.
+ * Correct solutions written in other styles than ours behave as ours on every input, tested or
+ * not: the comparison may speak only of what the code does, never of how it is written.
  */
-class ProbeStylesTest {
+class BehaviourStylesTest {
 
     static Stream<Arguments> styles() {
         ProbedSolution correct = ProbedSolution.correct();
@@ -125,11 +124,26 @@ class ProbeStylesTest {
                 """)));
     }
 
+    /** Styles of this project's own writing, each as its two files. */
+    static Stream<Arguments> writtenStyles() {
+        return WrittenStyles.all().values().stream().map(style -> Arguments.of(style.name(),
+                new ProbedSolution(style.sphere(), style.renderer())));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("writtenStyles")
+    void aCorrectSolutionOfOurOwnStyleBehavesAsOurs(String style, ProbedSolution solution, @TempDir Path folder)
+            throws Exception {
+        aCorrectSolutionInAnotherStyleBehavesAsOurs(style, solution, folder);
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("styles")
-    void aCorrectSolutionInAnotherStyleFailsNoProbe(String style, ProbedSolution solution, @TempDir Path folder)
+    void aCorrectSolutionInAnotherStyleBehavesAsOurs(String style, ProbedSolution solution, @TempDir Path folder)
             throws Exception {
-        List<Probe> failed = solution.failedProbes(folder);
-        assertThat(failed).as("the probes the style \"%s\" fails", style).isEmpty();
+        ProbeFindings findings = solution.findings(folder);
+        assertThat(findings.ran()).as("the style \"%s\" was run", style).isTrue();
+        assertThat(findings.facts()).as("the tested findings of the style \"%s\"", style).isEmpty();
+        assertThat(findings.untested()).as("the untested notes of the style \"%s\"", style).isEmpty();
     }
 }
