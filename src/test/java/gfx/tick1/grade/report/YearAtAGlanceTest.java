@@ -25,7 +25,8 @@ class YearAtAGlanceTest {
             result("1", false, List.of("behaviour: " + FACT, "reread: handout section 5, Figure 6(b)."), 800),
             result("2", false, List.of("verdict: far root: every pixel matches it exactly.",
                     "reread: handout section 4, steps 4 and 5."), 2_000),
-            result("3", true, List.of("note: " + FACT + " (tick1.xml and the hidden scene do not show this; handout section 5)"), 70_000));
+            result("3", true, List.of("note: " + FACT
+                    + " (tick1.xml and the hidden scene do not show this; handout section 5)"), 70_000));
 
     @Test
     void aFindingIsCountedAmongTheFailedAndANoteAtAPassAmongThePassed() {
