@@ -111,9 +111,9 @@ public final class BenchCommand implements Callable<Integer> {
         BufferedImage truth = new TruthRenderer(settings.errorWidth, settings.errorHeight).render(tick1);
         BufferedImage manySamples = new FastRenderer(settings.errorWidth, settings.errorHeight,
                 new SamplePattern(256)).render(tick1);
-        for (Variant variant : tick1Variants(cores)) {
-            boolean antiAliased = variant.samples() > 1;
-            results.add(measure(variant, "tick1.xml", tick1, settings.width, settings.height, settings,
+        for (RenderSetting setting : tick1Settings(cores)) {
+            boolean antiAliased = setting.samples() > 1;
+            results.add(measure(setting, "tick1.xml", tick1, settings.width, settings.height, settings,
                     antiAliased ? "256 samples" : "truth", antiAliased ? manySamples : truth));
         }
         for (int count : settings.crowds) {
@@ -124,11 +124,12 @@ public final class BenchCommand implements Callable<Integer> {
                     FastRenderer.SphereSearch.BRUTE_FORCE, Intersection.DEFAULT).render(crowd);
             for (FastRenderer.SphereSearch search : new FastRenderer.SphereSearch[] {
                 FastRenderer.SphereSearch.BRUTE_FORCE, FastRenderer.SphereSearch.BVH}) {
-                Variant variant = new Variant(search == FastRenderer.SphereSearch.BVH ? "BVH" : "brute force", 1, cores,
+                RenderSetting setting = new RenderSetting(
+                        search == FastRenderer.SphereSearch.BVH ? "BVH" : "brute force", 1, cores,
                         (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), search, Intersection.DEFAULT)
                                 .render(s));
                 // Brute force over 10,000 spheres takes seconds a frame: fewer runs for the crowds.
-                results.add(measure(variant, file.getFileName().toString(), crowd, settings.crowdWidth,
+                results.add(measure(setting, file.getFileName().toString(), crowd, settings.crowdWidth,
                         settings.crowdWidth * 3 / 4, settings.withRuns(1, Math.min(settings.runs, 3)), "brute force",
                         bruteForce));
             }
@@ -163,47 +164,47 @@ public final class BenchCommand implements Callable<Integer> {
     }
 
     /**
-     * The variants, in the order they run. The default comes first: everything the JIT learns
+     * The render settings, in the order they run. The default comes first: everything the JIT learns
      * from the others (other intersection methods, the readable classes) only slows later code,
      * and a user's render runs the default alone.
      */
-    private static List<Variant> tick1Variants(int cores) {
-        List<Variant> variants = new ArrayList<>();
+    private static List<RenderSetting> tick1Settings(int cores) {
+        List<RenderSetting> renderSettings = new ArrayList<>();
         for (Intersection intersection : new Intersection[] {Intersection.ROBUST, Intersection.HANDOUT}) {
             for (int threads : new int[] {cores, 1}) {
-                variants.add(new Variant("fast double, " + name(intersection), 1, threads,
+                renderSettings.add(new RenderSetting("fast double, " + name(intersection), 1, threads,
                         (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), intersection).render(s)));
             }
         }
         for (int samples : new int[] {4, 16}) {
-            variants.add(new Variant("fast double, robust, " + samples + " samples", samples, cores,
+            renderSettings.add(new RenderSetting("fast double, robust, " + samples + " samples", samples, cores,
                     (s, w, h) -> new FastRenderer(w, h, new SamplePattern(samples)).render(s)));
         }
-        variants.add(new Variant("float, handout formula", 1, cores,
+        renderSettings.add(new RenderSetting("float, handout formula", 1, cores,
                 (s, w, h) -> new FloatRenderer(w, h, FloatRenderer.Formula.HANDOUT).render(s)));
-        variants.add(new Variant("float, robust", 1, cores,
+        renderSettings.add(new RenderSetting("float, robust", 1, cores,
                 (s, w, h) -> new FloatRenderer(w, h, FloatRenderer.Formula.ROBUST).render(s)));
-        variants.add(new Variant("readable Renderer, robust", 1, cores,
+        renderSettings.add(new RenderSetting("readable Renderer, robust", 1, cores,
                 (s, w, h) -> new ReferenceRenderer(w, h).render(s)));
-        variants.add(new Variant("readable Renderer, handout formula", 1, 1,
+        renderSettings.add(new RenderSetting("readable Renderer, handout formula", 1, 1,
                 (s, w, h) -> new ReferenceRenderer(w, h, Intersection.HANDOUT).render(s)));
-        return variants;
+        return renderSettings;
     }
 
     private static String name(Intersection intersection) {
         return intersection == Intersection.HANDOUT ? "handout formula" : "robust (default)";
     }
 
-    private Result measure(Variant variant, String sceneName, Scene scene, int width, int height, Settings settings,
-            String errorAgainst, BufferedImage reference) {
-        Timing timing = Timing.of(() -> variant.frame().render(scene, width, height), variant.threads(),
+    private Result measure(RenderSetting setting, String sceneName, Scene scene, int width, int height,
+            Settings settings, String errorAgainst, BufferedImage reference) {
+        Timing timing = Timing.of(() -> setting.frame().render(scene, width, height), setting.threads(),
                 settings.warmups, settings.runs);
-        BufferedImage small = variant.frame().render(scene, reference.getWidth(), reference.getHeight());
-        Result result = new Result(variant.name(), sceneName, width, height, variant.samples(), variant.threads(),
+        BufferedImage small = setting.frame().render(scene, reference.getWidth(), reference.getHeight());
+        Result result = new Result(setting.name(), sceneName, width, height, setting.samples(), setting.threads(),
                 timing, errorAgainst, ImageDifference.between(reference, small), reference.getWidth(),
                 reference.getHeight());
-        log.printf("  %-45s %-16s %-11s %9.1f ms %8.1f Mrays/s  max error %s%n", variant.name(), sceneName,
-                count(variant.threads(), "thread"), timing.median(), result.megaRaysPerSecond(),
+        log.printf("  %-45s %-16s %-11s %9.1f ms %8.1f Mrays/s  max error %s%n", setting.name(), sceneName,
+                count(setting.threads(), "thread"), timing.median(), result.megaRaysPerSecond(),
                 count(result.error().maxDifference(), "level"));
         log.flush();
         return result;

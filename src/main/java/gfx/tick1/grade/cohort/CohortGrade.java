@@ -134,7 +134,7 @@ public final class CohortGrade {
         }
 
         Done grade() throws IOException, InterruptedException {
-            sort();
+            triage();
             if (!todo.isEmpty()) {
                 gradeTodo();
             }
@@ -165,7 +165,7 @@ public final class CohortGrade {
         }
 
         /** Results known already (problems, stored results), and the submissions left to grade. */
-        private void sort() throws IOException, InterruptedException {
+        private void triage() throws IOException, InterruptedException {
             for (int i = 0; i < submissions.size(); i++) {
                 Submission submission = submissions.get(i);
                 if (submission.problem() != null) {

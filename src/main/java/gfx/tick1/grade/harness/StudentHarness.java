@@ -1,6 +1,5 @@
 package gfx.tick1.grade.harness;
 
-import gfx.tick1.grade.sandbox.ChildOutput;
 import java.awt.image.BufferedImage;
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -49,7 +48,7 @@ import javax.imageio.ImageIO;
  * </ul>
  *
  * <p>Everything this process writes is written while the student's code runs in it, so
- * {@code grade} trusts none of it (see {@link ChildOutput}).
+ * {@code grade} trusts none of it (the grader reads it through grade/sandbox's ChildOutput).
  */
 public final class StudentHarness {
 

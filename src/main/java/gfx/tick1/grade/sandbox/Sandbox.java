@@ -157,7 +157,7 @@ public final class Sandbox {
         Sandbox sandbox = new Sandbox(bwrap, true,
                 root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0, Cgroup.find(),
                 spaceFilter, List.of());
-        sandbox.probe();
+        sandbox.selfTest();
         return sandbox;
     }
 
@@ -456,7 +456,7 @@ public final class Sandbox {
     }
 
     /** Runs {@code true} in the sandbox: bubblewrap may be installed where namespaces are not allowed. */
-    private void probe() throws Unavailable, InterruptedException {
+    private void selfTest() throws Unavailable, InterruptedException {
         try {
             Process process = processFor(wrap(List.of("/usr/bin/true"), List.of(), 5, 256, false, null))
                     .redirectErrorStream(true).start();

@@ -3,8 +3,8 @@ package gfx.tick1.bench;
 import gfx.tick1.scene.Scene;
 import java.awt.image.BufferedImage;
 
-/** One way of rendering a frame, as the report names it. */
-record Variant(String name, int samples, int threads, Frame frame) {
+/** One way of rendering a frame (a renderer, its samples and threads), as the report names it. */
+record RenderSetting(String name, int samples, int threads, Frame frame) {
 
     /** Renders a scene at a size; parallel streams inside run on the caller's pool. */
     interface Frame {
