@@ -19,7 +19,11 @@ set -e
 mode=$1 root=$2 home=$3 uid=$4 run=$5 tick1home=$6
 mount --make-rprivate /
 mount -t tmpfs tmpfs "$root"
-mkdir -p "$root"/{usr,etc,proc,dev,tmp} "$root/home/p$uid" "$root$tick1home"
+mkdir -p "$root"/{usr,etc,proc,dev,tmp} "$root/home/p$uid"
+# The jail's own /tmp first: tick1's installation may lie under the host's /tmp (a clone there), and
+# is then mounted inside it, not hidden by it.
+mount -t tmpfs -o mode=1777 tmpfs "$root/tmp"
+mkdir -p "$root$tick1home"
 for link in bin lib lib64 sbin ; do
     if [ -L "/$link" ] ; then ln -s "$(readlink "/$link")" "$root/$link" ; else mkdir "$root/$link" && mount --rbind "/$link" "$root/$link" ; fi
 done
@@ -28,7 +32,6 @@ mount --rbind /etc "$root/etc"
 mount --rbind /dev "$root/dev"
 mount --rbind "$tick1home" "$root$tick1home"
 mount -t proc proc "$root/proc"
-mount -t tmpfs -o mode=1777 tmpfs "$root/tmp"
 mount --bind "$home" "$root/home/p$uid"
 env="env -i HOME=/home/p$uid PATH=/usr/bin:/bin TERM=xterm USER=p$uid VPL_LANG=en_US.UTF-8 TMPDIR=/tmp"
 if [ "$mode" = pivot ] ; then
