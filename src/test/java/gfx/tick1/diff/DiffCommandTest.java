@@ -249,8 +249,9 @@ class DiffCommandTest {
     private static final Set<String> RUN = Set.of(INTERSECTION, ILLUMINATE, "getNormalAt(Vector3)");
 
     /**
-     * A correct solution whose only differences are in the methods the comparison runs behaves as
-     * ours, whatever its form: exit 0; one that also changes another member (render, a constructor) exits 1.
+     * A correct solution whose only differences are in the methods the comparison runs (and in helpers
+     * of its own that only they call) behaves as ours, whatever its form: exit 0; one that also changes
+     * another member of ours (render, a constructor) exits 1.
      */
     @ParameterizedTest(name = "{0}")
     @MethodSource("otherCode")
@@ -258,8 +259,12 @@ class DiffCommandTest {
             throws IOException, InterruptedException {
         org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
         CliRun run = diffOf(style);
-        assertThat(run.status()).as(run.transcript()).isEqualTo(RUN.containsAll(style.changedMembers())
-                ? DiffCommand.EXIT_SAME : DiffCommand.EXIT_DIFFERENT);
+        boolean onlyRunMembersOfOursChanged = style.changedMembers().stream()
+                .filter(signature -> DiffCommand.ours("Sphere").members().containsKey(signature)
+                        || DiffCommand.ours("Renderer").members().containsKey(signature))
+                .allMatch(RUN::contains);
+        assertThat(run.status()).as(run.transcript())
+                .isEqualTo(onlyRunMembersOfOursChanged ? DiffCommand.EXIT_SAME : DiffCommand.EXIT_DIFFERENT);
         assertThat(run.out().lines().filter(line -> line.contains(" behaves as ours on "))).as(run.transcript())
                 .hasSize(2);
     }
