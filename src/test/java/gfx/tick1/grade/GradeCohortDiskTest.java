@@ -65,6 +65,9 @@ class GradeCohortDiskTest {
                 .contains("Failing Student_102_assignsubmission_file_: not graded",
                         "MiB free, less than the 256 MiB a run may need");
         assertThat(stored(report)).as("results stored: the pass only").hasSize(1);
+        assertThat(Files.readString(report.resolve("grades.csv"))).as("grades.csv after the short run: the "
+                + "student not graded has a blank grade (Moodle's upload skips it), never 0.00")
+                .contains("Participant 101,").contains("1.00").doesNotContain("0.00").doesNotContain("FAILED: not");
 
         Path roomy = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
                 PosixFilePermissions.fromString("rwx--x--x")));

@@ -56,8 +56,6 @@ public final class CohortGrade {
     public record Ungraded(String folder, String why, boolean grader) {
     }
 
-    /** The diagnosis of a submission tick1 could not grade. */
-    public static final String NOT_GRADED = "not graded";
 
     /**
      * From how many submissions to grade a class data sharing archive is made: it takes about as
@@ -143,11 +141,10 @@ public final class CohortGrade {
                 results[i] = store.load(same.getValue(), submissions.get(i));
                 images[i] = store.folderOf(same.getValue());
                 StudentResult original = results[firstWithKey.get(same.getValue())];
-                if (results[i] == null && original != null && NOT_GRADED.equals(original.diagnosis())) {
+                if (results[i] == null && original != null && !original.graded()) {
                     // The one graded for it could not be: it fares the same.
-                    String why = original.reason();
-                    results[i] = new StudentResult(submissions.get(i), false, 0, 0, NOT_GRADED, why, List.of(),
-                            Duration.ZERO);
+                    results[i] = new StudentResult(submissions.get(i), false, 0, 0, original.diagnosis(),
+                            original.reason(), List.of(), Duration.ZERO);
                     ungraded.add(new Ungraded(submissions.get(i).folder(), "the same files as "
                             + submissions.get(firstWithKey.get(same.getValue())).folder() + ", which was not graded",
                             true));
@@ -274,8 +271,7 @@ public final class CohortGrade {
 
     /** The failing result of a submission that could not be graded: a row that says so. */
     private StudentResult notGraded(Submission submission, String why) {
-        return new StudentResult(submission, false, 0, 0, NOT_GRADED,
-                "FAILED: not graded: " + why + "; the course staff must grade it again", List.of(), Duration.ZERO);
+        return StudentResult.notGraded(submission, why);
     }
 
     /**

@@ -23,6 +23,23 @@ import java.util.stream.Stream;
 public record StudentResult(Submission submission, boolean passed, int scenesPassed, int scenesTotal,
         String diagnosis, String reason, List<SceneResult> scenes, Duration time) {
 
+    /** The diagnosis of a submission tick1 could not grade (its grader failed, not its code). */
+    public static final String NOT_GRADED = "not graded";
+
+    /**
+     * A submission tick1 could not grade: no verdict on its code, so no mark (its row's grade stays
+     * blank), and the reason says why and that staff must grade it again.
+     */
+    public static StudentResult notGraded(Submission submission, String why) {
+        return new StudentResult(submission, false, 0, 0, NOT_GRADED,
+                "Not graded: " + why + "; the course staff must grade it again", List.of(), Duration.ZERO);
+    }
+
+    /** Whether tick1 graded the submission's code (false when its grader failed). */
+    public boolean graded() {
+        return !NOT_GRADED.equals(diagnosis);
+    }
+
     /**
      * One grading scene's result for one student.
      *

@@ -36,11 +36,12 @@ public final class CohortOutputs {
     /**
      * The mark for {@code result}: the pass mark, or with {@code perScene} the share of scenes passed of it; null
      * (a blank Grade, which Moodle's upload skips) for a submission never run because of a problem with its files
-     * (a missing or misnamed file, two candidates, a refused zip, a participant id in two folders): staff look
-     * at those first, and a 0.00 would read as a verdict on code that was never tried.
+     * (a missing or misnamed file, two candidates, a refused zip, a participant id in two folders), and for one
+     * tick1 could not grade (its grader failed: a full disk, an error of tick1's own): staff look at those first,
+     * and a 0.00 would read as a verdict on code that was never tried.
      */
     public static Double grade(StudentResult result, double maxGrade, boolean perScene) {
-        if (result.submission().problem() != null) {
+        if (result.submission().problem() != null || !result.graded()) {
             return null;
         }
         if (perScene) {
