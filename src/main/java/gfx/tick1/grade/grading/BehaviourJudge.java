@@ -46,7 +46,7 @@ final class BehaviourJudge {
     /** The edge cases the course's scenes cannot show, and what each one is in words. */
     private static final List<String> UNTESTED_EDGES = List.of("graze", "inside", "surface");
 
-    private static final Set<Variant> OURS = EnumSet.noneOf(Variant.class);
+    static final Set<Variant> OURS = EnumSet.noneOf(Variant.class);
 
     private BehaviourJudge() {
     }
@@ -231,8 +231,14 @@ final class BehaviourJudge {
 
         @Override
         public String counterexample() {
-            return "for " + InputWords.ray(call) + ", yours returns " + InputWords.hit(answer) + "; ours returns "
-                    + InputWords.hit(model(OURS));
+            String yours = InputWords.hit(answer, false);
+            String ours = InputWords.hit(model(OURS), false);
+            if (yours.equals(ours)) {
+                // Apart beyond the seventh digit (float arithmetic, say): every digit, so the two differ.
+                yours = InputWords.hit(answer, true);
+                ours = InputWords.hit(model(OURS), true);
+            }
+            return "for " + InputWords.ray(call) + ", yours returns " + yours + "; ours returns " + ours;
         }
     }
 
@@ -266,8 +272,14 @@ final class BehaviourJudge {
 
         @Override
         public String counterexample() {
-            return "for " + InputWords.shading(call, phongSet) + ", yours returns " + InputWords.colour(answer)
-                    + "; ours returns " + InputWords.colour(model(OURS));
+            String yours = InputWords.colour(answer, false);
+            String ours = InputWords.colour(model(OURS), false);
+            if (yours.equals(ours)) {
+                // Apart beyond the seventh digit (float arithmetic, say): every digit, so the two differ.
+                yours = InputWords.colour(answer, true);
+                ours = InputWords.colour(model(OURS), true);
+            }
+            return "for " + InputWords.shading(call, phongSet) + ", yours returns " + yours + "; ours returns " + ours;
         }
     }
 

@@ -38,25 +38,43 @@ final class InputWords {
 
     /** A hit, no hit, or how the call gave no answer. */
     static String hit(Answer answer) {
+        return hit(answer, false);
+    }
+
+    /** As {@link #hit(Answer)}; with {@code everyDigit}, each number as the shortest decimal that reads back as it. */
+    static String hit(Answer answer, boolean everyDigit) {
         if (answer instanceof Hit hit) {
             return !hit.sameSphere() ? "a hit that names another sphere than this one"
-                    : "a hit at s = " + number(hit.distance()) + ", P = " + vector(hit.point()) + ", N = "
-                    + vector(hit.normal());
+                    : "a hit at s = " + number(hit.distance(), everyDigit) + ", P = "
+                    + vector(hit.point(), everyDigit) + ", N = " + vector(hit.normal(), everyDigit);
         }
         return answer instanceof ProbeAnswers.None ? "no hit" : failure(answer);
     }
 
     static String hit(MethodModels.Hit hit) {
-        return hit == null ? "no hit" : "a hit at s = " + number(hit.distance()) + ", P = " + vector(hit.point())
-                + ", N = " + vector(hit.normal());
+        return hit(hit, false);
+    }
+
+    static String hit(MethodModels.Hit hit, boolean everyDigit) {
+        return hit == null ? "no hit" : "a hit at s = " + number(hit.distance(), everyDigit) + ", P = "
+                + vector(new double[] {hit.point().x, hit.point().y, hit.point().z}, everyDigit) + ", N = "
+                + vector(new double[] {hit.normal().x, hit.normal().y, hit.normal().z}, everyDigit);
     }
 
     static String colour(Answer answer) {
-        return answer instanceof Colour colour ? "the colour " + vector(colour.rgb()) : failure(answer);
+        return colour(answer, false);
+    }
+
+    static String colour(Answer answer, boolean everyDigit) {
+        return answer instanceof Colour colour ? "the colour " + vector(colour.rgb(), everyDigit) : failure(answer);
     }
 
     static String colour(Vector3 colour) {
-        return "the colour " + vector(colour);
+        return colour(colour, false);
+    }
+
+    static String colour(Vector3 colour, boolean everyDigit) {
+        return "the colour " + vector(new double[] {colour.x, colour.y, colour.z}, everyDigit);
     }
 
     private static String failure(Answer answer) {
@@ -83,11 +101,21 @@ final class InputWords {
     }
 
     static String vector(double[] v) {
-        return "(" + number(v[0]) + ", " + number(v[1]) + ", " + number(v[2]) + ")";
+        return vector(v, false);
     }
 
-    /** The shortest decimal that reads back as {@code x}, or 7 significant digits with "about" for a long one. */
+    private static String vector(double[] v, boolean everyDigit) {
+        return "(" + number(v[0], everyDigit) + ", " + number(v[1], everyDigit) + ", " + number(v[2], everyDigit)
+                + ")";
+    }
+
+    /** The shortest decimal that reads back as {@code x}, or 7 significant digits for a long one. */
     static String number(double x) {
+        return number(x, false);
+    }
+
+    /** As {@link #number(double)}; with {@code everyDigit}, always the shortest decimal that reads back as x. */
+    private static String number(double x, boolean everyDigit) {
         if (Double.isNaN(x) || Double.isInfinite(x)) {
             return Double.toString(x);
         }
@@ -95,7 +123,7 @@ final class InputWords {
             return Long.toString((long) x);
         }
         String shortest = BigDecimal.valueOf(x).stripTrailingZeros().toPlainString();
-        if (shortest.length() <= 10) {
+        if (everyDigit || shortest.length() <= 10) {
             return shortest;
         }
         return new BigDecimal(x).round(new MathContext(7)).stripTrailingZeros().toPlainString();
