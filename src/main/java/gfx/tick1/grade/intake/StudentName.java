@@ -29,11 +29,16 @@ record StudentName(String id, String fullName, boolean moodles) {
 
     /** A full name as Moodle writes it into a name: no {@code _}. */
     private static final String FULL_NAME = "([^_]*)";
+    /**
+     * A participant id as Moodle writes it: a positive whole number with no leading zero (its importer reads
+     * {@code 066} as 66, so a download naming both could not be told apart).
+     */
+    private static final String ID = "([1-9]\\d*)";
     /** What follows the prefix in the name of every student's folder of file submissions. */
     private static final String FILE_PLUGIN = "_assignsubmission_file";
 
-    private static final Pattern MOODLE_FOLDER = Pattern.compile(FULL_NAME + "_(\\d+)" + FILE_PLUGIN + "_?");
-    private static final Pattern MOODLE_LOOSE_FILE = Pattern.compile("(" + FULL_NAME + "_(\\d+)" + FILE_PLUGIN
+    private static final Pattern MOODLE_FOLDER = Pattern.compile(FULL_NAME + "_" + ID + FILE_PLUGIN + "_?");
+    private static final Pattern MOODLE_LOOSE_FILE = Pattern.compile("(" + FULL_NAME + "_" + ID + FILE_PLUGIN
             + "_)(.+)");
     private static final Pattern OTHER_SUBMISSION_TYPE = Pattern.compile(FULL_NAME
             + "_\\d+_assignsubmission_(?!file(?:_|$))[a-z0-9]+(?:_.*)?");

@@ -149,4 +149,17 @@ class MoodleNamesTest {
         assertThat(cohort).hasSize(5).allSatisfy(s -> assertThat(Submissions.namedByMoodle(s))
                 .as("%s is named by Moodle", s.folder()).isFalse());
     }
+
+    @Test
+    void anIdWithALeadingZeroIsNotMoodlesAndTakesNoParticipantsRow() throws IOException {
+        // Moodle writes ids as whole numbers; its feedback importer adds 0 to the id it reads, so 066 would be 66's.
+        List<Submission> cohort = readZip(entries("X_066_assignsubmission_file/Sphere.java", SPHERE,
+                "X_066_assignsubmission_file/Renderer.java", RENDERER,
+                "Y_66_assignsubmission_file/Sphere.java", SPHERE,
+                "Y_66_assignsubmission_file/Renderer.java", RENDERER));
+
+        assertThat(cohort).as("the two folders").hasSize(2);
+        assertThat(cohort.stream().filter(Submissions::namedByMoodle).map(Submission::id))
+                .as("the participants named as Moodle names them").containsExactly("66");
+    }
 }
