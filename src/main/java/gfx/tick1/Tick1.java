@@ -1,27 +1,32 @@
 package gfx.tick1;
 
-import gfx.tick1.bench.BenchCommand;
-import gfx.tick1.cli.CommandFailure;
-import gfx.tick1.cli.ExitStatuses;
-import gfx.tick1.cli.WholeTokenHelp;
-import gfx.tick1.compare.CompareCommand;
-import gfx.tick1.diagnose.DiagnoseCommand;
-import gfx.tick1.diff.DiffCommand;
-import gfx.tick1.grade.GradeCommand;
-import gfx.tick1.grade.vpl.VplCommand;
-import gfx.tick1.preview.PreviewCommand;
-import gfx.tick1.scene.Misspelling;
-import gfx.tick1.starter.StarterCommand;
+import gfx.tick1.command.bench.BenchCommand;
+import gfx.tick1.command.compare.CompareCommand;
+import gfx.tick1.command.diagnose.DiagnoseCommand;
+import gfx.tick1.command.diff.DiffCommand;
+import gfx.tick1.command.grade.GradeCommand;
+import gfx.tick1.command.preview.PreviewCommand;
+import gfx.tick1.command.render.CommandLineGuess;
+import gfx.tick1.command.render.RenderCommand;
+import gfx.tick1.command.render.RenderJob;
+import gfx.tick1.command.render.RenderOptions;
+import gfx.tick1.command.render.Timings;
+import gfx.tick1.command.shared.cli.CommandFailure;
+import gfx.tick1.command.shared.cli.ExitStatuses;
+import gfx.tick1.command.shared.cli.WholeTokenHelp;
+import gfx.tick1.command.starter.StarterCommand;
+import gfx.tick1.command.vpl.VplCommand;
+import gfx.tick1.engine.scene.Misspelling;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
-import picocli.CommandLine;
 import picocli.CommandLine.HelpCommand;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.ParseResult;
 import picocli.CommandLine.RunLast;
 import picocli.CommandLine.UnmatchedArgumentException;
+import picocli.CommandLine;
 
 /**
  * Start-up: builds tick1's command line (the render command on top, its subcommands beneath),
@@ -75,7 +80,7 @@ public final class Tick1 {
      * render (options only, no subcommand named, no help asked for) cannot reach a subcommand,
      * so it is built without them. Anything else gets the full command line.
      */
-    static CommandLine commandLine(RenderCommand command, String... args) {
+    public static CommandLine commandLine(RenderCommand command, String... args) {
         boolean plainRender = args.length > 0 && args[0].startsWith("-");
         for (String arg : args) {
             boolean asksForHelpOrVersion = arg.equals("--help") || arg.equals("--version")

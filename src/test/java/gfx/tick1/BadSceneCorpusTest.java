@@ -2,7 +2,8 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.image.EarlierImage;
+import gfx.tick1.command.render.RenderCommand;
+import gfx.tick1.engine.image.EarlierImage;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;

@@ -1,6 +1,7 @@
 package gfx.tick1;
 
-import gfx.tick1.cli.MainClass;
+import gfx.tick1.command.render.RenderCommand;
+import gfx.tick1.command.shared.cli.MainClass;
 import java.io.ByteArrayOutputStream;
 import java.io.File;
 import java.io.IOException;

@@ -2,16 +2,18 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.bench.BenchCommand;
+import gfx.tick1.command.bench.BenchCommand;
+import gfx.tick1.command.render.RenderCommand;
+import gfx.tick1.command.shared.cli.Version;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
 import org.junit.jupiter.api.Test;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine;
 
 /** What tick1 --help, tick1 help COMMAND and a mistyped command line tell a newcomer. */
 class CommandLineHelpTest {

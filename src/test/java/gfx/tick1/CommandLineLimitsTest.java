@@ -3,6 +3,7 @@ package gfx.tick1;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import gfx.tick1.command.render.RenderCommand;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.io.PrintStream;

@@ -4,8 +4,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.sun.net.httpserver.HttpServer;
-import gfx.tick1.image.EarlierImage;
-import gfx.tick1.scene.SceneLoader;
+import gfx.tick1.command.render.RenderCommand;
+import gfx.tick1.engine.image.EarlierImage;
+import gfx.tick1.engine.scene.SceneLoader;
 import java.io.IOException;
 import java.io.RandomAccessFile;
 import java.io.Writer;

@@ -2,7 +2,8 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.image.ImageDifference;
+import gfx.tick1.command.render.RenderCommand;
+import gfx.tick1.engine.image.ImageDifference;
 import java.io.IOException;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;

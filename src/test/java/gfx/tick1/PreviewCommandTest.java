@@ -2,8 +2,9 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.preview.PreviewCommand;
-import gfx.tick1.preview.PreviewServer;
+import gfx.tick1.command.preview.PreviewCommand;
+import gfx.tick1.command.preview.PreviewServer;
+import gfx.tick1.command.render.RenderCommand;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;

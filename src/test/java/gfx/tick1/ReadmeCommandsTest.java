@@ -3,7 +3,8 @@ package gfx.tick1;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatCode;
 
-import gfx.tick1.cli.MainClass;
+import gfx.tick1.command.render.RenderCommand;
+import gfx.tick1.command.shared.cli.MainClass;
 import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;

@@ -2,6 +2,10 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.command.render.CommandLineGuess;
+import gfx.tick1.command.render.RenderCommand;
+import gfx.tick1.command.render.RenderJob;
+import gfx.tick1.command.render.RenderOptions;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;

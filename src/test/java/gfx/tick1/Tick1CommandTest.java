@@ -2,7 +2,8 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.image.EarlierImage;
+import gfx.tick1.command.render.RenderCommand;
+import gfx.tick1.engine.image.EarlierImage;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;

@@ -1,13 +1,13 @@
 package gfx.tick1.tools;
 
-import gfx.tick1.image.ImageDifference;
-import gfx.tick1.image.PngOutput;
-import gfx.tick1.render.GoldenImages;
-import gfx.tick1.render.ReferenceRenderer;
-import gfx.tick1.render.TruthRenderer;
-import gfx.tick1.scene.Intersection;
-import gfx.tick1.scene.Scene;
-import gfx.tick1.scene.SceneLoader;
+import gfx.tick1.engine.image.ImageDifference;
+import gfx.tick1.engine.image.PngOutput;
+import gfx.tick1.engine.render.GoldenImages;
+import gfx.tick1.engine.render.ReferenceRenderer;
+import gfx.tick1.engine.render.TruthRenderer;
+import gfx.tick1.engine.scene.Intersection;
+import gfx.tick1.engine.scene.Scene;
+import gfx.tick1.engine.scene.SceneLoader;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;

@@ -1,10 +1,10 @@
 package gfx.tick1.tools;
 
-import gfx.tick1.image.PngOutput;
-import gfx.tick1.render.GoldenImages;
-import gfx.tick1.render.ReferenceRenderer;
-import gfx.tick1.scene.Scene;
-import gfx.tick1.scene.SceneLoader;
+import gfx.tick1.engine.image.PngOutput;
+import gfx.tick1.engine.render.GoldenImages;
+import gfx.tick1.engine.render.ReferenceRenderer;
+import gfx.tick1.engine.scene.Scene;
+import gfx.tick1.engine.scene.SceneLoader;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -54,10 +54,10 @@ public class Renderer {
         Exception last = null;
         for (ClassLoader loader : loaders) {
             try {
-                Class<?> sceneLoader = loader.loadClass("gfx.tick1.scene.SceneLoader");
+                Class<?> sceneLoader = loader.loadClass("gfx.tick1.engine.scene.SceneLoader");
                 Object reference = sceneLoader.getConstructor(String.class).newInstance(path);
                 Object theScene = sceneLoader.getMethod("getScene").invoke(reference);
-                Class<?> renderer = loader.loadClass("gfx.tick1.render.Renderer");
+                Class<?> renderer = loader.loadClass("gfx.tick1.engine.render.Renderer");
                 Object instance = renderer.getConstructor(int.class, int.class).newInstance(width, height);
                 return (BufferedImage) renderer.getMethod("render", theScene.getClass()).invoke(instance, theScene);
             } catch (ReflectiveOperationException e) {

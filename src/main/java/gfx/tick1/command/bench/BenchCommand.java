@@ -1,0 +1,314 @@
+package gfx.tick1.command.bench;
+
+import gfx.tick1.command.shared.cli.ExitStatus;
+import gfx.tick1.engine.fast.FastRenderer;
+import gfx.tick1.command.shared.grader.cohort.CohortTiming;
+import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import gfx.tick1.engine.image.ImageDifference;
+import gfx.tick1.engine.image.PngOutput;
+import gfx.tick1.engine.io.IoErrors;
+import gfx.tick1.engine.io.OnExit;
+import gfx.tick1.engine.render.ReferenceRenderer;
+import gfx.tick1.engine.render.SamplePattern;
+import gfx.tick1.engine.render.TruthRenderer;
+import gfx.tick1.engine.scene.BundledScenes;
+import gfx.tick1.engine.scene.Intersection;
+import gfx.tick1.engine.scene.Scene;
+import gfx.tick1.engine.scene.SceneLoader;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import javax.imageio.ImageIO;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code tick1 bench}: every way of rendering side by side in one process, on the same scenes,
+ * with the time each takes and how far its image is from the right one; then whole runs of the
+ * program in fresh processes for start-up, scaling and end-to-end time. Writes report.md,
+ * results.csv and speed-vs-error.png into one folder; the scenes it renders (tick1.xml and the
+ * generated crowds) and the yardsticks' builds and images go to a temporary folder deleted on exit.
+ * It needs nothing but the installed program: the course code's correct solution is tick1's own.
+ */
+@Command(name = "bench",
+        description = {"Measures speed against accuracy for every renderer variant and writes a report "
+                + "(report.md, results.csv, speed-vs-error.png).",
+            "The report goes into the folder --out names (tick1-bench unless told otherwise). The yardsticks it "
+                    + "compares tick1 with (the course's code, built from the starter kit and tick1's own solution, "
+                    + "and a scalar C tracer where a C compiler is), the scenes it renders and their images are kept "
+                    + "in a temporary folder, deleted when it ends."})
+public final class BenchCommand implements Callable<Integer> {
+
+    @ExitStatus("the report was written")
+    public static final int EXIT_OK = 0;
+    @ExitStatus("the report could not be written, or a timed run of tick1 failed")
+    public static final int EXIT_CANNOT_WRITE = 3;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Option(names = "--quick", description = "Small frames, few runs and a cohort of 4: for CI, a check that "
+            + "everything runs, not a measure of speed. The full run is for people.")
+    private boolean quick;
+
+    @Option(names = "--out", paramLabel = "DIR", defaultValue = "tick1-bench",
+            description = "The folder to write the report into, created if missing (default: ${DEFAULT-VALUE}, in the "
+                    + "current folder).")
+    private Path out;
+
+    private PrintWriter log;
+
+    /**
+     * The files the runs read and write that are no part of the report: tick1.xml and the crowds (about 800 KB), the
+     * yardsticks' builds, and the C tracer's image (6 MB for the full run).
+     */
+    private Path scenes;
+
+    @Override
+    public Integer call() {
+        OnExit cleanUp = null;
+        try {
+            scenes = Files.createTempDirectory("tick1-bench-scenes");
+            Path folder = scenes;
+            cleanUp = OnExit.run("tick1-bench-clean-up", () -> WorkFolder.delete(folder));
+            return run();
+        } catch (IOException e) {
+            spec.commandLine().getErr().println("tick1 bench: " + IoErrors.describe(e));
+            return EXIT_CANNOT_WRITE;
+        } finally {
+            if (cleanUp != null) {
+                cleanUp.now();
+            }
+        }
+    }
+
+    private int run() throws IOException {
+        log = spec.commandLine().getOut();
+        Files.createDirectories(out);
+        Settings settings = quick ? Settings.QUICK : Settings.FULL;
+        int cores = Runtime.getRuntime().availableProcessors();
+
+        Path tick1File = BundledScenes.extract(BundledScenes.TICK1, scenes);
+        Scene tick1 = load(tick1File);
+
+        List<Result> results = new ArrayList<>();
+        log.printf("tick1 bench (%s): %s, Java %s%n", quick ? "quick" : "full", count(cores, "core"),
+                System.getProperty("java.version"));
+
+        BufferedImage truth = new TruthRenderer(settings.errorWidth, settings.errorHeight).render(tick1);
+        BufferedImage manySamples = new FastRenderer(settings.errorWidth, settings.errorHeight,
+                new SamplePattern(256)).render(tick1);
+        for (RenderSetting setting : tick1Settings(cores)) {
+            boolean antiAliased = setting.samples() > 1;
+            results.add(measure(setting, "tick1.xml", tick1, settings.width, settings.height, settings,
+                    antiAliased ? "256 samples" : "truth", antiAliased ? manySamples : truth));
+        }
+        for (int count : settings.crowds) {
+            Path file = scenes.resolve("crowd-" + count + ".xml");
+            Files.writeString(file, CrowdScene.xml(count));
+            Scene crowd = load(file);
+            BufferedImage bruteForce = new FastRenderer(settings.errorWidth, settings.errorHeight, new SamplePattern(1),
+                    FastRenderer.SphereSearch.BRUTE_FORCE, Intersection.DEFAULT).render(crowd);
+            for (FastRenderer.SphereSearch search : new FastRenderer.SphereSearch[] {
+                FastRenderer.SphereSearch.BRUTE_FORCE, FastRenderer.SphereSearch.BVH}) {
+                RenderSetting setting = new RenderSetting(
+                        search == FastRenderer.SphereSearch.BVH ? "BVH" : "brute force", 1, cores,
+                        (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), search, Intersection.DEFAULT)
+                                .render(s));
+                // Brute force over 10,000 spheres takes seconds a frame: fewer runs for the crowds.
+                results.add(measure(setting, file.getFileName().toString(), crowd, settings.crowdWidth,
+                        settings.crowdWidth * 3 / 4, settings.withRuns(1, Math.min(settings.runs, 3)), "brute force",
+                        bruteForce));
+            }
+        }
+
+        Map<String, String> png = pngEncoding(tick1, settings);
+        ProcessRuns runs = new ProcessRuns();
+        Whole whole = wholeRuns(runs, settings, tick1File, tick1);
+
+        BenchReport report = new BenchReport(quick, cores, results, png, runs.describe(), whole);
+        report.write(out);
+        CohortTiming.Measured cohort = CohortSection.appendTo(out.resolve("report.md"), quick, log);
+        Goals goals = new Goals(quick, whole, cohort);
+        Files.writeString(out.resolve("report.md"), goals.markdown(), StandardCharsets.UTF_8,
+                StandardOpenOption.APPEND);
+        goals.print(log);
+        log.printf("Wrote %s, %s and %s%n", out.resolve("report.md"), out.resolve("results.csv"),
+                out.resolve("speed-vs-error.png"));
+        return EXIT_OK;
+    }
+
+    /** Frame sizes, repetitions and scenes for the two modes. */
+    private record Settings(int width, int height, int errorWidth, int errorHeight, int warmups, int runs,
+            int[] crowds, int crowdWidth, int processRuns) {
+        static final Settings FULL = new Settings(3840, 2160, 640, 480, 6, 7, new int[] {1_000, 10_000}, 640, 11);
+        // About a minute on two cores: a quarter of the pixels of 640 x 480 (the crowd's too), two of each whole run.
+        static final Settings QUICK = new Settings(320, 240, 160, 120, 1, 3, new int[] {1_000}, 320, 2);
+
+        Settings withRuns(int warmups, int runs) {
+            return new Settings(width, height, errorWidth, errorHeight, warmups, runs, crowds, crowdWidth, processRuns);
+        }
+    }
+
+    /**
+     * The render settings, in the order they run. The default comes first: everything the JIT learns
+     * from the others (other intersection methods, the readable classes) only slows later code,
+     * and a user's render runs the default alone.
+     */
+    private static List<RenderSetting> tick1Settings(int cores) {
+        List<RenderSetting> renderSettings = new ArrayList<>();
+        for (Intersection intersection : new Intersection[] {Intersection.ROBUST, Intersection.HANDOUT}) {
+            for (int threads : new int[] {cores, 1}) {
+                renderSettings.add(new RenderSetting("fast double, " + name(intersection), 1, threads,
+                        (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), intersection).render(s)));
+            }
+        }
+        for (int samples : new int[] {4, 16}) {
+            renderSettings.add(new RenderSetting("fast double, robust, " + samples + " samples", samples, cores,
+                    (s, w, h) -> new FastRenderer(w, h, new SamplePattern(samples)).render(s)));
+        }
+        renderSettings.add(new RenderSetting("float, handout formula", 1, cores,
+                (s, w, h) -> new FloatRenderer(w, h, FloatRenderer.Formula.HANDOUT).render(s)));
+        renderSettings.add(new RenderSetting("float, robust", 1, cores,
+                (s, w, h) -> new FloatRenderer(w, h, FloatRenderer.Formula.ROBUST).render(s)));
+        renderSettings.add(new RenderSetting("readable Renderer, robust", 1, cores,
+                (s, w, h) -> new ReferenceRenderer(w, h).render(s)));
+        renderSettings.add(new RenderSetting("readable Renderer, handout formula", 1, 1,
+                (s, w, h) -> new ReferenceRenderer(w, h, Intersection.HANDOUT).render(s)));
+        return renderSettings;
+    }
+
+    private static String name(Intersection intersection) {
+        return intersection == Intersection.HANDOUT ? "handout formula" : "robust (default)";
+    }
+
+    private Result measure(RenderSetting setting, String sceneName, Scene scene, int width, int height,
+            Settings settings, String errorAgainst, BufferedImage reference) {
+        Timing timing = Timing.of(() -> setting.frame().render(scene, width, height), setting.threads(),
+                settings.warmups, settings.runs);
+        BufferedImage small = setting.frame().render(scene, reference.getWidth(), reference.getHeight());
+        Result result = new Result(setting.name(), sceneName, width, height, setting.samples(), setting.threads(),
+                timing, errorAgainst, ImageDifference.between(reference, small), reference.getWidth(),
+                reference.getHeight());
+        log.printf("  %-45s %-16s %-11s %9.1f ms %8.1f Mrays/s  max error %s%n", setting.name(), sceneName,
+                count(setting.threads(), "thread"), timing.median(), result.megaRaysPerSecond(),
+                count(result.error().maxDifference(), "level"));
+        log.flush();
+        return result;
+    }
+
+    /** "1 thread", "2 threads": a count and its noun, in the number English gives it. */
+    static String count(int n, String noun) {
+        return n + " " + noun + (n == 1 ? "" : "s");
+    }
+
+    /** ImageIO's PNG writer at several deflate levels on the benchmark's largest tick1 frame: time and size. */
+    private Map<String, String> pngEncoding(Scene scene, Settings settings) throws IOException {
+        BufferedImage frame = new FastRenderer(settings.width, settings.height, new SamplePattern(1)).render(scene);
+        Map<String, String> rows = new LinkedHashMap<>();
+        Map<String, Encoder> encoders = new LinkedHashMap<>();
+        encoders.put("ImageIO, deflate level 1", (image, stream) -> PngOutput.write(image, stream, 1));
+        encoders.put("ImageIO, deflate level " + PngOutput.DEFLATE_LEVEL + " (tick1's setting)", PngOutput::write);
+        encoders.put("ImageIO, defaults (deflate level 4)", (image, stream) -> ImageIO.write(image, "png", stream));
+        encoders.put("ImageIO, deflate level 9", (image, stream) -> PngOutput.write(image, stream, 9));
+        for (Map.Entry<String, Encoder> encoder : encoders.entrySet()) {
+            int[] size = new int[1];
+            Timing timing = Timing.of(() -> {
+                ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+                try {
+                    encoder.getValue().encode(frame, bytes);
+                } catch (IOException e) {
+                    throw new IllegalStateException(e);
+                }
+                size[0] = bytes.size();
+                return null;
+            }, Runtime.getRuntime().availableProcessors(), settings.warmups, settings.runs);
+            rows.put(encoder.getKey(), String.format("%.1f ms | %,d bytes", timing.median(), size[0]));
+            log.printf("  PNG %-45s %8.1f ms %,12d bytes%n", encoder.getKey(), timing.median(), size[0]);
+        }
+        return rows;
+    }
+
+    private interface Encoder {
+        void encode(BufferedImage image, ByteArrayOutputStream out) throws IOException;
+    }
+
+    /**
+     * Whole runs in fresh processes. {@code courseCode} and {@code scalarC} are the yardsticks run
+     * in turn with tick1's runs beside them ({@code startup} and {@code endToEnd}), or null with
+     * the reason in {@code courseCodeMissing} and {@code scalarCMissing}; {@code scalarCDiffering}
+     * counts the pixels where the C tracer's image differs from tick1's.
+     */
+    record Whole(Map<String, Double> phases, Timing startup, Timing courseCode, String courseCodeMissing,
+            Timing handoutStyle, Timing crowd10, Timing crowd10k, Timing endToEnd, String endToEndSize,
+            Timing scalarC, String scalarCMissing, long scalarCDiffering) {
+    }
+
+    private Whole wholeRuns(ProcessRuns runs, Settings settings, Path tick1File, Scene tick1) throws IOException {
+        Path image = scenes.resolve("whole-run.png");
+        String scene = tick1File.toString();
+        Path yardsticks = Files.createDirectories(scenes.resolve("yardsticks"));
+        Map<String, Double> phases = runs.phases(settings.processRuns, "-q", "-i", scene, "-o", image.toString());
+        List<String> small = runs.tick1Command("-q", "-i", scene, "-o", image.toString());
+        Timing startup, courseCode = null;
+        String courseCodeMissing = null;
+        try {
+            List<String> course = CourseCode.build(yardsticks, tick1File, yardsticks.resolve("course-code.png"));
+            List<Timing> pair = runs.interleaved(settings.processRuns, List.of(small, course));
+            startup = pair.get(0);
+            courseCode = pair.get(1);
+        } catch (IOException e) {
+            courseCodeMissing = e.getMessage();
+            startup = runs.tick1(settings.processRuns, small.subList(1, small.size()).toArray(String[]::new));
+        }
+        Timing handoutStyle = runs.java(settings.processRuns, HandoutStyleRender.class.getName(), scene,
+                image.toString());
+        Path crowd10 = scenes.resolve("crowd-10.xml"), crowd10k = scenes.resolve("crowd-10000.xml");
+        Files.writeString(crowd10, CrowdScene.xml(10));
+        Files.writeString(crowd10k, CrowdScene.xml(10_000));
+        Timing ten = runs.tick1(settings.processRuns, "-q", "-i", crowd10.toString(), "-o", image.toString());
+        Timing tenThousand = runs.tick1(settings.processRuns, "-q", "-i", crowd10k.toString(), "-o", image.toString());
+        int w = quick ? 1920 : 3840, h = quick ? 1080 : 2160, samples = 4;
+        List<String> big = runs.tick1Command("-q", "-i", scene, "-o", image.toString(), "--width", "" + w,
+                "--height", "" + h, "--samples", "" + samples);
+        Timing endToEnd, scalarC = null;
+        String scalarCMissing = null;
+        long differing = -1;
+        int bigRuns = quick ? 1 : 7;
+        try {
+            ScalarC c = ScalarC.build(yardsticks, tick1, w, h, samples);
+            List<Timing> pair = runs.interleaved(bigRuns, List.of(big, c.command()));
+            endToEnd = pair.get(0);
+            scalarC = pair.get(1);
+            differing = c.pixelsDifferingFrom(ImageIO.read(image.toFile()));
+        } catch (IOException e) {
+            scalarCMissing = e.getMessage();
+            endToEnd = runs.tick1(bigRuns, big.subList(1, big.size()).toArray(String[]::new));
+        }
+        log.printf("  whole runs: start-up %.0f ms (course code %s, handout-style java run %.0f ms); 10 spheres %.0f "
+                + "ms, 10,000 spheres %.0f ms; %d x %d x %d samples %.0f ms (scalar C %s)%n", startup.median(),
+                courseCode == null ? "not run" : String.format(Locale.ROOT, "%.0f ms", courseCode.median()),
+                handoutStyle.median(), ten.median(), tenThousand.median(), w, h, samples, endToEnd.median(),
+                scalarC == null ? "not run" : String.format(Locale.ROOT, "%.0f ms", scalarC.median()));
+        Files.deleteIfExists(image);
+        return new Whole(phases, startup, courseCode, courseCodeMissing, handoutStyle, ten, tenThousand, endToEnd,
+                w + " x " + h, scalarC, scalarCMissing, differing);
+    }
+
+    private static Scene load(Path file) {
+        return new SceneLoader(file, false).getScene();
+    }
+}

@@ -1,0 +1,86 @@
+package gfx.tick1.command.bench;
+
+import gfx.tick1.command.shared.grader.cohort.CohortTiming;
+import java.io.PrintWriter;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * tick1's three speed goals, each as the ratio measured in this run beside the goal: a one-off
+ * 640 x 480 render against the course's own code, a one-off 3840 x 2160 render with 4 samples
+ * against a single-core scalar C tracer of the same rays, and the wall time a submission of a
+ * graded cohort. A quick run measures smaller frames and a smaller cohort: its ratios show that
+ * they are measured, not whether the goals are met.
+ */
+final class Goals {
+
+    /** One goal: what is measured, the value this run gives (NaN where not measured), and at most what. */
+    record Goal(String measure, double value, double atMost, String unit, String missing) {
+
+        boolean measured() {
+            return !Double.isNaN(value);
+        }
+
+        String valueText() {
+            return measured() ? String.format(Locale.ROOT, "%.2f%s", value, unit) : "not measured";
+        }
+
+        String goalText() {
+            return String.format(Locale.ROOT, "at most %.1f%s", atMost, unit);
+        }
+
+        String verdict(boolean quick) {
+            if (!measured()) {
+                return missing;
+            }
+            if (quick) {
+                return "a quick run: not the goal's measure";
+            }
+            return value <= atMost ? "yes" : "no";
+        }
+    }
+
+    private final boolean quick;
+    private final List<Goal> goals = new ArrayList<>();
+
+    Goals(boolean quick, BenchCommand.Whole whole, CohortTiming.Measured cohort) {
+        this.quick = quick;
+        goals.add(new Goal("tick1.xml at 640 x 480, whole run: tick1's time / the course code's",
+                whole.courseCode() == null ? Double.NaN : whole.startup().median() / whole.courseCode().median(),
+                0.8, "", whole.courseCodeMissing()));
+        goals.add(new Goal("tick1.xml at " + whole.endToEndSize() + " with 4 samples, whole run: tick1's time / "
+                + "single-core scalar C's", whole.scalarC() == null ? Double.NaN
+                        : whole.endToEnd().median() / whole.scalarC().median(), 0.8, "", whole.scalarCMissing()));
+        goals.add(new Goal("grading a cohort: wall time a submission", cohort == null ? Double.NaN
+                : cohort.wallPerSubmission(), 0.5, " s", "see the cohort section"));
+    }
+
+    /** The report's section. */
+    String markdown() {
+        StringBuilder md = new StringBuilder("\n## Speed goals\n\n");
+        md.append("Each ratio comes from runs taken in turn in this run (medians), so that the machine's load "
+                + "falls on both sides alike.");
+        if (quick) {
+            md.append(" A quick run measures smaller frames and a cohort of " + CohortSection.QUICK_COHORT
+                    + ": its numbers show that each "
+                    + "is measured, not whether a goal is met.");
+        }
+        md.append("\n\n| measure | this run | goal | met |\n| --- | ---: | --- | --- |\n");
+        for (Goal goal : goals) {
+            md.append("| ").append(goal.measure()).append(" | ").append(goal.valueText()).append(" | ")
+                    .append(goal.goalText()).append(" | ").append(goal.verdict(quick)).append(" |\n");
+        }
+        return md.toString();
+    }
+
+    /** The same, as lines on the console. */
+    void print(PrintWriter log) {
+        log.println("speed goals (this run, then the goal):");
+        for (Goal goal : goals) {
+            log.printf("  %-95s %12s  %s (%s)%n", goal.measure(), goal.valueText(), goal.goalText(),
+                    goal.verdict(quick));
+        }
+        log.flush();
+    }
+}

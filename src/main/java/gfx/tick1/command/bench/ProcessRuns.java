@@ -1,0 +1,144 @@
+package gfx.tick1.command.bench;
+
+import gfx.tick1.command.shared.cli.MainClass;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * Whole runs of the program in fresh processes, JVM start included: what a person typing the
+ * command waits for. It prefers the installed launcher ({@code bin/tick1} beside the jar's
+ * {@code lib/}) and falls back to {@code java -cp} with this process's class path.
+ */
+final class ProcessRuns {
+
+    private static final Pattern PHASE = Pattern.compile("\\s*([a-z ]+?) ([0-9.]+) ms");
+
+    private final String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+    private final String classPath = System.getProperty("java.class.path");
+    private final Path launcher = findLauncher();
+
+    /** How the runs start tick1, for the report. */
+    String describe() {
+        return launcher != null ? "the installed launcher " + launcher : "java -cp (no installed launcher found)";
+    }
+
+    /** The wall-clock times of {@code runs} runs of tick1 with these arguments. */
+    Timing tick1(int runs, String... args) throws IOException {
+        return time(tick1Command(args), runs);
+    }
+
+    /** The command that runs tick1 with these arguments: the launcher, or java -cp. */
+    List<String> tick1Command(String... args) {
+        List<String> command = new ArrayList<>();
+        if (launcher != null) {
+            command.add(launcher.toString());
+        } else {
+            command.addAll(List.of(java, "-cp", classPath, MainClass.NAME));
+        }
+        command.addAll(List.of(args));
+        return command;
+    }
+
+    /** The wall-clock times of a plain {@code java} run of a main class on our class path. */
+    Timing java(int runs, String mainClass, String... args) throws IOException {
+        List<String> command = new ArrayList<>(List.of(java, "-cp", classPath, mainClass));
+        command.addAll(List.of(args));
+        return time(command, runs);
+    }
+
+    /**
+     * The median of each phase that {@code tick1 --timings} reports over several runs, in the
+     * order it reports them.
+     */
+    Map<String, Double> phases(int runs, String... args) throws IOException {
+        Map<String, double[]> samples = new LinkedHashMap<>();
+        for (int run = 0; run < runs; run++) {
+            List<String> withTimings = new ArrayList<>(List.of("--timings"));
+            withTimings.addAll(List.of(args));
+            String err = run(tick1Command(withTimings.toArray(String[]::new)));
+            String line = err.lines().filter(l -> l.startsWith("timings:")).findFirst()
+                    .orElseThrow(() -> new IOException("tick1 --timings printed no timings: " + err));
+            Matcher m = PHASE.matcher(line.substring("timings:".length()));
+            while (m.find()) {
+                samples.computeIfAbsent(m.group(1), k -> new double[runs])[run] = Double.parseDouble(m.group(2));
+            }
+        }
+        Map<String, Double> medians = new LinkedHashMap<>();
+        samples.forEach((phase, values) -> medians.put(phase, Timing.of(values).median()));
+        return medians;
+    }
+
+    /**
+     * The wall-clock times of {@code runs} runs of each command, taken in turn (the first command,
+     * the second, ..., then the first again), so that a change in the machine's load falls on all
+     * of them alike: what their ratios need.
+     */
+    List<Timing> interleaved(int runs, List<List<String>> commands) throws IOException {
+        for (List<String> command : commands) {
+            run(command); // one untimed run each: the file cache, not the program, is what it warms
+        }
+        double[][] millis = new double[commands.size()][runs];
+        for (int i = 0; i < runs; i++) {
+            for (int c = 0; c < commands.size(); c++) {
+                long start = System.nanoTime();
+                run(commands.get(c));
+                millis[c][i] = (System.nanoTime() - start) / 1e6;
+            }
+        }
+        List<Timing> timings = new ArrayList<>();
+        for (double[] samples : millis) {
+            timings.add(Timing.of(samples));
+        }
+        return timings;
+    }
+
+    private Timing time(List<String> command, int runs) throws IOException {
+        run(command); // one untimed run: the file cache, not the program, is what it warms
+        double[] millis = new double[runs];
+        for (int i = 0; i < runs; i++) {
+            long start = System.nanoTime();
+            run(command);
+            millis[i] = (System.nanoTime() - start) / 1e6;
+        }
+        return Timing.of(millis);
+    }
+
+    /** Runs a command to its end and returns what it printed on standard error. */
+    private static String run(List<String> command) throws IOException {
+        Path err = Files.createTempFile("tick1-bench", ".err");
+        try {
+            Process process = new ProcessBuilder(command).redirectError(err.toFile())
+                    .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            int status = process.waitFor();
+            String stderr = Files.readString(err, StandardCharsets.UTF_8);
+            if (status != 0) {
+                throw new IOException(String.join(" ", command) + " exited with " + status + ": " + stderr.strip());
+            }
+            return stderr;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted", e);
+        } finally {
+            Files.deleteIfExists(err);
+        }
+    }
+
+    private static Path findLauncher() {
+        try {
+            // This class sits in the same jar as the entry point.
+            Path jar = Path.of(ProcessRuns.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+            Path launcher = jar.getParent().resolveSibling("bin").resolve("tick1");
+            return jar.toString().endsWith(".jar") && Files.isExecutable(launcher) ? launcher : null;
+        } catch (Exception e) {
+            return null;
+        }
+    }
+}

@@ -1,0 +1,37 @@
+package gfx.tick1.command.diff;
+
+import gfx.tick1.command.shared.grader.grading.CodeProbe;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * What {@code tick1 diff} says of the student's methods' behaviour: the two files are compiled
+ * with the starter kit and their {@code intersectionWith} and {@code illuminate} are called in
+ * the sandbox on the inputs {@code grade} uses (a file not given is the starter kit's, and its
+ * method is not reported). For each given file's method, one line first: "behaves as ours on N
+ * inputs", or what differs; after the diff, the notes on what the course's scenes cannot show and
+ * the hints of what to reread. When the methods cannot run (no sandbox, the files do not
+ * compile), one line says that behaviour could not be checked.
+ */
+final class Hints {
+
+    /** The lines before the diff, the lines after it, and whether the methods behave as ours. */
+    record Said(List<String> first, List<String> after, boolean behavesAsOurs) {
+    }
+
+    private Hints() {
+    }
+
+    /** What to say of {@code theirs} (class name to source), with {@code starter} for the classes not given. */
+    static Said of(Map<String, String> theirs, Map<String, String> starter) throws InterruptedException {
+        String sphere = theirs.getOrDefault("Sphere", starter.get("Sphere"));
+        String renderer = theirs.getOrDefault("Renderer", starter.get("Renderer"));
+        CodeProbe.Hints hints = CodeProbe.probe(sphere, renderer, List.copyOf(theirs.keySet()));
+        List<String> first = new ArrayList<>(hints.behaviour());
+        if (hints.whyNone() != null) {
+            first.add(hints.whyNone());
+        }
+        return new Said(first, hints.hints(), hints.behavesAsOurs());
+    }
+}

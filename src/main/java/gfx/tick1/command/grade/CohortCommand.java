@@ -1,0 +1,252 @@
+package gfx.tick1.command.grade;
+
+import gfx.tick1.command.shared.cli.CommandFailure;
+import gfx.tick1.command.shared.cli.ExitStatuses;
+import gfx.tick1.command.shared.grader.cohort.CohortGrade;
+import gfx.tick1.command.shared.grader.cohort.ResultStore;
+import gfx.tick1.command.shared.grader.grading.Grading;
+import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
+import gfx.tick1.command.shared.grader.intake.Submissions;
+import gfx.tick1.command.shared.grader.lookalike.Lookalikes;
+import gfx.tick1.command.shared.grader.model.CohortInputException;
+import gfx.tick1.command.shared.grader.model.StudentResult;
+import gfx.tick1.command.shared.grader.model.Submission;
+import gfx.tick1.command.shared.grader.report.CohortOutputs;
+import gfx.tick1.command.shared.grader.report.CohortReport;
+import gfx.tick1.command.shared.grader.report.ReportFiles;
+import gfx.tick1.command.shared.grader.report.Worksheet;
+import gfx.tick1.command.shared.grader.sandbox.ChildOutput;
+import gfx.tick1.command.shared.grader.sandbox.Sandbox;
+import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import gfx.tick1.engine.io.IoErrors;
+import gfx.tick1.engine.io.OnExit;
+import gfx.tick1.engine.scene.SceneException;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.ZonedDateTime;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.atomic.AtomicReference;
+
+/**
+ * {@code tick1 grade --submissions}: reads the cohort's download, grades every submission
+ * ({@link CohortGrade}), and writes grades.csv, the feedback folders and index.html from every
+ * result, those of earlier runs included.
+ */
+final class CohortCommand {
+
+    /** The folder inside the report folder where each result is kept as soon as it is known. */
+    static final String STATE_FOLDER = "state";
+
+    private final GradeCommand options;
+    private final Sandbox sandbox;
+    private final PrintWriter out;
+    private final PrintWriter err;
+    /** The worksheet given, read and checked before anything is graded; null without --worksheet. */
+    private Worksheet worksheet;
+    /** The grade of a pass: --max-grade, else the worksheet's Maximum Grade, else 1. */
+    private double maxGrade;
+
+    CohortCommand(GradeCommand options, Sandbox sandbox, PrintWriter out, PrintWriter err) {
+        this.options = options;
+        this.sandbox = sandbox;
+        this.out = out;
+        this.err = err;
+    }
+
+    int call() throws IOException, InterruptedException {
+        List<Submission> submissions;
+        try {
+            // The worksheet first: a bad one must stop the grade before anything is graded or written.
+            readWorksheet();
+            submissions = withoutOwnFiles(Submissions.read(options.submissions()));
+        } catch (IOException e) {
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, IoErrors.describe(e));
+        }
+        if (options.scenesFolder() == null) {
+            err.println("tick1 grade: the built-in hidden scene is public (it is in tick1): anyone can pass it by "
+                    + "copying its images; give scenes of your own with --scenes");
+        }
+        for (Submission submission : submissions) {
+            if (!Submissions.namedByMoodle(submission)) {
+                err.println("tick1 grade: " + printable(submission.folder()) + ": not a name Moodle gives a "
+                        + "student's folder or file (Full Name_<participant id>_assignsubmission_file): graded in "
+                        + "the report, but given no row in grades.csv");
+            }
+        }
+        Submissions.sharedIds(submissions).forEach((id, folders) -> err.println("tick1 grade: participant "
+                + printable(id) + " has " + folders.size() + " folders in the download (" + printable(String.join(
+                        ", ", folders.subList(0, Math.min(3, folders.size())))) + (folders.size() > 3 ? ", ..." : "")
+                + "): each fails ungraded until one is left"));
+        Path work = Files.createTempDirectory("tick1-grade");
+        AtomicReference<CohortGrade> running = new AtomicReference<>();
+        // At the end, or on Ctrl-C or SIGTERM: stop the students' processes and delete the work
+        // folder. Finished results are in the store already; the one being stored is renamed into
+        // place whole or not at all.
+        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> stop(running, work));
+        try {
+            return gradeAndReport(submissions, work, running);
+        } finally {
+            cleanUp.now();
+        }
+    }
+
+    /**
+     * Reads and checks --worksheet, and settles the grade of a pass: a --max-grade that differs from
+     * the worksheet's Maximum Grade is refused, since Moodle would take its grades on the wrong scale.
+     */
+    private void readWorksheet() throws CohortInputException {
+        Double given = options.maxGrade();
+        Double sheet = null;
+        if (options.worksheet() != null) {
+            worksheet = Worksheet.read(options.worksheet());
+            sheet = worksheet.maximumGrade();
+        }
+        if (given != null && sheet != null && Math.abs(given - sheet) > 1e-9) {
+            throw new CohortInputException("--max-grade " + Worksheet.grade(given) + " differs from the Maximum Grade "
+                    + Worksheet.grade(sheet) + " of " + options.worksheet() + ": leave --max-grade out to grade out "
+                    + "of " + Worksheet.grade(sheet) + ", or change the assignment's maximum in Moodle first");
+        }
+        maxGrade = given != null ? given : sheet != null ? sheet : 1;
+    }
+
+    /** Stops the grade, if it runs, and deletes the work folder; for the shutdown hook and the end alike. */
+    private void stop(AtomicReference<CohortGrade> running, Path work) {
+        CohortGrade cohort = running.getAndSet(null);
+        if (cohort != null) {
+            cohort.stop();
+        }
+        GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
+    }
+
+    /** Prepares the grading and the store, grades every submission, and writes the report. */
+    private int gradeAndReport(List<Submission> submissions, Path work, AtomicReference<CohortGrade> running)
+            throws IOException, InterruptedException {
+        Grading grading;
+        ResultStore store;
+        try {
+            sandbox.checkReachable(work);
+            grading = Grading.prepare(Files.createDirectory(work.resolve("grading")), options.scenesFolder(),
+                    options.limits());
+        } catch (SceneException e) {
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());
+        } catch (IOException e) {
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, IoErrors.describe(e));
+        }
+        try {
+            store = new ResultStore(Files.createDirectories(options.reportFolder()).resolve(STATE_FOLDER));
+        } catch (IOException e) {
+            throw new CommandFailure(GradeCommand.EXIT_CANNOT_WRITE, options.reportFolder()
+                    + ": cannot write the report: " + IoErrors.describe(e));
+        }
+        CohortGrade cohort = new CohortGrade(grading, sandbox, options.jobs(), store, err, System.console() != null);
+        running.set(cohort);
+        CohortGrade.Done done = cohort.run(submissions, work);
+        if (cohort.stopped()) {
+            // Stopped part way: the report of the last whole run stays as it was.
+            throw new CommandFailure(GradeCommand.EXIT_STOPPED, "stopped; the results finished so far are kept in "
+                    + options.reportFolder().resolve(STATE_FOLDER) + ": run the same command again to grade "
+                    + "the rest and write the report");
+        }
+        return report(done);
+    }
+
+    /** Writes grades.csv, the feedback folders and index.html from every result, and says what was done. */
+    private int report(CohortGrade.Done done) throws InterruptedException {
+        Path report = options.reportFolder();
+        List<StudentResult> results = CohortOutputs.forReport(done.results());
+        // A student whose feedback cannot be written is theirs alone: once, with the first reason.
+        Map<String, String> unwritten = new LinkedHashMap<>();
+        try {
+            CohortOutputs.placeImages(results, done.images(), report)
+                    .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
+            // The gradebook first: the cohort's page links to it when it is there.
+            writeGrades(results, done.results().stream().map(StudentResult::submission)
+                    .map(Submissions::namedByMoodle).toList(), report);
+            CohortReport.write(report, results,
+                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())),
+                    options.lookalikes() ? Lookalikes.find(results) : null)
+                    .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
+        } catch (CohortInputException e) {
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());
+        } catch (IOException e) {
+            throw new CommandFailure(GradeCommand.EXIT_CANNOT_WRITE, report + ": cannot write the report: "
+                    + IoErrors.describe(e));
+        }
+        long passed = results.stream().filter(StudentResult::passed).count();
+        // A submission with a problem (a missing file, ...) is never run, so neither now nor earlier.
+        long problems = results.stream().filter(result -> result.submission().problem() != null).count();
+        out.println("Graded " + SubmissionGrader.count(results.size(), "submission") + " ("
+                + (results.size() - done.stored() - problems) + " now, " + done.stored() + " from earlier runs"
+                + (problems > 0 ? ", " + problems + " not run: a problem with their files" : "") + "): "
+                + passed + " passed, " + (results.size() - passed) + " failed.");
+        out.println("Grades: " + report.resolve(ReportFiles.GRADES) + "; feedback: "
+                + report.resolve(ReportFiles.FEEDBACK_ZIP) + "; report: " + report.resolve("index.html"));
+        for (CohortGrade.Ungraded ungraded : done.ungraded()) {
+            err.println("tick1 grade: " + printable(ungraded.folder()) + ": not graded: " + ungraded.why()
+                    + (ungraded.grader() ? "" : " " + report));
+        }
+        unwritten.forEach((folder, why) -> err.println("tick1 grade: " + printable(folder) + ": its feedback "
+                + "cannot be written in " + report + " (" + why + "): its grade is in grades.csv, but its feedback "
+                + "is not in feedback.zip"));
+        return done.ungraded().stream().anyMatch(CohortGrade.Ungraded::grader) ? ExitStatuses.EXIT_INTERNAL
+                : done.ungraded().isEmpty() && unwritten.isEmpty() ? GradeCommand.EXIT_PASS
+                : GradeCommand.EXIT_CANNOT_WRITE;
+    }
+
+    /**
+     * The submissions without the report folder and the worksheet, when they are in the download's
+     * folder (a report written beside the students' folders is not a student).
+     */
+    private List<Submission> withoutOwnFiles(List<Submission> submissions) {
+        Path download = options.submissions().toAbsolutePath().normalize();
+        List<String> own = new ArrayList<>();
+        for (Path path : new Path[] {options.reportFolder(), options.worksheet()}) {
+            if (path != null && download.equals(path.toAbsolutePath().normalize().getParent())) {
+                own.add(path.getFileName().toString());
+            }
+        }
+        return submissions.stream().filter(submission -> !own.contains(submission.folder())).toList();
+    }
+
+    /** A name from the download as one line of plain text (a newline in a folder name included). */
+    private static String printable(String text) {
+        return ChildOutput.printable(text).replace('\n', '?');
+    }
+
+    /**
+     * grades.csv: the worksheet given with --worksheet, its Grade and Feedback comments cells filled in
+     * for the students graded (the file given is only read), or else a fresh worksheet. The students
+     * of the one without submissions, and the submissions without a row, go to standard error. Only a submission
+     * Moodle named ({@code moodleNamed}, in the results' order) has a participant's row: any other is said so on
+     * standard error when the download is read.
+     */
+    private void writeGrades(List<StudentResult> results, List<Boolean> moodleNamed, Path report)
+            throws IOException {
+        List<Worksheet.Mark> marks = new ArrayList<>();
+        for (int i = 0; i < results.size(); i++) {
+            if (moodleNamed.get(i)) {
+                marks.add(Worksheet.Mark.of(results.get(i),
+                        CohortOutputs.grade(results.get(i), maxGrade, options.perScene())));
+            }
+        }
+        if (worksheet == null) {
+            byte[] fresh = Worksheet.fresh(marks, maxGrade, ZonedDateTime.now());
+            ReportFiles.write(report.resolve(ReportFiles.GRADES), out -> out.write(fresh));
+            return;
+        }
+        Worksheet.Filled filled = worksheet.fill(marks);
+        ReportFiles.write(report.resolve(ReportFiles.GRADES), out -> out.write(filled.bytes()));
+        for (String student : filled.withoutSubmission()) {
+            err.println("tick1 grade: " + options.worksheet() + ": " + printable(student) + " has no submission");
+        }
+        for (String student : filled.withoutRow()) {
+            err.println("tick1 grade: " + options.worksheet() + ": no row for " + printable(student)
+                    + ": graded in the report, but not in grades.csv");
+        }
+    }
+}

@@ -1,0 +1,386 @@
+package gfx.tick1.command.grade;
+
+import gfx.tick1.command.shared.cli.CommandFailure;
+import gfx.tick1.command.shared.cli.ExitStatus;
+import gfx.tick1.command.shared.grader.grading.Grading;
+import gfx.tick1.command.shared.grader.grading.ReferenceChoice;
+import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
+import gfx.tick1.command.shared.grader.model.Submission;
+import gfx.tick1.command.shared.grader.sandbox.Sandbox;
+import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
+import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import gfx.tick1.command.shared.grader.vpl.GradeRange;
+import gfx.tick1.command.shared.grader.vpl.VplReport;
+import gfx.tick1.engine.io.IoErrors;
+import gfx.tick1.engine.io.OnExit;
+import gfx.tick1.engine.scene.SceneException;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.Writer;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.ArgGroup;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code tick1 grade}: the course's tester, with reasons. Compiles a student's two files against
+ * the starter code, renders the grading scenes with them in a separate JVM, and compares each
+ * image with the reference render.
+ */
+@Command(name = "grade",
+        description = {
+            "Grades a student's Sphere.java and Renderer.java as the course's tester does, or a whole cohort "
+                    + "from Moodle's download.",
+            "It compiles the two files with the starter code (see tick1 starter), renders tick1.xml and a hidden "
+                    + "scene (or the scenes given) with them, and compares each image with the reference render, "
+                    + "pixel for pixel. Compiling and rendering run in a separate Java process inside a bubblewrap "
+                    + "sandbox, with time, memory and process limits. A failing scene is explained: the difference "
+                    + "figures, the closest entry of the diagnose catalogue, and a heat map; of a hidden scene only "
+                    + "its verdict is said, in fixed words. "
+                    + "The built-in hidden scene is public (it is in tick1, which students have): anyone can pass it "
+                    + "by copying its images; give scenes of your own with --scenes for a grade that counts.",
+            "With --submissions it grades a whole cohort from Moodle's download: every submission in a sandbox of "
+                    + "its own, several at once, into grades.csv (Moodle's grading worksheet), a feedback page per "
+                    + "student and index.html. Each result is kept as soon as it is known: a grade that is stopped "
+                    + "loses nothing, and running it again grades only what is new or changed.",
+            "Trust: inside the sandbox the student's code sees no file of yours but the scenes, has no network and "
+                    + "cannot outlive the grade. It needs Linux and the bubblewrap package; --no-sandbox runs the "
+                    + "code with your permissions instead."})
+public final class GradeCommand implements Callable<Integer> {
+
+    @ExitStatus("the code passed: every scene matches pixel for pixel; with --submissions: every submission was "
+            + "graded and the report written, whatever the students' results")
+    public static final int EXIT_PASS = 0;
+    @ExitStatus("the code failed: it does not compile, crashed, ran out of time or memory, or an image is wrong")
+    public static final int EXIT_FAIL = 1;
+    @ExitStatus("the command line is wrong, a file given cannot be read, or the sandbox cannot be made")
+    public static final int EXIT_USAGE = 2;
+    @ExitStatus("a scene failed and its images could not be written to the report folder; with --submissions: the "
+            + "report could not be written, or a submission's images could not be stored")
+    public static final int EXIT_CANNOT_WRITE = 3;
+    @ExitStatus("with --submissions: stopped by Ctrl-C; the results finished so far are kept, and the same command "
+            + "grades the rest")
+    public static final int EXIT_STOPPED = 130;
+
+    @Spec
+    private CommandSpec spec;
+
+    /** Whom to grade: one student's two files, or a cohort's download; picocli allows one or the other. */
+    @ArgGroup(exclusive = true, multiplicity = "0..1")
+    private Target target;
+
+    /** One student, or a cohort: the two are exclusive, and the cohort's options go only with the cohort. */
+    static final class Target {
+        @ArgGroup(exclusive = false, multiplicity = "1")
+        private OneStudent student;
+
+        @ArgGroup(exclusive = false, multiplicity = "1")
+        private Cohort cohort;
+    }
+
+    /** {@code --sphere} and {@code --renderer}, both needed. */
+    static final class OneStudent {
+        @Option(names = "--sphere", paramLabel = "Sphere.java", required = true,
+                description = "The student's Sphere.java.")
+        private Path sphere;
+
+        @Option(names = "--renderer", paramLabel = "Renderer.java", required = true,
+                description = "The student's Renderer.java.")
+        private Path renderer;
+    }
+
+    /** {@code --submissions} and the options that go only with it. */
+    static final class Cohort {
+        @Option(names = "--submissions", paramLabel = "PATH", required = true,
+                description = "Grade a whole cohort instead: PATH is Moodle's \"Download all submissions\" zip, or "
+                        + "the folder it unpacks to, with one folder per student. Writes grades.csv (Moodle's "
+                        + "grading worksheet), index.html, lookalikes.csv and a feedback folder per student into "
+                        + "the --report folder.")
+        private Path submissions;
+
+        @Option(names = "--worksheet", paramLabel = "FILE.csv",
+                description = "With --submissions: the grading worksheet downloaded from the assignment; grades.csv "
+                        + "is that worksheet with the grades and feedback filled in. It is read and checked before "
+                        + "anything is graded; the file itself is never changed.")
+        private Path worksheet;
+
+        @Option(names = "--jobs", paramLabel = "N",
+                description = "With --submissions: how many submissions to grade at once, each in a sandbox of its "
+                        + "own (default: the number of cores).")
+        private int jobs = Runtime.getRuntime().availableProcessors();
+
+        @Option(names = "--max-grade", paramLabel = "G",
+                description = "With --submissions: the grade for a pass; a fail is 0 (default: the worksheet's "
+                        + "Maximum Grade with --worksheet, else 1). A submission whose files could not be used "
+                        + "gets a blank grade, for you to look at first.")
+        private Double maxGrade;
+
+        @Option(names = "--per-scene",
+                description = "With --submissions: the grade is the share of scenes passed times --max-grade.")
+        private boolean perScene;
+
+        @Option(names = "--no-lookalikes", negatable = false,
+                description = "With --submissions: skip the look-alikes (lookalikes.csv and the report's \"Look "
+                        + "alike\" section: pairs of submissions whose methods share most of their tokens, or the "
+                        + "same rare wrong answers, and submissions like tick1's reference).")
+        private boolean noLookalikes;
+    }
+
+    @Option(names = "--scenes", paramLabel = "DIR",
+            description = "Grade on tick1.xml and every *.xml in DIR instead of tick1.xml and the built-in hidden "
+                    + "scene. The scenes of DIR are hidden: the report never quotes them and writes no images of them.")
+    private Path scenesFolder;
+
+    @Option(names = "--report", paramLabel = "DIR", defaultValue = "grade-report",
+            description = "Where to write the images of failing scenes: the student's, the expected one and a heat "
+                    + "map; with --submissions, the whole report and, in its state folder, every result so far "
+                    + "(default: ${DEFAULT-VALUE}).")
+    private Path reportFolder;
+
+    @Option(names = "--time-limit", paramLabel = "SECONDS", defaultValue = "60",
+            description = "How long the student's code may take for all scenes together, Java's start included; "
+                    + "compiling may take as long again (default: ${DEFAULT-VALUE}).")
+    private double timeLimitSeconds;
+
+    @Option(names = "--memory", paramLabel = "MiB", defaultValue = "512",
+            description = "The student's code's heap limit (default: ${DEFAULT-VALUE}).")
+    private int memoryMegabytes;
+
+    @Option(names = "--width", paramLabel = "PIXELS", defaultValue = "640",
+            description = "Image width (default: ${DEFAULT-VALUE}, as the course grades; smaller is quicker).")
+    private int width;
+
+    @Option(names = "--height", paramLabel = "PIXELS", defaultValue = "480",
+            description = "Image height (default: ${DEFAULT-VALUE}).")
+    private int height;
+
+    @Option(names = "--reference", paramLabel = "WHICH", defaultValue = "either",
+            description = "Which reference image a scene must equal: handout (the handout's intersection formula in "
+                    + "plain doubles), robust (tick1's own renderer, accurate where that formula is not) or either "
+                    + "(default: ${DEFAULT-VALUE}). The two differ only on hard scenes, such as giant spheres.")
+    private ReferenceChoice referenceChoice;
+
+    /** What one student's grade prints: tick1's own report, or VPL's evaluation format. */
+    enum Format { text, vpl }
+
+    @Option(names = "--format", paramLabel = "FORMAT", defaultValue = "text",
+            description = "With --sphere and --renderer: text (default), or vpl: the report in the format of Moodle's "
+                    + "Virtual Programming Lab's evaluation, with the proposed grade as its last line, for the "
+                    + "activity's vpl_execution (see tick1 vpl). Where the sandbox cannot be made it proposes no "
+                    + "grade. It writes no images.")
+    private Format format;
+
+    @Option(names = "--grade-range", paramLabel = "MIN:MAX", defaultValue = "0:1",
+            description = "With --format vpl: the grade of a fail and of a pass, the activity's VPL_GRADEMIN and "
+                    + "VPL_GRADEMAX (default: ${DEFAULT-VALUE}).")
+    private String gradeRange;
+
+    @Option(names = "--no-sandbox",
+            description = "Run the student's code without the sandbox, with your permissions, your files and the "
+                    + "network: only for code you trust, or where bubblewrap cannot run.")
+    private boolean noSandbox;
+
+    @Override
+    public Integer call() throws IOException, InterruptedException {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        String usage = checkOptions();
+        if (usage != null) {
+            throw new ParameterException(spec.commandLine(), usage);
+        }
+        if (format == Format.vpl) {
+            return new VplGrade(this, out, err).call();
+        }
+        return call(out, err);
+    }
+
+    /** The grade, with the checks of the options done: in tick1's own format, or with --format vpl's sandbox. */
+    Integer call(PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
+        Sandbox sandbox;
+        if (noSandbox) {
+            err.println("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions; it can "
+                    + "read, change and send anything you can");
+            sandbox = Sandbox.unconfined();
+        } else {
+            try {
+                sandbox = Sandbox.confined();
+            } catch (Sandbox.Unavailable e) {
+                throw new CommandFailure(EXIT_USAGE, e.getMessage() + ": install the " + Sandbox.PACKAGE
+                        + " package (apt-get install " + Sandbox.PACKAGE + ")" + (vpl() ? "" : ", or give "
+                        + "--no-sandbox to grade without a sandbox"));
+            }
+            for (String warning : new String[] {sandbox.totalsNotEnforced(), sandbox.reservationsNotRefused()}) {
+                if (warning != null) {
+                    err.println("tick1 grade: warning: " + warning);
+                }
+            }
+        }
+        if (scenesFolder != null) {
+            sandbox = sandbox.hiding(organisersScenes());
+        }
+        if (target.cohort != null) {
+            return new CohortCommand(this, sandbox, out, err).call();
+        }
+        Path work = Files.createTempDirectory("tick1-grade");
+        StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), memoryMegabytes);
+        // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
+        // scenes and all.
+        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
+            process.stop();
+            reportUndeleted(WorkFolder.delete(work), err);
+        });
+        try {
+            return grade(work, sandbox, process, out, err);
+        } finally {
+            cleanUp.now();
+        }
+    }
+
+    static void reportUndeleted(String problem, PrintWriter err) {
+        if (problem != null) {
+            err.println("tick1 grade: " + problem);
+            err.flush();
+        }
+    }
+
+    private String checkOptions() {
+        if (target == null) {
+            return "give --sphere and --renderer (one student), or --submissions (a cohort)";
+        }
+        int jobs = jobs();
+        double maxGrade = maxGrade() == null ? 1 : maxGrade();
+        if (jobs < 1 || jobs > Sandbox.MOST_JOBS) {
+            return "--jobs " + jobs + ": must be from 1 to " + Sandbox.MOST_JOBS;
+        }
+        if (!(maxGrade > 0 && maxGrade <= 1_000_000)) {
+            return "--max-grade " + maxGrade + ": must be more than 0 and at most 1000000";
+        }
+        if (!(timeLimitSeconds > 0 && timeLimitSeconds <= 3600)) {
+            return "--time-limit " + timeLimitSeconds + ": must be more than 0 and at most 3600 seconds";
+        }
+        if (memoryMegabytes < 32 || memoryMegabytes > 65536) {
+            return "--memory " + memoryMegabytes + ": must be from 32 to 65536 MiB";
+        }
+        if (width < 1 || width > 4096 || height < 1 || height > 4096) {
+            return "--width and --height must be from 1 to 4096, not " + width + " x " + height;
+        }
+        return format == Format.vpl ? VplGrade.checkOptions(this) : null;
+    }
+
+    private int grade(Path work, Sandbox sandbox, StudentProcess process, PrintWriter out, PrintWriter err)
+            throws IOException, InterruptedException {
+        Grading grading;
+        Submission submission;
+        try {
+            sandbox.checkReachable(work);
+            grading = Grading.prepare(work, scenesFolder, limits());
+            grading.copyScenes(work);
+            grading.renderReferencesAhead();
+            submission = vpl() ? StudentFiles.asSubmitted(target.student.sphere, target.student.renderer, err)
+                    : StudentFiles.of(target.student.sphere, target.student.renderer, err);
+            if (!vpl()) {
+                WorkFolder.removeEarlierReport(reportFolder);
+            }
+        } catch (SceneException e) {
+            throw new CommandFailure(EXIT_USAGE, e.getMessage());
+        } catch (IOException e) {
+            throw new CommandFailure(EXIT_USAGE, IoErrors.describe(e));
+        }
+        StudentProcess.writeHarness(Files.createDirectory(work.resolve("harness")));
+        SubmissionGrader.Graded graded = new SubmissionGrader(grading, sandbox, process, work).grade(submission,
+                work, vpl() ? work.resolve("images") : reportFolder, vpl() ? new PrintWriter(Writer.nullWriter()) : out,
+                err);
+        if (vpl()) {
+            out.print(VplReport.of(graded.result(), graded.compileErrors(), gradeRange()));
+            out.flush();
+        }
+        if (graded.result().passed()) {
+            return EXIT_PASS;
+        }
+        return graded.imagesUnwritable() ? EXIT_CANNOT_WRITE : EXIT_FAIL;
+    }
+
+    boolean vpl() {
+        return format == Format.vpl;
+    }
+
+    boolean noSandbox() {
+        return noSandbox;
+    }
+
+    boolean oneStudent() {
+        return target != null && target.student != null;
+    }
+
+    String gradeRangeText() {
+        return gradeRange;
+    }
+
+    /** The --grade-range, checked by {@link #checkOptions()} first. */
+    GradeRange gradeRange() {
+        return GradeRange.parse(gradeRange);
+    }
+
+    /**
+     * The --scenes folder and the files in it, for the sandbox to hide: each file stands for the
+     * folder it really is in, which a link may put elsewhere.
+     */
+    private List<Path> organisersScenes() throws IOException {
+        List<Path> scenes = new ArrayList<>(List.of(scenesFolder));
+        if (Files.isDirectory(scenesFolder)) {
+            try (var files = Files.list(scenesFolder)) {
+                files.forEach(scenes::add);
+            }
+        }
+        return scenes;
+    }
+
+    Path scenesFolder() {
+        return scenesFolder;
+    }
+
+    Path reportFolder() {
+        return reportFolder;
+    }
+
+    Path submissions() {
+        return target.cohort.submissions;
+    }
+
+    Path worksheet() {
+        return target.cohort == null ? null : target.cohort.worksheet;
+    }
+
+    int jobs() {
+        return target == null || target.cohort == null ? Runtime.getRuntime().availableProcessors()
+                : target.cohort.jobs;
+    }
+
+    /** The --max-grade given, or null: the worksheet's maximum, else 1. */
+    Double maxGrade() {
+        return target == null || target.cohort == null ? null : target.cohort.maxGrade;
+    }
+
+    boolean perScene() {
+        return target.cohort.perScene;
+    }
+
+    /** Whether to look for look-alikes in the cohort (on unless --no-lookalikes). */
+    boolean lookalikes() {
+        return !target.cohort.noLookalikes;
+    }
+
+    /** The limits and sizes of this grade. */
+    Grading.Limits limits() {
+        return new Grading.Limits(width, height, Duration.ofMillis(Math.round(timeLimitSeconds * 1000)),
+                memoryMegabytes, referenceChoice);
+    }
+}

@@ -1,0 +1,212 @@
+package gfx.tick1.command.shared.grader.cohort;
+
+import gfx.tick1.command.shared.grader.grading.Grading;
+import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
+import gfx.tick1.command.shared.grader.model.StudentResult;
+import gfx.tick1.command.shared.grader.model.Submission;
+import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import gfx.tick1.engine.io.OwnFolder;
+import java.io.IOException;
+import java.io.Reader;
+import java.io.Writer;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.DirectoryStream;
+import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.Properties;
+import java.util.UUID;
+
+/**
+ * The cohort grade's memory: each finished result, stored the moment it is known, so that a grade
+ * that is stopped (Ctrl-C, a crash, a power cut) loses nothing and a second run grades only what
+ * is new or changed. A result lives in a folder of its own, named by its {@link #key}: its fields
+ * in {@code result.properties} and the images of its failing scenes beside them. The folder is
+ * written under a temporary name, flushed to disk, then renamed into place in one step: a folder
+ * with a key's name is always complete, and a half-written one is never read (and is deleted at
+ * the next start).
+ */
+public final class ResultStore {
+
+    /** What is stored in each result's folder besides the images. */
+    private static final String RESULT_FILE = "result.properties";
+    /** The prefix of folders being written: never read, deleted at the next start. */
+    private static final String WRITING = ".writing-";
+    /** Changes when the way a result is stored or keyed changes, so that older results are graded again. */
+    private static final String FORMAT = "tick1 grade result 1";
+
+    private final Path folder;
+
+    /**
+     * The store in {@code folder}, made if need be (never a link: one there is replaced, {@link OwnFolder}); what a
+     * stopped run left half-written is deleted.
+     */
+    public ResultStore(Path folder) throws IOException {
+        this.folder = OwnFolder.at(folder);
+        try (DirectoryStream<Path> entries = Files.newDirectoryStream(folder, WRITING + "*")) {
+            for (Path entry : entries) {
+                WorkFolder.delete(entry);
+            }
+        }
+    }
+
+    /**
+     * The key of a submission's result: SHA-256 of the store's format, this program's version and
+     * Java's, the options that change a grade, every grading scene's name and bytes, and the two
+     * files' names (they appear in messages) and bytes. Each part is preceded by its length, so
+     * that no two different inputs make the same bytes.
+     */
+    static String key(Submission submission, Grading grading) throws IOException {
+        MessageDigest sha;
+        try {
+            sha = MessageDigest.getInstance("SHA-256");
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java has SHA-256", e);
+        }
+        // tick1's jar names its version in its manifest, for every package of the jar.
+        String version = ResultStore.class.getPackage().getImplementationVersion();
+        Grading.Limits limits = grading.limits();
+        add(sha, FORMAT);
+        add(sha, "tick1 " + (version == null ? "(development build)" : version));
+        add(sha, "Java " + System.getProperty("java.version"));
+        add(sha, limits.width() + "x" + limits.height() + " " + limits.timeLimit().toMillis() + " ms "
+                + limits.memoryMegabytes() + " MiB reference " + limits.referenceChoice());
+        for (Grading.GradingScene scene : grading.scenes()) {
+            add(sha, scene.name() + (scene.hidden() ? " hidden" : " public"));
+            add(sha, Files.readAllBytes(scene.file()));
+        }
+        for (Submission.SourceFile file : submission.files()) {
+            add(sha, file.path());
+            add(sha, file.content());
+        }
+        return HexFormat.of().formatHex(sha.digest());
+    }
+
+    private static void add(MessageDigest sha, String text) {
+        add(sha, text.getBytes(StandardCharsets.UTF_8));
+    }
+
+    private static void add(MessageDigest sha, byte[] bytes) {
+        sha.update(ByteBuffer.allocate(Long.BYTES).putLong(bytes.length).array());
+        sha.update(bytes);
+    }
+
+    /** The folder of the stored result with {@code key}: its images are there. */
+    Path folderOf(String key) {
+        return folder.resolve(key);
+    }
+
+    /** The stored result with {@code key}, as the result of {@code submission}, or null when there is none. */
+    StudentResult load(String key, Submission submission) throws IOException {
+        Path file = folderOf(key).resolve(RESULT_FILE);
+        // A result read through a link could be anyone's: it is no result.
+        if (!Files.isDirectory(folderOf(key), LinkOption.NOFOLLOW_LINKS)
+                || !Files.isRegularFile(file, LinkOption.NOFOLLOW_LINKS)) {
+            return null;
+        }
+        Properties p = new Properties();
+        try (Reader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            p.load(in);
+        }
+        try {
+            List<SceneResult> scenes = new ArrayList<>();
+            int count = Integer.parseInt(p.getProperty("scenes"));
+            for (int i = 0; i < count; i++) {
+                String at = "scene." + i + ".";
+                String explanation = p.getProperty(at + "explanation");
+                scenes.add(new SceneResult(p.getProperty(at + "name"),
+                        Boolean.parseBoolean(p.getProperty(at + "hidden")),
+                        Boolean.parseBoolean(p.getProperty(at + "passed")),
+                        explanation.isEmpty() ? List.of() : explanation.lines().toList(),
+                        orNull(p.getProperty(at + "heatMap")), orNull(p.getProperty(at + "yours")),
+                        orNull(p.getProperty(at + "expected"))));
+            }
+            return new StudentResult(submission, Boolean.parseBoolean(p.getProperty("passed")),
+                    Integer.parseInt(p.getProperty("scenesPassed")), Integer.parseInt(p.getProperty("scenesTotal")),
+                    p.getProperty("diagnosis"), p.getProperty("reason"), scenes,
+                    Duration.ofNanos(Long.parseLong(p.getProperty("timeNanos"))));
+        } catch (RuntimeException e) {
+            return null;   // not a result this program wrote: grade again
+        }
+    }
+
+    /** A new folder to write a result's images into before {@link #save} stores it. */
+    Path newEntry() throws IOException {
+        return Files.createDirectory(folder.resolve(WRITING + UUID.randomUUID()));
+    }
+
+    /**
+     * Stores {@code result} under {@code key}, with the images already written into {@code entry}
+     * (from {@link #newEntry}), and deletes {@code entry}: on return the result is on disk.
+     */
+    void save(String key, StudentResult result, Path entry) throws IOException {
+        Properties p = new Properties();
+        p.setProperty("passed", Boolean.toString(result.passed()));
+        p.setProperty("scenesPassed", Integer.toString(result.scenesPassed()));
+        p.setProperty("scenesTotal", Integer.toString(result.scenesTotal()));
+        p.setProperty("diagnosis", result.diagnosis());
+        p.setProperty("reason", result.reason());
+        p.setProperty("timeNanos", Long.toString(result.time().toNanos()));
+        p.setProperty("scenes", Integer.toString(result.scenes().size()));
+        for (int i = 0; i < result.scenes().size(); i++) {
+            SceneResult scene = result.scenes().get(i);
+            String at = "scene." + i + ".";
+            p.setProperty(at + "name", scene.name());
+            p.setProperty(at + "hidden", Boolean.toString(scene.hidden()));
+            p.setProperty(at + "passed", Boolean.toString(scene.passed()));
+            p.setProperty(at + "explanation", String.join("\n", scene.explanation()));
+            p.setProperty(at + "heatMap", orEmpty(scene.heatMap()));
+            p.setProperty(at + "yours", orEmpty(scene.yours()));
+            p.setProperty(at + "expected", orEmpty(scene.expected()));
+        }
+        try (Writer out = Files.newBufferedWriter(entry.resolve(RESULT_FILE), StandardCharsets.UTF_8)) {
+            p.store(out, null);
+        }
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(entry)) {
+            for (Path file : files) {
+                force(file);
+            }
+        }
+        force(entry);
+        if (Files.isSymbolicLink(folderOf(key))) {
+            Files.delete(folderOf(key));   // the link, not what it names: load never reads through it
+        }
+        try {
+            Files.move(entry, folderOf(key), StandardCopyOption.ATOMIC_MOVE);
+        } catch (IOException e) {
+            if (!Files.isDirectory(folderOf(key), LinkOption.NOFOLLOW_LINKS)) {
+                throw e;
+            }
+            // The same files graded by another job meanwhile: that result stands.
+            WorkFolder.delete(entry);
+        }
+        force(folder);
+    }
+
+    /** Flushes a file or folder to the disk, so that a power cut after the rename finds it whole. */
+    private static void force(Path path) {
+        try (FileChannel channel = FileChannel.open(path, StandardOpenOption.READ)) {
+            channel.force(true);
+        } catch (IOException e) {
+            // Not every file system can flush a folder: the rename is still all or nothing.
+        }
+    }
+
+    private static String orNull(String value) {
+        return value == null || value.isEmpty() ? null : value;
+    }
+
+    private static String orEmpty(String value) {
+        return value == null ? "" : value;
+    }
+}

@@ -1,0 +1,307 @@
+package gfx.tick1.command.shared.grader.grading;
+
+import gfx.tick1.command.shared.diagnosis.MethodModels;
+import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Answer;
+import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Colour;
+import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Hit;
+import gfx.tick1.command.shared.grader.grading.ProbeAnswers.None;
+import gfx.tick1.command.shared.grader.harness.ProbeCalls;
+import gfx.tick1.engine.math.Ray;
+import gfx.tick1.engine.math.Vector3;
+import gfx.tick1.engine.scene.Intersection;
+import gfx.tick1.engine.scene.PointLight;
+import gfx.tick1.engine.scene.RaycastHit;
+import gfx.tick1.engine.scene.Sphere;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.Predicate;
+import java.util.stream.IntStream;
+import java.util.stream.Stream;
+
+/**
+ * Compares the student's answers with ours, input by input, and with the catalogue's models of
+ * the same methods ({@link MethodModels}). An answer is ours when it agrees with the reference's
+ * within {@link #TOLERANCE}: a hit's distance, point and normal relative to the input's size, a
+ * colour channel by channel once both are clamped to [0, 1] as toRGB() clamps them (a colour
+ * clamped by the student's code is a correct answer). A hit is also ours when it is the exact
+ * answer (106-bit arithmetic, {@link Intersection#ROBUST}) where the handout's formula is not.
+ * A mistake is named only when its model, alone or with one other, gives every answer the
+ * student's method gave on the tested inputs.
+ */
+final class BehaviourJudge {
+
+    /** The one label of what neither tick1.xml nor the hidden scene can show. */
+    static final String UNTESTED = "not tested by the course's scenes; the handout's six steps leave it open";
+
+    /**
+     * Relative tolerance: correct code written another way differs from ours in the last bits
+     * (docs/grading.md gives the figures); roots kept in float differ in the eighth digit.
+     */
+    static final double TOLERANCE = 1e-9;
+
+    /** The edge cases the course's scenes cannot show, and what each one is in words. */
+    private static final List<String> UNTESTED_EDGES = List.of("graze", "inside", "surface");
+
+    static final Set<Variant> OURS = EnumSet.noneOf(Variant.class);
+
+    private BehaviourJudge() {
+    }
+
+    /** One tested input and the student's answer to it. */
+    private interface Case {
+        /** Whether the answer is that of the model of {@code variants} (none: ours in plain doubles). */
+        boolean answerIs(Set<Variant> variants);
+
+        /** Whether the answer is ours: in plain doubles, or, for a hit, the exact one. */
+        default boolean isOurs() {
+            return answerIs(OURS);
+        }
+
+        double roughness();
+
+        /** "for INPUT, yours is X; ours is Y". */
+        String counterexample();
+    }
+
+    static Behaviour judge(ProbeAnswers answers) {
+        if (!answers.any()) {
+            MethodBehaviour none = new MethodBehaviour("", 0, List.of(), List.of(), null, List.of(), List.of());
+            return new Behaviour(false, none, none);
+        }
+        List<RayCase> rays = new ArrayList<>();
+        for (ProbeCalls.Intersection call : ProbeCalls.INTERSECTIONS) {
+            if (!UNTESTED_EDGES.contains(call.name())) {
+                rays.add(new RayCase(call, answers.get(call.name())));
+            }
+        }
+        ProbeCalls.RANDOM_INTERSECTIONS.forEach(call -> rays.add(new RayCase(call, answers.get(call.name()))));
+        List<ShadeCase> shadings = new ArrayList<>();
+        ProbeCalls.ILLUMINATIONS.forEach(call -> shadings.add(new ShadeCase(call, answers.get(call.name()), false)));
+        ProbeCalls.RANDOM_ILLUMINATIONS.forEach(call -> shadings.add(new ShadeCase(call, answers.get(call.name()),
+                answers.phongSet())));
+        MethodBehaviour intersection = judge("intersectionWith", rays, Variant.Method.INTERSECTION_WITH,
+                AnswerFacts.ofHits(rays));
+        intersection = new MethodBehaviour(intersection.method(), intersection.inputs(), intersection.differing(),
+                intersection.mistake(), intersection.counterexample(), intersection.properties(),
+                untested(answers, rays, intersection.mistake()));
+        MethodBehaviour illumination = judge("illuminate", shadings, Variant.Method.ILLUMINATE,
+                AnswerFacts.ofColours(shadings));
+        return new Behaviour(true, intersection, illumination);
+    }
+
+    private static MethodBehaviour judge(String method, List<? extends Case> cases, Variant.Method which,
+            List<String> properties) {
+        List<Integer> differing = IntStream.range(0, cases.size()).filter(i -> !cases.get(i).isOurs()).boxed()
+                .toList();
+        if (differing.isEmpty()) {
+            return new MethodBehaviour(method, cases.size(), differing, List.of(), null, List.of(), List.of());
+        }
+        // The differing inputs first: a model that is not the student's fails on one of them at once.
+        List<Case> order = new ArrayList<>();
+        differing.forEach(i -> order.add(cases.get(i)));
+        IntStream.range(0, cases.size()).filter(i -> !differing.contains(i)).forEach(i -> order.add(cases.get(i)));
+        Case simplest = differing.stream().map(cases::get).min(Comparator.comparingDouble(Case::roughness))
+                .orElseThrow();
+        return new MethodBehaviour(method, cases.size(), differing, reproducing(order, which),
+                simplest.counterexample(), properties, List.of());
+    }
+
+    /** The catalogue's entries whose model gives every answer: one, or two together, or none. */
+    static List<Variant> reproducing(List<? extends Case> cases, Variant.Method which) {
+        List<Variant> models = Stream.of(Variant.values()).filter(v -> v.method() == which && !v.isCorrect())
+                .toList();
+        for (Variant v : models) {
+            if (everyAnswer(cases, c -> c.answerIs(EnumSet.of(v)))) {
+                return List.of(v);
+            }
+        }
+        for (int i = 0; i < models.size(); i++) {
+            for (int j = i + 1; j < models.size(); j++) {
+                Set<Variant> pair = EnumSet.of(models.get(i), models.get(j));
+                if (everyAnswer(cases, c -> c.answerIs(pair))) {
+                    return List.copyOf(pair);
+                }
+            }
+        }
+        return List.of();
+    }
+
+    private static boolean everyAnswer(List<? extends Case> cases, Predicate<Case> test) {
+        for (Case c : cases) {
+            if (!test.test(c)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * The notes on the edge cases the course's scenes cannot show: none where the answer is ours
+     * or the handout's six steps' (a correct answer too).
+     */
+    private static List<String> untested(ProbeAnswers answers, List<RayCase> tested, List<Variant> testedMistake) {
+        List<String> notes = new ArrayList<>();
+        List<RayCase> every = new ArrayList<>(tested);
+        List<RayCase> edges = new ArrayList<>();
+        for (ProbeCalls.Intersection call : ProbeCalls.INTERSECTIONS) {
+            if (UNTESTED_EDGES.contains(call.name())) {
+                edges.add(new RayCase(call, answers.get(call.name())));
+            }
+        }
+        every.addAll(0, edges);
+        Set<Variant> literal = EnumSet.of(Variant.HANDOUT_SIX_STEPS);
+        for (RayCase edge : edges) {
+            // Nothing to add where the answer is a correct one, or the tested finding's model gives it too.
+            if (edge.isOurs() || edge.answerIs(literal)
+                    || !testedMistake.isEmpty() && edge.answerIs(EnumSet.copyOf(testedMistake))) {
+                continue;
+            }
+            List<Variant> named = reproducing(every, Variant.Method.INTERSECTION_WITH);
+            MethodModels.Hit handout = edge.model(literal);
+            notes.add(UNTESTED + ": for " + situation(edge.call().name()) + " (" + InputWords.ray(edge.call())
+                    + "), your intersectionWith returns " + InputWords.hit(edge.answer()) + "; ours returns "
+                    + InputWords.hit(edge.model(OURS)) + ", the nearest root with s > 0"
+                    + (handout == null ? ", and the handout's six steps return no hit, also a correct answer" : "")
+                    + (named.isEmpty() ? "" : "; every answer of yours is that of \"" + titles(named) + "\""));
+        }
+        return notes;
+    }
+
+    private static String situation(String edge) {
+        return switch (edge) {
+            case "graze" -> "a ray that grazes a sphere";
+            case "inside" -> "a ray that starts inside a sphere";
+            default -> "a ray that starts on a sphere's surface";
+        };
+    }
+
+    static String titles(List<Variant> variants) {
+        return String.join("\" with \"", variants.stream().map(Variant::title).toList());
+    }
+
+    /** A ray, a sphere and what intersectionWith gave. */
+    record RayCase(ProbeCalls.Intersection call, Answer answer) implements Case {
+
+        MethodModels.Hit model(Set<Variant> variants) {
+            return MethodModels.intersect(v(call.origin()), v(call.direction()), v(call.centre()), call.radius(),
+                    variants);
+        }
+
+        @Override
+        public boolean answerIs(Set<Variant> variants) {
+            return same(model(variants));
+        }
+
+        @Override
+        public boolean isOurs() {
+            if (answerIs(OURS)) {
+                return true;
+            }
+            RaycastHit exact = Intersection.ROBUST.find(new Sphere(v(call.centre()), call.radius(), new Vector3(1)),
+                    new Ray(v(call.origin()), v(call.direction())));
+            return same(exact.getObjectHit() == null ? null
+                    : new MethodModels.Hit(exact.getDistance(), exact.getLocation(), exact.getNormal()));
+        }
+
+        private boolean same(MethodModels.Hit expected) {
+            if (expected == null || answer instanceof None) {
+                return expected == null && answer instanceof None;
+            }
+            if (!(answer instanceof Hit hit) || !hit.sameSphere()) {
+                return false;
+            }
+            double size = Math.max(1, Math.max(Math.max(length(call.origin()), length(call.centre())), call.radius()));
+            double along = length(call.direction());
+            return close(hit.distance() * along, expected.distance() * along, size)
+                    && close(hit.point(), expected.point(), size)
+                    && close(hit.normal(), expected.normal(), Math.max(1, size / call.radius()));
+        }
+
+        /** The input's roughness and our answer's: the simplest counterexample has round numbers in both. */
+        @Override
+        public double roughness() {
+            MethodModels.Hit ours = model(OURS);
+            return InputWords.roughness(call) + (ours == null ? 0 : InputWords.roughness(ours.distance(),
+                    ours.point().x, ours.point().y, ours.point().z));
+        }
+
+        @Override
+        public String counterexample() {
+            String yours = InputWords.hit(answer, false);
+            String ours = InputWords.hit(model(OURS), false);
+            if (yours.equals(ours)) {
+                // Apart beyond the seventh digit (float arithmetic, say): every digit, so the two differ.
+                yours = InputWords.hit(answer, true);
+                ours = InputWords.hit(model(OURS), true);
+            }
+            return "for " + InputWords.ray(call) + ", yours returns " + yours + "; ours returns " + ours;
+        }
+    }
+
+    /** A point to shade and what illuminate gave. */
+    record ShadeCase(ProbeCalls.Illumination call, Answer answer, boolean phongSet) implements Case {
+
+        Vector3 model(Set<Variant> variants) {
+            boolean set = phongSet;
+            return MethodModels.illuminate(new MethodModels.Shading(v(call.ambient()),
+                    new PointLight(v(call.light()), v(call.lightColour()), call.intensity()), v(call.colour()),
+                    set ? call.kD() : ProbeCalls.COURSE_KD, set ? call.kS() : ProbeCalls.COURSE_KS,
+                    set ? call.n() : ProbeCalls.COURSE_N, v(call.point()), v(call.normal())), variants);
+        }
+
+        @Override
+        public boolean answerIs(Set<Variant> variants) {
+            if (!(answer instanceof Colour colour)) {
+                return false;
+            }
+            Vector3 expected = model(variants);
+            double[] rgb = colour.rgb();
+            return closeClamped(rgb[0], expected.x) && closeClamped(rgb[1], expected.y)
+                    && closeClamped(rgb[2], expected.z);
+        }
+
+        @Override
+        public double roughness() {
+            Vector3 ours = model(OURS);
+            return InputWords.roughness(call) + InputWords.roughness(ours.x, ours.y, ours.z);
+        }
+
+        @Override
+        public String counterexample() {
+            String yours = InputWords.colour(answer, false);
+            String ours = InputWords.colour(model(OURS), false);
+            if (yours.equals(ours)) {
+                // Apart beyond the seventh digit (float arithmetic, say): every digit, so the two differ.
+                yours = InputWords.colour(answer, true);
+                ours = InputWords.colour(model(OURS), true);
+            }
+            return "for " + InputWords.shading(call, phongSet) + ", yours returns " + yours + "; ours returns " + ours;
+        }
+    }
+
+    static Vector3 v(double[] xyz) {
+        return new Vector3(xyz[0], xyz[1], xyz[2]);
+    }
+
+    static double length(double[] v) {
+        return Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    }
+
+    private static boolean close(double a, double b, double size) {
+        return Math.abs(a - b) <= TOLERANCE * size; // false for NaN
+    }
+
+    private static boolean close(double[] a, Vector3 b, double size) {
+        return close(a[0], b.x, size) && close(a[1], b.y, size) && close(a[2], b.z, size);
+    }
+
+    /** Two channels after the clamp to [0, 1] that toRGB() applies; NaN is never close. */
+    private static boolean closeClamped(double a, double b) {
+        return close(Math.max(0, Math.min(1, a)), Math.max(0, Math.min(1, b)), 1) && !Double.isNaN(a)
+                && !Double.isNaN(b);
+    }
+}

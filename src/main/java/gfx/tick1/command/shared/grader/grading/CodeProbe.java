@@ -1,0 +1,124 @@
+package gfx.tick1.command.shared.grader.grading;
+
+import gfx.tick1.command.shared.grader.sandbox.Sandbox;
+import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
+import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import gfx.tick1.command.shared.kit.StarterKit;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The behaviour of a Sphere.java and a Renderer.java on their own, for {@code tick1 diff}: compiled
+ * with the starter kit and run in the sandbox, as {@code grade} runs them, with no scene, on the
+ * probes' inputs. For each method asked about, one line: that it behaves as ours, or the finding
+ * ({@link ProbeFindings}); then the notes on what the course's scenes cannot show, and the hints
+ * of what to reread. Where the methods cannot run (no sandbox, the files do not compile), there
+ * is nothing but one line that says why.
+ */
+public final class CodeProbe {
+
+    /**
+     * What the methods asked about did: one line each, first; then "note: ..." and "hint: ..."
+     * lines; or, when they could not be run, none and why.
+     */
+    public record Hints(List<String> behaviour, List<String> hints, String whyNone, boolean behavesAsOurs) {
+
+        static Hints none(String why) {
+            return new Hints(List.of(), List.of(), why, false);
+        }
+    }
+
+    /** The words of a method's line when it behaves as ours. */
+    static final String BEHAVES_AS_OURS = " behaves as ours on ";
+
+    private static final Duration TIME_LIMIT = Duration.ofSeconds(30);
+    private static final int MEMORY_MEGABYTES = 512;
+
+    private CodeProbe() {
+    }
+
+    /**
+     * Probes {@code sphere} and {@code renderer} (sources of package gfx.tick1); hints only of the
+     * methods of the files named in {@code asked} ("Sphere", "Renderer").
+     */
+    public static Hints probe(String sphere, String renderer, List<String> asked) throws InterruptedException {
+        Sandbox sandbox;
+        try {
+            sandbox = Sandbox.confined();
+        } catch (Sandbox.Unavailable e) {
+            return Hints.none("behaviour could not be checked: it comes from running your methods in "
+                    + "the sandbox, and " + e.getMessage() + " (install " + Sandbox.PACKAGE + ")");
+        }
+        Path work = null;
+        try {
+            work = Files.createTempDirectory("tick1-diff");
+            return probe(sandbox, work, sphere, renderer, asked);
+        } catch (IOException e) {
+            return Hints.none("behaviour could not be checked: your methods could not be run ("
+                    + e.getMessage() + ")");
+        } finally {
+            if (work != null) {
+                WorkFolder.delete(work);
+            }
+        }
+    }
+
+    private static Hints probe(Sandbox sandbox, Path work, String sphere, String renderer, List<String> asked)
+            throws IOException, InterruptedException {
+        Path harness = Files.createDirectory(work.resolve("harness"));
+        StudentProcess.writeHarness(harness);
+        StudentProcess process = new StudentProcess(sandbox, harness, MEMORY_MEGABYTES);
+        Path sources = Files.createDirectory(work.resolve("sources"));
+        Files.writeString(sources.resolve("Sphere.java"), sphere, StandardCharsets.UTF_8);
+        Files.writeString(sources.resolve("Renderer.java"), renderer, StandardCharsets.UTF_8);
+        for (String given : StarterKit.GIVEN_CLASSES) {
+            Files.writeString(sources.resolve(given + ".java"), StarterKit.source(given), StandardCharsets.UTF_8);
+        }
+        Path scenes = Files.createDirectory(work.resolve("scenes"));
+        sandbox.share(work, false);
+        Path output = Files.createDirectory(work.resolve("output"));
+        sandbox.share(output, true);
+        StudentProcess.CompiledAndRendered run = process.compileAndRender(sources, scenes, List.of(), output,
+                "Sphere.java", "Renderer.java", 1, 1, TIME_LIMIT, true);
+        if (!run.compiled().compiled()) {
+            return Hints.none("behaviour could not be checked: it comes from running your "
+                    + "methods, and the files do not compile with the starter code"
+                    + (run.compiled().failure() == null ? ""
+                    : " (" + run.compiled().failure() + ")"));
+        }
+        ProbeFindings findings = ProbeFindings.of(run.rendered().probes());
+        if (!findings.ran()) {
+            return Hints.none("behaviour could not be checked: your methods gave no answer");
+        }
+        return hints(findings, asked);
+    }
+
+    /** The lines of the methods of the files named in {@code asked}. */
+    static Hints hints(ProbeFindings findings, List<String> asked) {
+        List<String> behaviour = new ArrayList<>(), hints = new ArrayList<>();
+        boolean ours = true;
+        Behaviour b = findings.behaviour();
+        for (MethodBehaviour method : List.of(b.intersectionWith(), b.illuminate())) {
+            if (!asked.contains(method.method().equals("intersectionWith") ? "Sphere" : "Renderer")) {
+                continue;
+            }
+            if (method.behavesAsOurs()) {
+                behaviour.add("your " + method.method() + BEHAVES_AS_OURS + SubmissionGrader.count(method.inputs(),
+                        "input"));
+            } else {
+                ours = false;
+                ProbeFindings.Finding finding = findings.tested().stream()
+                        .filter(f -> f.method().equals(method.method())).findFirst().orElseThrow();
+                behaviour.add(finding.fact());
+                hints.add("hint: reread handout " + finding.section() + ".");
+            }
+            method.untested().forEach(note -> hints.add("note: " + note));
+        }
+        return new Hints(behaviour, hints, null, ours);
+    }
+}

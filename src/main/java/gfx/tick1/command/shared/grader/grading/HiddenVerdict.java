@@ -1,0 +1,72 @@
+package gfx.tick1.command.shared.grader.grading;
+
+import java.util.List;
+
+/**
+ * All that tick1 says of a hidden scene, anywhere (the one-student output, feedback.txt and
+ * feedback.html, grades.csv, the cohort page): one of these verdicts, in these fixed words. The
+ * student's code reads the hidden scene, so anything it chose (a pixel count, a bounding box, a
+ * channel's largest difference, the catalogue entry its image matches, an exception's class or
+ * message, a stack frame, an exit status, a PNG header's size, which reference it matched) could
+ * carry bytes of the scene out. A verdict is all it can choose: log2 of the number of verdicts,
+ * {@code log2(9)}, about 3.2 bits a hidden scene.
+ */
+public enum HiddenVerdict {
+
+    PASS("PASS"),
+    WRONG("wrong: the image is not the expected one"),
+    NOT_FROM_THE_CODE(SubmissionGrader.NOT_FROM_THE_CODE + " (checked on sampled pixels)"),
+    THREW("the code threw an exception"),
+    TIME_LIMIT("no image within the time limit"),
+    NO_IMAGE("no usable image: the program ended, or the image it wrote is unusable"),
+    MEMORY("no image: the program was stopped at the memory limit"),
+    PROCESSES("no image: the program reached the limit of processes and threads"),
+    OUTPUT_FOLDER("no image: the program was stopped at the limit of its output folder");
+
+    private final String words;
+
+    HiddenVerdict(String words) {
+        this.words = words;
+    }
+
+    /** The verdict's fixed words. */
+    public String words() {
+        return words;
+    }
+
+    /**
+     * The verdict a hidden scene's explanation states: its first line is one verdict's words, as the
+     * grader wrote it. Whatever the lines hold, the answer is one of the verdicts (a failure whose
+     * words are not a verdict's is {@link #NO_IMAGE}), so a report that shows only the verdict's words
+     * shows nothing the code chose.
+     */
+    public static HiddenVerdict statedBy(List<String> explanation) {
+        for (HiddenVerdict verdict : values()) {
+            if (!explanation.isEmpty() && explanation.get(0).equals(verdict.words)) {
+                return verdict;
+            }
+        }
+        return NO_IMAGE;
+    }
+
+    /**
+     * The verdict of a hidden scene that gave no image, from the reason the sandbox gave. The
+     * reason may hold the code's words (an exception's message), so whatever it says, the answer
+     * is one of the verdicts: the words decide only which.
+     */
+    static HiddenVerdict ofNoImage(String reason) {
+        if (reason.startsWith("the program used more than")) {
+            return MEMORY;
+        }
+        if (reason.startsWith("the program was stopped: it")) {
+            return OUTPUT_FOLDER;
+        }
+        if (reason.lines().anyMatch(line -> line.startsWith("it reached the limit of"))) {
+            return PROCESSES;
+        }
+        if (reason.startsWith("the code threw")) {
+            return THREW;
+        }
+        return reason.contains("time limit") ? TIME_LIMIT : NO_IMAGE;
+    }
+}

@@ -1,0 +1,164 @@
+package gfx.tick1.command.shared.grader.grading;
+
+import gfx.tick1.command.shared.diagnosis.MethodModels;
+import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Answer;
+import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Colour;
+import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Failed;
+import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Hit;
+import gfx.tick1.command.shared.grader.harness.ProbeCalls;
+import gfx.tick1.engine.math.Vector3;
+import java.math.BigDecimal;
+import java.math.MathContext;
+
+/**
+ * The inputs and answers of the behaviour comparison in words, with numbers as short as they
+ * can be written exactly (0.6, not 0.6000000000000001, is kept only when it is the double given),
+ * and how round an input is, to choose the simplest counterexample.
+ */
+final class InputWords {
+
+    private InputWords() {
+    }
+
+    static String ray(ProbeCalls.Intersection call) {
+        return "the ray from O = " + vector(call.origin()) + " along D = " + vector(call.direction())
+                + " and the sphere of centre C = " + vector(call.centre()) + " and radius r = " + number(call.radius());
+    }
+
+    static String shading(ProbeCalls.Illumination call, boolean phongSet) {
+        boolean course = !phongSet || call.kD() == ProbeCalls.COURSE_KD && call.kS() == ProbeCalls.COURSE_KS
+                && call.n() == ProbeCalls.COURSE_N;
+        String coefficients = course ? "" : ", k_d = " + number(call.kD()) + ", k_s = " + number(call.kS())
+                + ", n = " + number(call.n());
+        return "P = " + vector(call.point()) + ", N = " + vector(call.normal()) + " on a sphere of colour C_diff = "
+                + vector(call.colour()) + coefficients + ", ambient light I_a = " + vector(call.ambient())
+                + " and a point light at " + vector(call.light()) + " of colour " + vector(call.lightColour())
+                + " and intensity " + intensity(call.intensity());
+    }
+
+    /** A hit, no hit, or how the call gave no answer. */
+    static String hit(Answer answer) {
+        return hit(answer, false);
+    }
+
+    /** As {@link #hit(Answer)}; with {@code everyDigit}, each number as the shortest decimal that reads back as it. */
+    static String hit(Answer answer, boolean everyDigit) {
+        if (answer instanceof Hit hit) {
+            return !hit.sameSphere() ? "a hit that names another sphere than this one"
+                    : "a hit at s = " + number(hit.distance(), everyDigit) + ", P = "
+                    + vector(hit.point(), everyDigit) + ", N = " + vector(hit.normal(), everyDigit);
+        }
+        return answer instanceof ProbeAnswers.None ? "no hit" : failure(answer);
+    }
+
+    static String hit(MethodModels.Hit hit) {
+        return hit(hit, false);
+    }
+
+    static String hit(MethodModels.Hit hit, boolean everyDigit) {
+        return hit == null ? "no hit" : "a hit at s = " + number(hit.distance(), everyDigit) + ", P = "
+                + vector(new double[] {hit.point().x, hit.point().y, hit.point().z}, everyDigit) + ", N = "
+                + vector(new double[] {hit.normal().x, hit.normal().y, hit.normal().z}, everyDigit);
+    }
+
+    static String colour(Answer answer) {
+        return colour(answer, false);
+    }
+
+    static String colour(Answer answer, boolean everyDigit) {
+        return answer instanceof Colour colour ? "the colour " + vector(colour.rgb(), everyDigit) : failure(answer);
+    }
+
+    static String colour(Vector3 colour) {
+        return colour(colour, false);
+    }
+
+    static String colour(Vector3 colour, boolean everyDigit) {
+        return "the colour " + vector(new double[] {colour.x, colour.y, colour.z}, everyDigit);
+    }
+
+    private static String failure(Answer answer) {
+        String how = answer instanceof Failed failed ? failed.how() : "";
+        return switch (how) {
+            case "null" -> "null";
+            case "threw" -> "an exception";
+            case "timeout" -> "no answer within half a second";
+            case "absent" -> "nothing: there is no illuminate(Scene, Sphere, Vector3, Vector3) returning a Vector3";
+            default -> "no answer (the call did not return in time, or the run stopped before it)";
+        };
+    }
+
+    private static String intensity(double intensity) {
+        double k = intensity / (4 * Math.PI);
+        if (intensity == 0) {
+            return "0";
+        }
+        return k == Math.rint(k) ? (k == 1 ? "4 pi" : number(k) + " x 4 pi") : number(intensity);
+    }
+
+    static String vector(Vector3 v) {
+        return vector(new double[] {v.x, v.y, v.z});
+    }
+
+    static String vector(double[] v) {
+        return vector(v, false);
+    }
+
+    private static String vector(double[] v, boolean everyDigit) {
+        return "(" + number(v[0], everyDigit) + ", " + number(v[1], everyDigit) + ", " + number(v[2], everyDigit)
+                + ")";
+    }
+
+    /** The shortest decimal that reads back as {@code x}, or 7 significant digits for a long one. */
+    static String number(double x) {
+        return number(x, false);
+    }
+
+    /** As {@link #number(double)}; with {@code everyDigit}, always the shortest decimal that reads back as x. */
+    private static String number(double x, boolean everyDigit) {
+        if (Double.isNaN(x) || Double.isInfinite(x)) {
+            return Double.toString(x);
+        }
+        if (x == Math.rint(x) && Math.abs(x) < 1e15) {
+            return Long.toString((long) x);
+        }
+        String shortest = BigDecimal.valueOf(x).stripTrailingZeros().toPlainString();
+        if (everyDigit || shortest.length() <= 10) {
+            return shortest;
+        }
+        return new BigDecimal(x).round(new MathContext(7)).stripTrailingZeros().toPlainString();
+    }
+
+    /** How far from round an input's numbers are: their sizes, and more for each that is not in tenths. */
+    static double roughness(double... numbers) {
+        double rough = 0;
+        for (double x : numbers) {
+            rough += Math.abs(x) + (x * 10 == Math.rint(x * 10) ? 0 : 3) + (x == Math.rint(x) ? 0 : 0.5);
+        }
+        return rough;
+    }
+
+    static double roughness(ProbeCalls.Intersection call) {
+        return roughness(concat(call.origin(), call.direction(), call.centre(), new double[] {call.radius()}));
+    }
+
+    static double roughness(ProbeCalls.Illumination call) {
+        return roughness(concat(call.point(), call.normal(), call.colour(), call.ambient(), call.light(),
+                call.lightColour(), new double[] {call.kD(), call.kS(), call.n() / 10,
+                    call.intensity() / (4 * Math.PI)}));
+    }
+
+    private static double[] concat(double[]... parts) {
+        int length = 0;
+        for (double[] part : parts) {
+            length += part.length;
+        }
+        double[] all = new double[length];
+        int at = 0;
+        for (double[] part : parts) {
+            System.arraycopy(part, 0, all, at, part.length);
+            at += part.length;
+        }
+        return all;
+    }
+}

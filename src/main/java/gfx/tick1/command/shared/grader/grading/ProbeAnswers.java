@@ -1,0 +1,136 @@
+package gfx.tick1.command.shared.grader.grading;
+
+import gfx.tick1.command.shared.grader.harness.ProbeCalls;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * What the student's methods answered on each of {@link ProbeCalls}, parsed from the log the child
+ * wrote. The log is the student's process's, so it is read strictly: only lines of the harness's
+ * form, for names of calls that exist, each name once (later lines for a name are ignored), and
+ * at most a few hundred lines; anything else counts as no answer. What the code could forge this
+ * way is only which of the grader's own fixed sentences it gets.
+ */
+final class ProbeAnswers {
+
+    /** What one call gave. */
+    sealed interface Answer {
+    }
+
+    /** A hit: whether it names the sphere called, its distance, point and normal. */
+    record Hit(boolean sameSphere, double distance, double[] point, double[] normal) implements Answer {
+    }
+
+    /** An empty RaycastHit: no sphere. */
+    record None() implements Answer {
+    }
+
+    /** illuminate's colour. */
+    record Colour(double[] rgb) implements Answer {
+    }
+
+    /** No answer: null, an exception, no return within the time, no such method, or nothing logged. */
+    record Failed(String how) implements Answer {
+    }
+
+    /** Every call's line, the phong line, and a few to spare. */
+    private static final int MAX_LINES = ProbeCalls.INTERSECTIONS.size() + ProbeCalls.ILLUMINATIONS.size()
+            + 2 * ProbeCalls.RANDOM_COUNT + 10;
+    /** The longest number the harness writes: Double.toString's, with room to spare. */
+    private static final int NUMBER_CHARS = 26;
+
+    private final Map<String, Answer> answers = new HashMap<>();
+    /** Whether the random shadings' k_d, k_s and n were set on the student's spheres (else the course's). */
+    private Boolean phongSet;
+
+    private ProbeAnswers() {
+    }
+
+    /**
+     * The answers in {@code log} (null when the child left none), read word by word: a few
+     * thousand lines, so no backtracking pattern is run on them.
+     */
+    static ProbeAnswers parse(String log) {
+        ProbeAnswers parsed = new ProbeAnswers();
+        if (log == null) {
+            return parsed;
+        }
+        Set<String> names = new HashSet<>();
+        ProbeCalls.INTERSECTIONS.forEach(call -> names.add(call.name()));
+        ProbeCalls.ILLUMINATIONS.forEach(call -> names.add(call.name()));
+        ProbeCalls.RANDOM_INTERSECTIONS.forEach(call -> names.add(call.name()));
+        ProbeCalls.RANDOM_ILLUMINATIONS.forEach(call -> names.add(call.name()));
+        log.lines().limit(MAX_LINES).forEach(line -> {
+            String[] words = line.split(" ", 12);
+            if (words.length == 2 && words[0].equals("phong") && parsed.phongSet == null
+                    && (words[1].equals("set") || words[1].equals("fixed"))) {
+                parsed.phongSet = words[1].equals("set");
+                return;
+            }
+            if (names.contains(words[0]) && !parsed.answers.containsKey(words[0])) {
+                Answer answer = answer(words);
+                if (answer != null) {
+                    parsed.answers.put(words[0], answer);
+                }
+            }
+        });
+        return parsed;
+    }
+
+    /** The answer a line's words give, or null when they are not one of the harness's forms. */
+    private static Answer answer(String[] words) {
+        if (words.length == 10 && words[1].equals("hit") && (words[2].equals("0") || words[2].equals("1"))) {
+            double[] n = numbers(words, 3, 7);
+            return n == null ? null : new Hit(words[2].equals("1"), n[0], new double[] {n[1], n[2], n[3]},
+                    new double[] {n[4], n[5], n[6]});
+        }
+        if (words.length == 5 && words[1].equals("colour")) {
+            double[] n = numbers(words, 2, 3);
+            return n == null ? null : new Colour(n);
+        }
+        if (words.length == 2) {
+            return switch (words[1]) {
+                case "none" -> new None();
+                case "null", "threw", "timeout", "absent" -> new Failed(words[1]);
+                default -> null;
+            };
+        }
+        return null;
+    }
+
+    /** {@code count} numbers from {@code from}, each as Double.toString writes one; null if one is not. */
+    private static double[] numbers(String[] words, int from, int count) {
+        double[] values = new double[count];
+        for (int i = 0; i < count; i++) {
+            String word = words[from + i];
+            boolean special = word.equals("NaN") || word.equals("Infinity") || word.equals("-Infinity");
+            if (word.isEmpty() || word.length() > NUMBER_CHARS || !special && !word.chars().allMatch(c -> c >= '0'
+                    && c <= '9' || c == '.' || c == 'E' || c == '-')) {
+                return null;
+            }
+            try {
+                values[i] = Double.parseDouble(word);
+            } catch (NumberFormatException e) {
+                return null;
+            }
+        }
+        return values;
+    }
+
+    /** Whether the log held any answer at all: without one, the probes did not run. */
+    boolean any() {
+        return !answers.isEmpty();
+    }
+
+    /** Whether the random shadings' spheres had their k_d, k_s and n set (else they kept the course's). */
+    boolean phongSet() {
+        return Boolean.TRUE.equals(phongSet);
+    }
+
+    /** The answer to the call {@code name}; "missing" when none was logged. */
+    Answer get(String name) {
+        return answers.getOrDefault(name, new Failed("missing"));
+    }
+}

@@ -1,0 +1,143 @@
+package gfx.tick1.command.shared.grader.grading;
+
+import gfx.tick1.command.shared.diagnosis.Variant;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Stream;
+
+/**
+ * What the behaviour comparison found, in the words every report uses: for each method that
+ * does not behave as ours, one tested finding (the catalogue's mistake whose model gives every
+ * answer, or the simplest counterexample and what the answers show); then the notes on what the
+ * course's scenes cannot show, always after the tested findings and always with the one label
+ * {@link BehaviourJudge#UNTESTED}; the sections to reread, at most three.
+ */
+final class ProbeFindings {
+
+    /** The most sections a report lists to reread. */
+    static final int SECTIONS = 3;
+
+    private static final String INTERSECTION_SECTION = "section 4, \"Ray-sphere intersection code\"";
+    private static final String ILLUMINATE_SECTION = "section 5, \"Phong illumination code\"";
+
+    /** One method's tested finding: the fact, the section to reread, and the cohort chart's label. */
+    record Finding(String method, String fact, String section, String label) {
+    }
+
+    private final Behaviour behaviour;
+    private final List<Finding> tested = new ArrayList<>();
+
+    private ProbeFindings(Behaviour behaviour) {
+        this.behaviour = behaviour;
+        if (behaviour.ran()) {
+            Stream.of(behaviour.intersectionWith(), behaviour.illuminate()).filter(b -> !b.behavesAsOurs())
+                    .forEach(b -> tested.add(finding(b)));
+        }
+    }
+
+    /** The findings of the probes' log {@code log} (null when the child left none). */
+    static ProbeFindings of(String log) {
+        return new ProbeFindings(BehaviourJudge.judge(ProbeAnswers.parse(log)));
+    }
+
+    private static Finding finding(MethodBehaviour b) {
+        String inputs = SubmissionGrader.count(b.inputs(), "input");
+        boolean sphere = b.method().equals("intersectionWith");
+        if (!b.mistake().isEmpty()) {
+            List<String> explained = b.mistake().stream().map(Variant::explanation).toList();
+            return new Finding(b.method(), "your " + b.method() + " gives the answers of \""
+                    + BehaviourJudge.titles(b.mistake()) + "\" on all " + inputs + ": "
+                    + String.join("; and ", explained)
+                    + "; for example, " + b.counterexample(), b.mistake().get(0).reread(),
+                    String.join(" + ", b.mistake().stream().map(Variant::title).toList()));
+        }
+        StringBuilder fact = new StringBuilder("your " + b.method() + " differs from ours on " + b.differing().size()
+                + " of " + inputs + "; the simplest: " + b.counterexample());
+        b.properties().forEach(p -> fact.append("; ").append(p));
+        fact.append("; tick1 does not recognise this mistake");
+        return new Finding(b.method(), fact.toString(), sphere ? INTERSECTION_SECTION : ILLUMINATE_SECTION,
+                b.method() + ": differs from ours");
+    }
+
+    /** The comparison itself, for any report that wants the answers' verdicts. */
+    Behaviour behaviour() {
+        return behaviour;
+    }
+
+    /** Whether the probes ran (the child logged answers). */
+    boolean ran() {
+        return behaviour.ran();
+    }
+
+    /** Whether a method does not behave as ours on a tested input. */
+    boolean anyFailed() {
+        return !tested.isEmpty();
+    }
+
+    /** The tested findings, intersectionWith's first. */
+    List<Finding> tested() {
+        return tested;
+    }
+
+    /** The cohort chart's label of the first tested finding. */
+    String label() {
+        return tested.get(0).label();
+    }
+
+    /** The notes on what the course's scenes cannot show, each with the label. */
+    List<String> untested() {
+        return behaviour.ran() ? behaviour.intersectionWith().untested() : List.of();
+    }
+
+    /** The tested findings' facts, one a line. */
+    List<String> facts() {
+        return tested.stream().map(Finding::fact).toList();
+    }
+
+    /** "behaviour: ..." lines for a failure's explanation, then the untested notes, then "reread: ..." lines. */
+    List<String> failureLines() {
+        List<String> lines = new ArrayList<>();
+        tested.forEach(f -> lines.add("behaviour: " + f.fact()));
+        untested().forEach(note -> lines.add("note: " + note));
+        sections().forEach(section -> lines.add("reread: handout " + section));
+        return lines;
+    }
+
+    /** The line for a wrong image when no method differs: what the comparison did find. */
+    String noFindingLine() {
+        return behaviour.ran() ? "behaviour: your intersectionWith and illuminate behave as ours on "
+                + SubmissionGrader.count(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(),
+                        "input")
+                : "behaviour: your intersectionWith and illuminate could not be checked: the harness logged no answer";
+    }
+
+    /**
+     * The notes of a pass: each tested finding, which tick1.xml and the hidden scene do not show,
+     * then the untested notes.
+     */
+    List<String> notes() {
+        List<String> notes = new ArrayList<>();
+        tested.forEach(f -> notes.add(f.fact() + " (tick1.xml and the hidden scene do not show this; handout "
+                + f.section() + ")"));
+        notes.addAll(untested());
+        return notes;
+    }
+
+    /** The tested findings' sections, each once, at most {@link #SECTIONS}. */
+    List<String> sections() {
+        Set<String> sections = new LinkedHashSet<>();
+        tested.forEach(f -> sections.add(f.section()));
+        return sections.stream().limit(SECTIONS).toList();
+    }
+
+    /** The tested facts in one sentence for a row. */
+    String sentence() {
+        return capitalised(String.join("; ", facts())) + ".";
+    }
+
+    static String capitalised(String text) {
+        return text.isEmpty() ? text : Character.toUpperCase(text.charAt(0)) + text.substring(1);
+    }
+}

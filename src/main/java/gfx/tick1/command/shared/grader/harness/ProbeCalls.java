@@ -1,0 +1,199 @@
+package gfx.tick1.command.shared.grader.harness;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+
+/**
+ * The fixed inputs on which the harness calls a student's {@code Sphere.intersectionWith} and
+ * {@code Renderer.illuminate}. Each call has a name; the harness reports what it returned by that
+ * name, and the grader, which holds the same inputs, decides what the answers mean. The inputs are
+ * chosen so that the answers are round numbers: the rays of the intersections have unit
+ * directions, the lights of the illuminations are at distance 1 or 2 with intensity 4 pi (so that
+ * I = 1 or 1/4), and the camera is at distance 1 or 2 from the point shaded. After them come
+ * {@link #RANDOM_COUNT} seeded random inputs for each method, in round numbers, made the same way
+ * in the harness and in the grader: what the course's scenes never vary (directions that are not
+ * unit vectors, origins away from zero, radii other than 1, coloured spheres and lights, k_d other
+ * than k_s, n other than 10, any P and N) varies there.
+ */
+public final class ProbeCalls {
+
+    private ProbeCalls() {
+    }
+
+    /** A ray (origin O, direction D) and a sphere (centre C, radius r) for intersectionWith. */
+    public record Intersection(String name, double[] origin, double[] direction, double[] centre, double radius) {
+    }
+
+    /**
+     * A scene (ambient light, one point light of a colour and intensity), a sphere (centre, radius,
+     * colour C_diff), and the point P and unit normal N to shade on it, for illuminate.
+     */
+    public record Illumination(String name, double[] ambient, double[] light, double[] lightColour,
+            double intensity, double[] centre, double radius, double[] colour, double[] point, double[] normal,
+            double kD, double kS, double n) {
+
+        /** With the course's coefficients k_d = k_s = 0.8 and n = 10. */
+        Illumination(String name, double[] ambient, double[] light, double[] lightColour, double intensity,
+                double[] centre, double radius, double[] colour, double[] point, double[] normal) {
+            this(name, ambient, light, lightColour, intensity, centre, radius, colour, point, normal, COURSE_KD,
+                    COURSE_KS, COURSE_N);
+        }
+    }
+
+    /** The Phong coefficients of every sphere of the course: a Sphere's constructor sets them. */
+    public static final double COURSE_KD = 0.8, COURSE_KS = 0.8, COURSE_N = 10;
+
+    private static final double FOUR_PI = 4 * Math.PI;
+    private static final double[] ORIGIN = {0, 0, 0}, ALONG_Z = {0, 0, 1}, WHITE = {1, 1, 1}, BLACK = {0, 0, 0};
+    /** An origin off the axes and a unit direction, so that code that assumes O = 0 shows it. */
+    private static final double[] OFF_ORIGIN = {1, -1, 0.5}, SLANT = {0.6, 0, 0.8};
+    /** On the sphere of centre (0, 0, 2) and radius 1, the point nearest the camera, facing it. */
+    private static final double[] NEAR_POINT = {0, 0, 1}, TOWARDS_CAMERA = {0, 0, -1}, NEAR_CENTRE = {0, 0, 2};
+    /** A colour with no green: green is then the specular term alone, red minus green the diffuse. */
+    private static final double[] NO_GREEN = {0.5, 0, 0.25};
+
+    /** Rays and spheres: a hit, a miss, a graze, a ray pointing away, a sphere behind, inside, on the surface. */
+    public static final List<Intersection> INTERSECTIONS = List.of(
+            // C = O + 5 D: roots s = 4 and s = 6
+            new Intersection("outside", OFF_ORIGIN, SLANT, new double[] {4, -1, 4.5}, 1),
+            // the line passes at distance 3 from the centre
+            new Intersection("miss", OFF_ORIGIN, SLANT, new double[] {4, 2, 4.5}, 1),
+            // roots s = -4 and s = -6
+            new Intersection("away", OFF_ORIGIN, new double[] {-0.6, 0, -0.8}, new double[] {4, -1, 4.5}, 1),
+            new Intersection("behind", ORIGIN, ALONG_Z, new double[] {0, 0, -5}, 1),
+            // b^2 - 4ac = 100 - 100 = 0 exactly: one root, s = 5
+            new Intersection("graze", ORIGIN, ALONG_Z, new double[] {0, 1, 5}, 1),
+            // roots s = -1.5 and s = 2.5
+            new Intersection("inside", ORIGIN, ALONG_Z, new double[] {0, 0, 0.5}, 2),
+            // roots s = 0 and s = 2
+            new Intersection("surface", ORIGIN, ALONG_Z, new double[] {0, 0, 1}, 1));
+
+    /**
+     * Shadings: the ambient term alone (intensity 0) with each channel on its own; the light along
+     * the normal at distance 1 and 2; behind the surface (N.L &lt; 0); to the side, so that R points
+     * away from the camera (R.V = -1); at an angle; and with the camera at distance 2.
+     */
+    public static final List<Illumination> ILLUMINATIONS = List.of(
+            new Illumination("ambient", new double[] {0.5, 0.75, 0.25}, new double[] {0, 0, 5}, WHITE, 0,
+                    NEAR_CENTRE, 1, new double[] {0.2, 0.4, 0.6}, NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("red", WHITE, new double[] {0, 0, 5}, WHITE, 0, NEAR_CENTRE, 1,
+                    new double[] {1, 0, 0}, NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("green", WHITE, new double[] {0, 0, 5}, WHITE, 0, NEAR_CENTRE, 1,
+                    new double[] {0, 1, 0}, NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("blue", WHITE, new double[] {0, 0, 5}, WHITE, 0, NEAR_CENTRE, 1,
+                    new double[] {0, 0, 1}, NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("near", BLACK, ORIGIN, WHITE, FOUR_PI, NEAR_CENTRE, 1, NO_GREEN, NEAR_POINT,
+                    TOWARDS_CAMERA),
+            new Illumination("far", BLACK, new double[] {0, 0, -1}, WHITE, FOUR_PI, NEAR_CENTRE, 1, NO_GREEN,
+                    NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("light-behind", BLACK, new double[] {0, 0, 3}, WHITE, FOUR_PI, NEAR_CENTRE, 1, NO_GREEN,
+                    NEAR_POINT, TOWARDS_CAMERA),
+            // P = (0.6, 0, 0.8) at distance 1 from the camera, N = (1, 0, 0), L = (0.6, 0, -0.8): R = -V
+            new Illumination("side", BLACK, new double[] {1.2, 0, 0}, WHITE, FOUR_PI, new double[] {-0.4, 0, 0.8}, 1,
+                    NO_GREEN, new double[] {0.6, 0, 0.8}, new double[] {1, 0, 0}),
+            // L = (0.6, 0, -0.8): N.L = R.V = 0.8
+            new Illumination("oblique", BLACK, new double[] {0.6, 0, 0.2}, WHITE, FOUR_PI, NEAR_CENTRE, 1, NO_GREEN,
+                    NEAR_POINT, TOWARDS_CAMERA),
+            // the camera at distance 2 from P, the light at distance 1 along the normal
+            new Illumination("camera-far", BLACK, new double[] {0, 0, 1}, WHITE, FOUR_PI, new double[] {0, 0, 3}, 1,
+                    NO_GREEN, new double[] {0, 0, 2}, TOWARDS_CAMERA));
+
+    /** The unit vectors of round components (0, 1), (0.6, 0.8) and (0.48, 0.6, 0.64), any order and signs. */
+    private static final double[][] ROUND_UNITS = {{1, 0, 0}, {0.6, 0.8, 0}, {0.48, 0.6, 0.64}};
+
+    /** How many random inputs each method is called on. */
+    public static final int RANDOM_COUNT = 1000;
+    /** The seed of the random inputs: fixed, so that every grade asks the same questions. */
+    private static final long SEED = 20261202L;
+
+    /**
+     * Random rays and spheres in round numbers: an origin and a centre of whole coordinates, a
+     * direction of whole coordinates (rarely a unit vector), a radius in halves. The origin is
+     * always outside the sphere, by a margin, and the ray never nearly grazes it (the discriminant
+     * is at least a thousandth of b^2 from 0): those cases are among the edge cases above, and the
+     * course's scenes cannot show them.
+     */
+    public static final List<Intersection> RANDOM_INTERSECTIONS = randomIntersections();
+
+    /**
+     * Random shadings in round numbers: coloured ambient and point lights, a coloured sphere, k_d
+     * and k_s in tenths, n a whole number, P of whole coordinates (never the camera's origin), N a
+     * unit vector, and a light whole steps away from P with intensity a whole multiple of 4 pi.
+     */
+    public static final List<Illumination> RANDOM_ILLUMINATIONS = randomIlluminations();
+
+    private static List<Intersection> randomIntersections() {
+        SplittableRandom random = new SplittableRandom(SEED);
+        List<Intersection> calls = new ArrayList<>();
+        while (calls.size() < RANDOM_COUNT) {
+            double[] origin = whole(random, 4), direction = whole(random, 3);
+            double t = random.nextInt(-3, 7), radius = random.nextInt(1, 7) / 2.0;
+            double[] centre = new double[3];
+            for (int i = 0; i < 3; i++) {
+                centre[i] = origin[i] + t * direction[i] + random.nextInt(-2, 3);
+            }
+            double a = dot(direction, direction);
+            double[] oc = {origin[0] - centre[0], origin[1] - centre[1], origin[2] - centre[2]};
+            double b = 2 * dot(direction, oc), c = dot(oc, oc) - radius * radius;
+            double discriminant = b * b - 4 * a * c;
+            if (a > 0 && c >= 0.25 && Math.abs(discriminant) >= 1e-3 * b * b) {
+                calls.add(new Intersection("ray" + calls.size(), origin, direction, centre, radius));
+            }
+        }
+        return List.copyOf(calls);
+    }
+
+    private static List<Illumination> randomIlluminations() {
+        SplittableRandom random = new SplittableRandom(SEED + 1);
+        List<Illumination> calls = new ArrayList<>();
+        while (calls.size() < RANDOM_COUNT) {
+            double[] point = whole(random, 4), offset = whole(random, 2);
+            double[] normal = unit(random);
+            if (dot(point, point) == 0 || dot(offset, offset) == 0) {
+                continue;
+            }
+            double[] light = {point[0] + offset[0], point[1] + offset[1], point[2] + offset[2]};
+            double[] centre = {point[0] - normal[0], point[1] - normal[1], point[2] - normal[2]};
+            calls.add(new Illumination("shade" + calls.size(), tenths(random, 0, 5), light, tenths(random, 2, 10),
+                    4 * Math.PI * random.nextInt(1, 5), centre, 1, tenths(random, 0, 10), point, normal,
+                    random.nextInt(1, 11) / 10.0, random.nextInt(1, 11) / 10.0, random.nextInt(1, 31)));
+        }
+        return List.copyOf(calls);
+    }
+
+    /** A vector of whole coordinates from -bound to bound. */
+    private static double[] whole(SplittableRandom random, int bound) {
+        return new double[] {random.nextInt(-bound, bound + 1), random.nextInt(-bound, bound + 1),
+                random.nextInt(-bound, bound + 1)};
+    }
+
+    /** A colour of tenths from from/10 to to/10 in each channel. */
+    private static double[] tenths(SplittableRandom random, int from, int to) {
+        return new double[] {random.nextInt(from, to + 1) / 10.0, random.nextInt(from, to + 1) / 10.0,
+                random.nextInt(from, to + 1) / 10.0};
+    }
+
+    /** A unit normal: half the time one of round components, else a whole vector normalised. */
+    private static double[] unit(SplittableRandom random) {
+        double[] v;
+        if (random.nextBoolean()) {
+            double[] round = ROUND_UNITS[random.nextInt(ROUND_UNITS.length)];
+            int shift = random.nextInt(3);
+            v = new double[3];
+            for (int i = 0; i < 3; i++) {
+                v[i] = round[(i + shift) % 3] * (random.nextBoolean() ? 1 : -1) + 0.0;
+            }
+            return v;
+        }
+        do {
+            v = whole(random, 3);
+        } while (dot(v, v) == 0);
+        double length = Math.sqrt(dot(v, v));
+        return new double[] {v[0] / length, v[1] / length, v[2] / length};
+    }
+
+    private static double dot(double[] u, double[] v) {
+        return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    }
+}

@@ -1,0 +1,178 @@
+package gfx.tick1.command.shared.grader.harness;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicBoolean;
+
+/**
+ * Calls the student's {@code intersectionWith} and {@code illuminate} on each of {@link ProbeCalls}
+ * and logs what each returned, one line a call, as soon as it returns: a run stopped on the time
+ * limit keeps the lines before. The lines are raw numbers; the grader, which trusts nothing this
+ * process writes, parses them and decides. A call that throws is logged as {@code threw}, one that
+ * does not return within {@link #CALL_MILLIS} as {@code timeout}, and the next call goes on. The
+ * random inputs of each method are called in one batch, with {@link #BATCH_MILLIS} for the lot: a
+ * call that does not return leaves the rest of its batch unanswered. Before the random shadings,
+ * one line says whether their k_d, k_s and n could be set through the starter Sphere's fields
+ * ({@code phong set}), or whether every sphere keeps the course's ({@code phong fixed}).
+ *
+ * <pre>
+ * NAME hit SAME DISTANCE PX PY PZ NX NY NZ   (SAME: 1 when the hit names the sphere called)
+ * NAME none                                  (an empty RaycastHit: no sphere)
+ * NAME colour R G B
+ * NAME null | threw | timeout | absent       (absent: no illuminate(Scene, Sphere, Vector3, Vector3))
+ * phong set | phong fixed
+ * </pre>
+ */
+public final class ProbeRunner {
+
+    static final String PROBES_FILE = "probes";
+    /** The most one call may take: a probe's answer is one sphere and one point. */
+    static final long CALL_MILLIS = 500;
+    /** The most one method's random inputs may take together: a correct method takes milliseconds. */
+    static final long BATCH_MILLIS = 5000;
+
+    private final StarterApi api;
+
+    ProbeRunner(StarterApi api) {
+        this.api = api;
+    }
+
+    /**
+     * Runs the probes on the compiled classes {@code student} can load, logging into {@code log};
+     * nothing when they lack the starter's API.
+     */
+    public static void probe(ClassLoader student, Path log) throws IOException {
+        StarterApi api;
+        try {
+            api = new StarterApi(student);
+        } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
+            return; // no Sphere.intersectionWith(Ray) to call: every probe fails for want of an answer
+        }
+        new ProbeRunner(api).run(log);
+    }
+
+    void run(Path log) throws IOException {
+        try (OutputStream out = Files.newOutputStream(log, StandardOpenOption.CREATE, StandardOpenOption.APPEND)) {
+            Lines lines = new Lines(out);
+            for (ProbeCalls.Intersection call : ProbeCalls.INTERSECTIONS) {
+                lines.write(call.name(), Bounded.call(() -> intersect(call), CALL_MILLIS));
+            }
+            for (ProbeCalls.Illumination call : ProbeCalls.ILLUMINATIONS) {
+                lines.write(call.name(), api.hasIlluminate() ? Bounded.call(() -> illuminate(call, false), CALL_MILLIS)
+                        : new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
+            }
+            batch(lines, ProbeCalls.RANDOM_INTERSECTIONS, call -> intersect(call));
+            boolean phong = api.hasPhongFields();
+            lines.write("phong", new Bounded.Outcome<>(Bounded.Ending.RETURNED, phong ? "set" : "fixed"));
+            if (api.hasIlluminate()) {
+                batch(lines, ProbeCalls.RANDOM_ILLUMINATIONS, call -> illuminate(call, phong));
+            } else {
+                for (ProbeCalls.Illumination call : ProbeCalls.RANDOM_ILLUMINATIONS) {
+                    lines.write(call.name(), new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
+                }
+            }
+        }
+    }
+
+    /** One call of the student's method, as the line's answer. */
+    private interface Call<T> {
+        String answer(T call) throws ReflectiveOperationException;
+    }
+
+    /**
+     * Calls {@code answer} on each of {@code calls} in one thread, with {@link #BATCH_MILLIS} for
+     * all of them; each answer is logged as it comes. Once the time is up, nothing more of the
+     * batch is logged, even if the call that did not return comes back later.
+     */
+    private static <T extends Record> void batch(Lines lines, List<T> calls, Call<T> answer) {
+        AtomicBoolean open = new AtomicBoolean(true);
+        Bounded.call(() -> {
+            for (T call : calls) {
+                String said;
+                try {
+                    said = answer.answer(call);
+                } catch (ReflectiveOperationException | RuntimeException | LinkageError | StackOverflowError e) {
+                    said = "threw";
+                }
+                synchronized (lines) {
+                    if (!open.get()) {
+                        return null;
+                    }
+                    lines.write(name(call), new Bounded.Outcome<>(Bounded.Ending.RETURNED, said));
+                }
+            }
+            return null;
+        }, BATCH_MILLIS);
+        synchronized (lines) {
+            open.set(false);
+        }
+    }
+
+    private static String name(Record call) {
+        return call instanceof ProbeCalls.Intersection i ? i.name() : ((ProbeCalls.Illumination) call).name();
+    }
+
+    private String intersect(ProbeCalls.Intersection call) throws ReflectiveOperationException {
+        Object sphere = api.sphere(call.centre(), call.radius(), new double[] {1, 1, 1});
+        Object hit = api.intersectionWith(sphere, api.ray(call.origin(), call.direction()));
+        if (hit == null) {
+            return "null";
+        }
+        Object object = api.objectHit(hit);
+        if (object == null) {
+            return "none";
+        }
+        StringBuilder line = new StringBuilder("hit ").append(object == sphere ? 1 : 0).append(' ')
+                .append(api.distance(hit));
+        for (double value : api.components(api.location(hit))) {
+            line.append(' ').append(value);
+        }
+        for (double value : api.components(api.normal(hit))) {
+            line.append(' ').append(value);
+        }
+        return line.toString();
+    }
+
+    private String illuminate(ProbeCalls.Illumination call, boolean setPhong) throws ReflectiveOperationException {
+        Object scene = api.scene(call.ambient(), call.light(), call.lightColour(), call.intensity());
+        Object sphere = api.sphere(call.centre(), call.radius(), call.colour());
+        if (setPhong) {
+            api.setPhong(sphere, call.kD(), call.kS(), call.n());
+        }
+        Object colour = api.illuminate(api.renderer(1, 1), scene, sphere, api.vector(call.point()),
+                api.vector(call.normal()));
+        if (colour == null) {
+            return "null";
+        }
+        double[] rgb = api.components(colour);
+        return "colour " + rgb[0] + " " + rgb[1] + " " + rgb[2];
+    }
+
+    /** The log, one line a call, each written whole as soon as it is known. */
+    private static final class Lines {
+        private final OutputStream out;
+
+        Lines(OutputStream out) {
+            this.out = out;
+        }
+
+        /** Writes "NAME ANSWER"; a write that fails is left out. */
+        void write(String name, Bounded.Outcome<String> outcome) {
+            String said = switch (outcome.ending()) {
+                case RETURNED -> outcome.value();
+                case THREW -> "threw";
+                case TIMED_OUT -> "timeout";
+            };
+            try {
+                out.write((name + " " + said + "\n").getBytes(StandardCharsets.UTF_8));
+            } catch (IOException e) {
+                // the student's code may have closed or filled the log: its answers are then missing
+            }
+        }
+    }
+}

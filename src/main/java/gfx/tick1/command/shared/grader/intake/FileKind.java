@@ -1,0 +1,97 @@
+package gfx.tick1.command.shared.grader.intake;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.ByteBuffer;
+
+/**
+ * What a file given as a download is, when its first bytes show plainly that it is not a zip, so
+ * that the message says what was given ("a CSV file") and what was wanted. Anything else goes to
+ * the zip reader, which says what is wrong with it.
+ */
+final class FileKind {
+
+    /** How many bytes are looked at. */
+    private static final int HEAD = 512;
+
+    private FileKind() {
+    }
+
+    /**
+     * "an empty file", "a CSV file", "a text file", "a PNG image", "a gzip file", "a RAR archive",
+     * "a 7-Zip archive", or null when the file may be a zip (or cannot be read: the zip reader says why).
+     */
+    static String unlessZip(Path file) {
+        byte[] head;
+        try (InputStream in = Files.newInputStream(file)) {
+            head = in.readNBytes(HEAD);
+        } catch (IOException e) {
+            return null;
+        }
+        if (head.length == 0) {
+            return "an empty file";
+        }
+        if (startsWith(head, 'P', 'K')) {
+            return null;
+        }
+        if (startsWith(head, 0x89, 'P', 'N', 'G')) {
+            return "a PNG image";
+        }
+        if (startsWith(head, 0x1F, 0x8B)) {
+            return "a gzip file";
+        }
+        if (startsWith(head, 'R', 'a', 'r', '!')) {
+            return "a RAR archive";
+        }
+        if (startsWith(head, '7', 'z', 0xBC, 0xAF)) {
+            return "a 7-Zip archive";
+        }
+        if (isText(head)) {
+            String text = new String(head, StandardCharsets.UTF_8);
+            String firstLine = text.lines().findFirst().orElse("");
+            return firstLine.indexOf(',') >= 0 ? "a CSV file" : "a text file";
+        }
+        return null;
+    }
+
+    private static boolean startsWith(byte[] bytes, int... prefix) {
+        if (bytes.length < prefix.length) {
+            return false;
+        }
+        for (int i = 0; i < prefix.length; i++) {
+            if ((bytes[i] & 0xFF) != prefix[i]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** UTF-8 (a character cut at the end of the head allowed) without control characters but tab, CR and LF. */
+    private static boolean isText(byte[] head) {
+        for (byte b : head) {
+            if ((b & 0xFF) < 0x20 && b != '\t' && b != '\r' && b != '\n' || b == 0x7F) {
+                return false;
+            }
+        }
+        int end = head.length;
+        // Drop a character cut short by the end of the head: up to three continuation bytes and their lead.
+        for (int back = 0; back < 3 && end > 0 && (head[end - 1] & 0xC0) == 0x80; back++) {
+            end--;
+        }
+        if (end > 0 && (head[end - 1] & 0xC0) == 0xC0) {
+            end--;
+        }
+        try {
+            StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
+                    .onUnmappableCharacter(CodingErrorAction.REPORT).decode(ByteBuffer.wrap(head, 0, end));
+            return true;
+        } catch (CharacterCodingException e) {
+            return false;
+        }
+    }
+}

@@ -1,0 +1,259 @@
+package gfx.tick1.command.shared.grader.sandbox;
+
+import gfx.tick1.command.shared.grader.harness.StudentHarness;
+import gfx.tick1.command.shared.grader.sandbox.Sandbox.Bind;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+
+/**
+ * One run of the harness's JVM in the {@link Sandbox}: the command, its limits per process and in
+ * all (a control group of its own where one can be made), the wait for its end or its time limit,
+ * the count of what it writes to its output folder, and the kill of everything it started.
+ */
+final class SandboxedProcess {
+
+    /** How much of what the student's code printed is kept, from the end. */
+    private static final int OUTPUT_TAIL_CHARS = 2000;
+    /** How often the log of a run that compiles first is read, until it says the code compiled. */
+    private static final long COMPILED_POLL_MILLIS = 10;
+    /** How often the output folder is counted. */
+    private static final long COUNT_EVERY_MILLIS = 100;
+    /** Address space beyond the heap: the JVM's code, class metadata, thread stacks, libraries. */
+    private static final int NON_HEAP_MEGABYTES = 1024;
+    /** Memory for all of a run's processes together beyond the heap: the JVM's own, tmpfs, shared memory. */
+    static final int TOTAL_BEYOND_HEAP_MEGABYTES = 512;
+
+    /**
+     * What to run: the harness's arguments, the folders bound in, the time limit (until the
+     * harness logs "compiled" in {@code progress} when that is given, and {@code thenLimit} from
+     * then on), the heap, whether it runs the student's code (on one core) and the JVM's options.
+     */
+    record Request(List<String> harnessArguments, List<Bind> binds, Duration timeLimit, Path progress,
+            Duration thenLimit, int heapMegabytes, boolean studentCode, List<String> javaOptions, Path output) {
+    }
+
+    /**
+     * How a run ended, and the end of what it printed (printable characters only); for a run that
+     * compiles first, whether it was seen to finish compiling and how long that took; and the
+     * total it reached, in words for the student, or null.
+     */
+    record Run(boolean finished, int exitStatus, String outputTail, boolean compiledSeen, long compileNanos,
+            String limitReached) {
+    }
+
+    private final Sandbox sandbox;
+    private volatile Process running;
+    private volatile boolean stopped;
+
+    SandboxedProcess(Sandbox sandbox) {
+        this.sandbox = sandbox;
+    }
+
+    /** Kills the run that is going, if one is, and every later one before it starts. */
+    void stop() {
+        stopped = true;
+        Process process = running;
+        if (process != null) {
+            kill(process);
+        }
+    }
+
+    /** Runs {@code command} (the JVM and its arguments, as outside the sandbox) as {@code request} says. */
+    Run run(List<String> command, Request request) throws IOException, InterruptedException {
+        if (stopped) {
+            throw new InterruptedException("the grade was stopped");
+        }
+        int cpuSeconds = (int) Math.ceil(request.timeLimit().plus(request.thenLimit()).toMillis() / 1000.0) + 1;
+        try (Started started = start(sandbox, command, request.binds(), cpuSeconds, request.heapMegabytes(),
+                request.studentCode())) {
+            Process process = started.process();
+            running = process;
+            try {
+                if (stopped) {
+                    // stop() came between the start and the line above: it must still end this run.
+                    throw new InterruptedException("the grade was stopped");
+                }
+                process.getOutputStream().close();
+                OutputTail tail = new OutputTail(process.getInputStream());
+                tail.start();
+                Waited waited = await(process, request);
+                if (!waited.finished()) {
+                    kill(process);
+                }
+                tail.join(1000);
+                kill(process);
+                String reached = started.limitReached();
+                // Counted once more now that nothing of the run's can write: what it wrote after the last
+                // count, or in the moments before it ended, counts as much as what it wrote before.
+                String over = waited.overOutputCap() != null ? waited.overOutputCap()
+                        : OutputCount.overCap(request.output());
+                return new Run(waited.finished() && over == null, process.exitValue(),
+                        ChildOutput.printable(tail.text()), waited.compiledAt() >= 0, waited.compileNanos(),
+                        over != null ? over : reached);
+            } finally {
+                running = null;
+            }
+        }
+    }
+
+    /**
+     * A process started in the sandbox and not yet waited for, with its control group (or null);
+     * closing it kills the process and everything it started, then removes the group.
+     */
+    record Started(Process process, Cgroup cgroup) implements AutoCloseable {
+
+        /** The total the run reached, in words for the student, or null. */
+        String limitReached() {
+            return cgroup == null ? null : cgroup.limitReached();
+        }
+
+        @Override
+        public void close() {
+            kill(process);
+            if (cgroup != null) {
+                cgroup.close();
+            }
+        }
+    }
+
+    /**
+     * Starts {@code command} in {@code sandbox} with {@code binds}, at most {@code cpuSeconds} of
+     * processor time, a heap of {@code heapMegabytes} and the address space and totals that go
+     * with it; on one core when {@code oneCore}. Its standard streams are the caller's to use.
+     */
+    static Started start(Sandbox sandbox, List<String> command, List<Bind> binds, int cpuSeconds, int heapMegabytes,
+            boolean oneCore) throws IOException {
+        Cgroup cgroup = sandbox.cgroupFor(new Cgroup.Totals(
+                (long) (heapMegabytes + TOTAL_BEYOND_HEAP_MEGABYTES) << 20, Sandbox.PROCESSES_LIMIT, oneCore));
+        try {
+            Process process = Sandbox.processFor(sandbox.wrap(command, binds, cpuSeconds,
+                    heapMegabytes + NON_HEAP_MEGABYTES, oneCore, cgroup)).redirectErrorStream(true).start();
+            return new Started(process, cgroup);
+        } catch (IOException | RuntimeException e) {
+            if (cgroup != null) {
+                cgroup.close();
+            }
+            throw e;
+        }
+    }
+
+    /** How the wait ended: whether the process did, when "compiled" was seen (or -1), what it wrote too much of. */
+    private record Waited(boolean finished, long compiledAt, long compileNanos, String overOutputCap) {
+    }
+
+    /**
+     * Waits until the process ends or its time is up, reading the log of a run that compiles
+     * first until it says "compiled" (polled: the harness cannot signal otherwise without a
+     * channel the student's code could use later), and counting the output folder.
+     */
+    private static Waited await(Process process, Request request) throws IOException, InterruptedException {
+        long start = System.nanoTime();
+        long deadline = start + request.timeLimit().toNanos();
+        long compiledAt = -1, counted = start;
+        while (true) {
+            boolean polling = request.progress() != null && compiledAt < 0;
+            boolean ended = process.waitFor(polling ? COMPILED_POLL_MILLIS : COUNT_EVERY_MILLIS, TimeUnit.MILLISECONDS);
+            long now = System.nanoTime();
+            if (polling) {
+                String logged = ChildOutput.readText(request.progress());
+                if (logged != null && logged.lines().anyMatch(StudentHarness.COMPILED::equals)) {
+                    compiledAt = now;
+                    deadline = now + request.thenLimit().toNanos();
+                }
+            }
+            long compileNanos = (compiledAt >= 0 ? compiledAt : now) - start;
+            if (ended) {
+                return new Waited(true, compiledAt, compileNanos, null);
+            }
+            if (now - counted >= TimeUnit.MILLISECONDS.toNanos(COUNT_EVERY_MILLIS)) {
+                counted = now;
+                String over = OutputCount.overCap(request.output());
+                if (over != null) {
+                    return new Waited(false, compiledAt, compileNanos, over);
+                }
+            }
+            if (now - deadline >= 0) {
+                return new Waited(false, compiledAt, compileNanos, null);
+            }
+        }
+    }
+
+    /**
+     * Kills the process and everything it started, and returns when they are gone, so that no
+     * process of the student's can change its output folder while it is read. (In the sandbox the
+     * first of them is the PID namespace's init, which ends only after every other process in it.)
+     */
+    static void kill(Process process) {
+        List<ProcessHandle> started = process.descendants().toList();
+        started.forEach(ProcessHandle::destroyForcibly);
+        process.destroyForcibly();
+        try {
+            process.waitFor();
+            for (ProcessHandle handle : started) {
+                handle.onExit().get(10, TimeUnit.SECONDS);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (ExecutionException | TimeoutException e) {
+            // A process that will not die within seconds of SIGKILL: nothing more to do.
+        }
+    }
+
+    /** The harness's command line for a run outside the sandbox: the folders keep their own names. */
+    static List<String> unconfinedArguments(List<String> harnessArguments, List<Bind> binds) {
+        List<String> real = new ArrayList<>();
+        for (String argument : harnessArguments) {
+            String named = argument;
+            for (Bind bind : binds) {
+                if (argument.equals(bind.inside()) || argument.startsWith(bind.inside() + "/")) {
+                    named = bind.outside() + argument.substring(bind.inside().length());
+                }
+            }
+            real.add(named);
+        }
+        return real;
+    }
+
+    /** Reads the child's output as it comes, keeping only the end, so no output can fill memory. */
+    private static final class OutputTail extends Thread {
+        private final InputStream in;
+        private final StringBuilder text = new StringBuilder();
+
+        OutputTail(InputStream in) {
+            this.in = in;
+            setDaemon(true);
+        }
+
+        @Override
+        public void run() {
+            byte[] buffer = new byte[8192];
+            try {
+                for (int n; (n = in.read(buffer)) > 0; ) {
+                    synchronized (text) {
+                        text.append(new String(buffer, 0, n, StandardCharsets.UTF_8));
+                        if (text.length() > 2 * OUTPUT_TAIL_CHARS) {
+                            text.delete(0, text.length() - OUTPUT_TAIL_CHARS);
+                        }
+                    }
+                }
+            } catch (IOException e) {
+                // The child was killed: what was read is all there is.
+            }
+        }
+
+        String text() {
+            synchronized (text) {
+                return text.length() > OUTPUT_TAIL_CHARS ? text.substring(text.length() - OUTPUT_TAIL_CHARS)
+                        : text.toString();
+            }
+        }
+    }
+}

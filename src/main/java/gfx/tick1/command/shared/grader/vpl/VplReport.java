@@ -1,0 +1,111 @@
+package gfx.tick1.command.shared.grader.vpl;
+
+import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
+import gfx.tick1.command.shared.grader.model.StudentResult;
+import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * One grade in the format of VPL's evaluation (Moodle's Virtual Programming Lab, moodle-mod_vpl 4.4): one
+ * comment block of titled sections, then the proposed grade as the last line. Made from the result every
+ * other report of tick1 grade is made from, so it says what they say.
+ *
+ * <p>Every title is tick1's own words; every line below a title starts with {@code >} (see {@link VplText}),
+ * so that nothing a student's code or file says can end the block, start a title or give a grade.
+ */
+public final class VplReport {
+
+    /** The most compile errors shown: the first ones matter, and the report stays short. */
+    static final int MOST_ERRORS = 5;
+    /** The most lines of one section's text. */
+    static final int MOST_LINES = 16;
+
+    static final String BEGIN = "<|--", END = "--|>", GRADE = "Grade :=>>";
+    static final String PASSED = "Tick 1: passed", FAILED = "Tick 1: failed";
+    /** The title of a report that proposes no grade. */
+    public static final String NOT_SET_UP = "Tick 1: the tester is not set up";
+
+    private VplReport() {
+    }
+
+    /**
+     * The report of {@code result}: the verdict and its reason, each failing scene's explanation (the
+     * figures, the diagnosis, what to reread; of a hidden scene, only its {@link HiddenVerdict}'s words), or
+     * the compile errors; then the grade of {@code range}.
+     *
+     * @param compileErrors the compiler's errors when the code did not compile, each
+     *                      {@code Sphere.java:L:C: error: ...} and the lines it quotes; else empty
+     */
+    public static String of(StudentResult result, List<String> compileErrors, GradeRange range) {
+        List<String> lines = new ArrayList<>();
+        lines.add(BEGIN);
+        boolean hiddenOnly = failedOnlyOnHiddenScenes(result.scenes());
+        lines.add(VplText.title(result.passed() ? PASSED : hiddenOnly ? FAILED : FAILED + ": " + result.diagnosis()));
+        if (!compileErrors.isEmpty()) {
+            lines.addAll(VplText.quoted(result.reason().substring(0, reasonHead(result.reason())), MOST_LINES));
+            compileErrors.stream().limit(MOST_ERRORS).forEach(error -> lines.addAll(VplText.quoted(error,
+                    MOST_LINES)));
+            if (compileErrors.size() > MOST_ERRORS) {
+                lines.add(">[" + (compileErrors.size() - MOST_ERRORS) + " more errors not shown]");
+            }
+        } else {
+            lines.addAll(VplText.quoted(anyHiddenSceneFailed(result.scenes()) ? scenesWrong(result.scenes())
+                    : result.reason(), MOST_LINES));
+            lines.addAll(scenes(result.scenes()));
+        }
+        lines.add(END);
+        lines.add(GRADE + range.grade(result.passed()));
+        return String.join("\n", lines) + "\n";
+    }
+
+    /** How much of a compile failure's reason is its heading: up to its colon, before the first error. */
+    private static int reasonHead(String reason) {
+        int colon = reason.indexOf("):");
+        return colon < 0 ? reason.length() : colon + 2;
+    }
+
+    /** A section for each scene that failed: "tick1.xml: failed" or "hidden scene 2: failed", and why. */
+    private static List<String> scenes(List<SceneResult> scenes) {
+        List<String> lines = new ArrayList<>();
+        int hidden = 0;
+        for (SceneResult scene : scenes) {
+            String name = scene.hidden() ? "hidden scene " + ++hidden : scene.name();
+            if (scene.passed() || scene.explanation().isEmpty()) {
+                continue;
+            }
+            lines.add(VplText.title(name + ": failed"));
+            lines.addAll(VplText.quoted(scene.hidden() ? HiddenVerdict.statedBy(scene.explanation()).words()
+                    : String.join("\n", scene.explanation()), MOST_LINES));
+        }
+        return lines;
+    }
+
+    private static boolean anyHiddenSceneFailed(List<SceneResult> scenes) {
+        return scenes.stream().anyMatch(scene -> scene.hidden() && !scene.passed());
+    }
+
+    /** The diagnosis then came from a hidden scene, and says what its image is. */
+    private static boolean failedOnlyOnHiddenScenes(List<SceneResult> scenes) {
+        return anyHiddenSceneFailed(scenes) && scenes.stream().allMatch(scene -> scene.hidden() || scene.passed());
+    }
+
+    /**
+     * The verdict's line where a hidden scene failed: the grade's own reason speaks of every scene, and of a
+     * hidden one it may name a mistake its image shows or the exception the code threw.
+     */
+    private static String scenesWrong(List<SceneResult> scenes) {
+        long wrong = scenes.stream().filter(scene -> !scene.passed()).count();
+        return "FAILED: " + wrong + " of " + scenes.size() + " scene" + (scenes.size() == 1 ? "" : "s") + " wrong.";
+    }
+
+    /**
+     * The report where tick1 could not grade (no sandbox can be made, the scenes or the files cannot be
+     * read): one comment that says so, and no grade line, so that VPL proposes no grade.
+     */
+    public static String notSetUp() {
+        return String.join("\n", BEGIN, VplText.title(NOT_SET_UP),
+                ">Your code was not run, so no grade is proposed. Please tell the course's staff: they must look at",
+                ">this submission, and at what this evaluation's Compilation section says.", END) + "\n";
+    }
+}

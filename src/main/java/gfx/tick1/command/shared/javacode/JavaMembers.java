@@ -1,0 +1,182 @@
+package gfx.tick1.command.shared.javacode;
+
+import com.github.javaparser.JavaParser;
+import com.github.javaparser.ParseResult;
+import com.github.javaparser.ParserConfiguration;
+import com.github.javaparser.Problem;
+import com.github.javaparser.ast.CompilationUnit;
+import com.github.javaparser.ast.Node;
+import com.github.javaparser.ast.body.BodyDeclaration;
+import com.github.javaparser.ast.body.CallableDeclaration;
+import com.github.javaparser.ast.body.FieldDeclaration;
+import com.github.javaparser.ast.body.TypeDeclaration;
+import com.github.javaparser.ast.body.VariableDeclarator;
+import com.github.javaparser.ast.expr.ArrayAccessExpr;
+import com.github.javaparser.ast.expr.EnclosedExpr;
+import com.github.javaparser.ast.expr.Expression;
+import com.github.javaparser.ast.expr.FieldAccessExpr;
+import com.github.javaparser.ast.expr.LiteralExpr;
+import com.github.javaparser.ast.expr.MethodCallExpr;
+import com.github.javaparser.ast.expr.NameExpr;
+import com.github.javaparser.ast.expr.ObjectCreationExpr;
+import com.github.javaparser.ast.expr.ThisExpr;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
+import java.util.function.Predicate;
+import java.util.stream.Collectors;
+
+/**
+ * One Java file as {@code tick1 diff} compares it: the name of its class and its members, each
+ * printed in one standard layout, keyed by signature. Comments, formatting, the package and
+ * imports are set aside, and so are parentheses that change nothing ({@code (O.subtract(C)).dot}
+ * is {@code O.subtract(C).dot}) and a {@code this.} before a method call.
+ *
+ * @param className the name of the file's first class
+ * @param members   member signature ("intersectionWith(Ray)", "field radius") to its printed text, in
+ *                  the file's order
+ */
+public record JavaMembers(String className, Map<String, Member> members) {
+
+    /**
+     * One member: its text in the standard layout (with its independent declarations in
+     * canonical order), its canonical text ({@link SameMeaning}: equal exactly when two members
+     * mean the same), and whether the source marks it as still to be written with a TODO comment.
+     */
+    public record Member(String text, String key, boolean todo) {
+
+        /** The text's lines and the key's, line for line (one statement a line in both). */
+        public List<String> lines() {
+            return text.lines().toList();
+        }
+
+        public List<String> keyLines() {
+            List<String> keys = key.lines().toList();
+            return keys.size() == lines().size() ? keys : lines();
+        }
+    }
+
+    /** A file that is not Java the parser accepts: where, and what the parser said. */
+    public static final class ParseException extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        ParseException(String message) {
+            super(message);
+        }
+    }
+
+    /** Parses {@code source}; {@code name} is the file's name for messages ("Sphere.java:12:5: ..."). */
+    public static JavaMembers parse(String name, String source) throws ParseException {
+        return parse(name, source, className -> null);
+    }
+
+    /**
+     * Parses {@code source} as {@link #parse(String, String)} does, putting independent
+     * declarations that {@code like} (ours; null for none) has in the order they have there.
+     */
+    public static JavaMembers parse(String name, String source, JavaMembers like) throws ParseException {
+        return parse(name, source, className -> like);
+    }
+
+    /**
+     * As {@link #parse(String, String, JavaMembers)}, keeping only the members whose signature
+     * {@code wanted} accepts (the others are neither ordered nor printed, which is most of the cost).
+     */
+    public static JavaMembers parse(String name, String source, JavaMembers like, Predicate<String> wanted)
+            throws ParseException {
+        return parse(name, source, className -> like, wanted);
+    }
+
+    /** As {@link #parse(String, String, JavaMembers)}, with the members to be like found by the class's name. */
+    public static JavaMembers parse(String name, String source, Function<String, JavaMembers> likeOf)
+            throws ParseException {
+        return parse(name, source, likeOf, signature -> true);
+    }
+
+    private static JavaMembers parse(String name, String source, Function<String, JavaMembers> likeOf,
+            Predicate<String> wanted) throws ParseException {
+        JavaParser parser = new JavaParser(new ParserConfiguration()
+                .setLanguageLevel(ParserConfiguration.LanguageLevel.JAVA_17));
+        ParseResult<CompilationUnit> result = parser.parse(source);
+        if (!result.isSuccessful() || result.getResult().isEmpty()) {
+            Problem problem = result.getProblems().get(0);
+            String where = problem.getLocation().flatMap(range -> range.getBegin().getRange())
+                    .map(range -> ":" + range.begin.line + ":" + range.begin.column).orElse("");
+            throw new ParseException(name + where + ": " + firstLine(problem.getMessage()));
+        }
+        CompilationUnit unit = result.getResult().get();
+        if (unit.getTypes().isEmpty()) {
+            throw new ParseException(name + ": no class in the file");
+        }
+        TypeDeclaration<?> type = unit.getType(0);
+        dropParenthesesThatChangeNothing(type);
+        dropThisBeforeMethodCalls(type);
+        SameMeaning meaning = new SameMeaning(type);
+        JavaMembers like = likeOf.apply(type.getNameAsString());
+        Map<String, Member> members = new LinkedHashMap<>();
+        for (BodyDeclaration<?> member : type.getMembers()) {
+            String signature = signature(member);
+            if (!wanted.test(signature)) {
+                continue;
+            }
+            boolean todo = member.getAllContainedComments().stream()
+                    .anyMatch(comment -> comment.getContent().contains("TODO"));
+            Member ours = like == null ? null : like.members().get(signature);
+            List<String> preferred = ours == null ? List.of() : ours.key().lines().map(String::strip).toList();
+            meaning.order(member, preferred);
+            members.put(signature, new Member(SameMeaning.print(member), meaning.key(member, preferred), todo));
+        }
+        return new JavaMembers(type.getNameAsString(), members);
+    }
+
+    /** "trace(Scene, Ray)", "Renderer(int, int)", "field width, height". */
+    static String signature(BodyDeclaration<?> member) {
+        if (member instanceof CallableDeclaration<?> callable) {
+            return callable.getNameAsString() + "(" + callable.getParameters().stream()
+                    .map(parameter -> parameter.getType().asString() + (parameter.isVarArgs() ? "..." : ""))
+                    .collect(Collectors.joining(", ")) + ")";
+        }
+        if (member instanceof FieldDeclaration field) {
+            return "field " + field.getVariables().stream().map(VariableDeclarator::getNameAsString)
+                    .collect(Collectors.joining(", "));
+        }
+        if (member instanceof TypeDeclaration<?> nested) {
+            return "class " + nested.getNameAsString();
+        }
+        return member.getClass().getSimpleName() + " at line " + member.getBegin().map(p -> p.line).orElse(0);
+    }
+
+    /** (x) where x is a name, a call, a field, a literal or a new object, or a whole initialiser or statement. */
+    private static void dropParenthesesThatChangeNothing(Node root) {
+        List<EnclosedExpr> enclosed = root.findAll(EnclosedExpr.class);
+        for (EnclosedExpr parentheses : enclosed) {
+            Expression inner = parentheses.getInner();
+            boolean primary = inner instanceof NameExpr || inner instanceof MethodCallExpr
+                    || inner instanceof FieldAccessExpr || inner instanceof LiteralExpr
+                    || inner instanceof ObjectCreationExpr || inner instanceof ArrayAccessExpr
+                    || inner instanceof ThisExpr || inner instanceof EnclosedExpr;
+            boolean whole = parentheses.getParentNode().map(parent -> !(parent instanceof Expression)
+                    || parent instanceof MethodCallExpr call && call.getArguments().contains(parentheses))
+                    .orElse(false);
+            if (primary || whole) {
+                parentheses.replace(inner);
+            }
+        }
+    }
+
+    private static void dropThisBeforeMethodCalls(Node root) {
+        for (MethodCallExpr call : root.findAll(MethodCallExpr.class)) {
+            if (call.getScope()
+                    .filter(scope -> scope instanceof ThisExpr plainThis && plainThis.getTypeName().isEmpty())
+                    .isPresent()) {
+                call.removeScope();
+            }
+        }
+    }
+
+    private static String firstLine(String message) {
+        int end = message.indexOf('\n');
+        return (end < 0 ? message : message.substring(0, end)).strip();
+    }
+}

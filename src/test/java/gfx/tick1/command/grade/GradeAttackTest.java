@@ -1,0 +1,578 @@
+package gfx.tick1.command.grade;
+
+import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
+import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
+import gfx.tick1.command.shared.grader.sandbox.Sandbox;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assumptions.assumeThat;
+
+import gfx.tick1.Tick1;
+import gfx.tick1.command.shared.kit.StarterKit;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * The hostile submissions of {@code src/test/resources/students/attacks}, each graded through the
+ * real {@code tick1 grade}, in a JVM of its own with a small heap (so that a grader that needs
+ * more memory than that fails with exit status 4). Every attack must fail with a reason that says
+ * what happened, and leave the secret nowhere, every file outside the work folder as it was, no
+ * process behind, and the next student's grade as it would have been.
+ */
+class GradeAttackTest {
+
+    private static final Path SECRET = Path.of("/tmp/tick1-attack-secret.txt");
+    private static final Path VICTIM = Path.of("/tmp/tick1-attack-victim.txt");
+    private static final int LISTENER_PORT = 47811;
+    private static final String VICTIM_TEXT = "the launcher: do not change\n";
+    /** The grader's heap in these tests: far less than decoding a 40000 x 40000 image would take. */
+    private static final String GRADER_HEAP = "-Xmx160m";
+
+    private static final String[] SMALL = {"--width", "160", "--height", "120"};
+
+    @TempDir
+    Path dir;
+
+    private String secret;
+    private ServerSocket listener;
+    /** The graders' temporary folder, where their work folders go: the test's own, as other grades may run. */
+    private Path temporary;
+
+    @BeforeAll
+    static void theSandboxCanRunHere() throws InterruptedException {
+        try {
+            Sandbox.confined();
+        } catch (Sandbox.Unavailable e) {
+            assumeThat(e.getMessage()).as("bubblewrap is needed for the attack tests").isNull();
+        }
+    }
+
+    @BeforeEach
+    void plantTheSecretTheVictimAndTheListener() throws IOException {
+        secret = "tick1-secret-" + Long.toHexString(Double.doubleToLongBits(Math.random()));
+        Files.writeString(SECRET, secret);
+        Files.writeString(VICTIM, VICTIM_TEXT);
+        listener = new ServerSocket(LISTENER_PORT, 5, InetAddress.getLoopbackAddress());
+        listener.setSoTimeout(200);
+        // The sandbox's user must be able to reach the work folder in it.
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx--x--x")));
+    }
+
+    @AfterEach
+    void removeThem() throws IOException {
+        listener.close();
+        Files.deleteIfExists(SECRET);
+        Files.deleteIfExists(VICTIM);
+        try (Stream<Path> leaks = Files.list(Path.of("/tmp"))) {
+            for (Path leak : leaks.filter(f -> f.getFileName().toString().startsWith("tick1-attack-leak")).toList()) {
+                Files.delete(leak);
+            }
+        }
+        Files.deleteIfExists(Path.of("/usr/tick1-attack-leak.txt"));
+    }
+
+    /** One grade in a JVM of its own: what it printed, its exit status, and whether it ended. */
+    private record Grade(int status, String output, boolean ended) {
+    }
+
+    private Grade grade(String attack, String... options) throws IOException, InterruptedException {
+        Path student = Files.createDirectories(dir.resolve(attack));
+        Path sphere = student.resolve("Sphere.java"), renderer = student.resolve("Renderer.java");
+        String folder = "/students/attacks/" + attack + "/";
+        String first = resourceOr(folder + RENDER_FIRST, "");
+        if (!first.isEmpty()) {
+            // The correct solution, whose render first does what the attack does.
+            StudentSolution attacking = StudentSolution.correct().editRenderer(RENDER, RENDER + first);
+            Files.writeString(sphere, attacking.sphere());
+            Files.writeString(renderer, attacking.renderer());
+            return gradeFiles(sphere, renderer, options);
+        }
+        Files.writeString(sphere, resourceOr(folder + "Sphere.java", StarterKit.source("Sphere")));
+        Files.writeString(renderer, resourceOr(folder + "Renderer.java", null));
+        return gradeFiles(sphere, renderer, options);
+    }
+
+    /** An attack's file of the lines the correct solution's render runs first, in place of its own files. */
+    private static final String RENDER_FIRST = "render-first.java.txt";
+    /** The line of the correct solution's Renderer.java that those lines follow. */
+    private static final String RENDER = "    public BufferedImage render(Scene scene) {\n";
+
+    private Grade gradeFiles(Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
+        return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary, sphere, renderer, options);
+    }
+
+    /** A grade started by {@code launcher} (setpriv: as another user), with this class path and temporary folder. */
+    private Grade gradeFilesAs(List<String> launcher, String classPath, Path temporaryFolder, Path sphere,
+            Path renderer, String... options) throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>(launcher);
+        command.addAll(List.of(
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporaryFolder,
+                "-cp", classPath,
+                Tick1.class.getName(), "grade", "--sphere", sphere.toString(), "--renderer", renderer.toString()));
+        if (!List.of(options).contains("--report")) {
+            command.addAll(List.of("--report", dir.resolve("report").toString()));
+        }
+        command.addAll(List.of(SMALL));
+        if (!List.of(options).contains("--time-limit")) {
+            command.addAll(List.of("--time-limit", "10"));
+        }
+        command.addAll(List.of(options));
+        ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
+        // A secret in the grader's own environment, as an API token might be.
+        builder.environment().put("TICK1_ATTACK_TOKEN", secret);
+        Process process = builder.start();
+        process.getOutputStream().close();
+        ByteArrayOutputStream output = new ByteArrayOutputStream();
+        Thread reader = new Thread(() -> {
+            try (InputStream in = process.getInputStream()) {
+                in.transferTo(output);
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+        });
+        reader.start();
+        // Not a timing check: a bound on how long to wait for a grade that may hang.
+        boolean ended = process.waitFor(120, TimeUnit.SECONDS);
+        if (!ended) {
+            process.destroyForcibly().waitFor();
+        }
+        reader.join();
+        return new Grade(ended ? process.exitValue() : -1, output.toString(StandardCharsets.UTF_8), ended);
+    }
+
+    /** The checks every attack must pass, whatever it tried. */
+    private void assertFailedAndHarmedNothing(Grade grade) throws IOException, InterruptedException {
+        assertThat(grade.ended()).as("the grade ended:\n" + grade.output()).isTrue();
+        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(grade.output()).as("the verdict").contains("FAILED")
+                .doesNotContain("\n" + SubmissionGrader.CONGRATULATIONS);
+        assertThat(grade.output()).as("the secret in the grader's output").doesNotContain(secret);
+        assertThat(Files.readString(VICTIM)).as("a file outside the work folder").isEqualTo(VICTIM_TEXT);
+        assertThat(leaks()).as("files the attack left behind").isEmpty();
+        assertThat(listenerHeard()).as("what reached the loopback listener").isEmpty();
+        assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
+        assertThat(processesOf("tick1-attack")).as("processes of the student's left running").isEmpty();
+    }
+
+    @Test
+    void codeThatCopiesTheReferenceRendererFindsNoneToCopy() throws Exception {
+        Grade grade = grade("copy-the-reference");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the code threw",
+                "ClassNotFoundException: gfx.tick1.engine.scene.SceneLoader");
+    }
+
+    /**
+     * The built-in scenes are public, so their reference images can be made by anyone and carried in
+     * the code: an untouched Sphere (no ray ever hits) and a Renderer whose render returns the
+     * reference image of the scene, chosen by the light's x. The images match; traced through the
+     * student's own intersectionWith and illuminate, the sampled pixels do not.
+     */
+    @Test
+    void imagesCarriedInTheCodeInsteadOfTracedFailAsNotComingFromIt() throws Exception {
+        StringBuilder images = new StringBuilder();
+        for (String name : gfx.tick1.engine.scene.BundledScenes.GRADING) {
+            java.io.ByteArrayOutputStream png = new java.io.ByteArrayOutputStream();
+            gfx.tick1.engine.image.PngOutput.write(new gfx.tick1.engine.render.ReferenceRenderer(160, 120)
+                    .render(gfx.tick1.engine.scene.BundledScenes.load(name)), png);
+            images.append("    private static final String ").append(name.equals("tick1.xml") ? "TICK1" : "HIDDEN")
+                    .append(" = \"").append(java.util.Base64.getEncoder().encodeToString(png.toByteArray()))
+                    .append("\";\n");
+        }
+        String renderer = StarterKit.source("Renderer")
+                .replace("public class Renderer {\n", "public class Renderer {\n" + images)
+                .replace("    public BufferedImage render(Scene scene) {\n", """
+                    public BufferedImage render(Scene scene) {
+                        String png = scene.getPointLight().getPosition().x > 0 ? TICK1 : HIDDEN;
+                        try {
+                            return javax.imageio.ImageIO.read(new java.io.ByteArrayInputStream(
+                                    java.util.Base64.getDecoder().decode(png)));
+                        } catch (java.io.IOException e) {
+                            throw new java.io.UncheckedIOException(e);
+                        }
+                    }
+
+                    public BufferedImage unused(Scene scene) {
+                """);
+        Path student = Files.createDirectories(dir.resolve("embedded-images"));
+        Path sphereFile = Files.writeString(student.resolve("Sphere.java"), StarterKit.source("Sphere"));
+        Path rendererFile = Files.writeString(student.resolve("Renderer.java"), renderer);
+        Grade grade = gradeFiles(sphereFile, rendererFile);
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("the copied tick1.xml").contains("tick1.xml: FAIL: "
+                + SubmissionGrader.NOT_FROM_THE_CODE + ": traced through your own intersectionWith and illuminate");
+        assertThat(grade.output()).as("the copied hidden scene, in fixed words")
+                .contains(": FAIL: " + SubmissionGrader.NOT_FROM_THE_CODE + " (checked on sampled pixels)");
+    }
+
+    @Test
+    void codeThatStealsSecretsFindsNoneAndCannotSendThem() throws Exception {
+        Grade grade = grade("steal-secrets");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("/tmp/tick1-attack-secret.txt: NoSuchFileException",
+                "ConnectException", "/proc/1/environ: ").doesNotContain("HOME=", "USER=", "TICK1_ATTACK_TOKEN");
+    }
+
+    @Test
+    void codeThatDeletesAndChangesFilesOutsideItsFolderCannot() throws Exception {
+        Grade grade = grade("damage-files");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("Read-only file system").doesNotContain("changed the victim",
+                "deleted the victim", "wrote into");
+    }
+
+    @Test
+    void processesTheCodeStartsDoNotOutliveTheGradeNorTouchTheNextOne() throws Exception {
+        Grade attack = grade("outlive-the-grade");
+        assertFailedAndHarmedNothing(attack);
+        Path student = Files.createDirectories(dir.resolve("next-student"));
+        Path[] files = StudentSolution.correct().writeTo(student);
+        Grade next = gradeFiles(files[0], files[1]);
+        assertThat(next.status()).as(next.output()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(processesOf("tick1-attack")).isEmpty();
+    }
+
+    @Test
+    void linksPlantedWhereTheGraderReadsAreNotFollowed() throws Exception {
+        Grade grade = grade("link-to-a-secret");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: 19200 of 19200 pixels differ");
+    }
+
+    @Test
+    void aFifoWhereTheGraderReadsCannotHangIt() throws Exception {
+        Grade grade = grade("fifo-progress", "--time-limit", "4");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: no image within the time limit of 4 s");
+    }
+
+    @Test
+    void aGiantPngIsRefusedFromItsHeaderWithoutDecodingIt() throws Exception {
+        Grade grade = grade("giant-png");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the image written for this scene is unusable: "
+                + "the image is 40000 x 40000, expected 160 x 120");
+    }
+
+    @Test
+    void aSourceThatBlowsUpTheCompilerFailsInsideTheMemoryLimit() throws Exception {
+        Grade grade = grade("compiler-bomb", "--memory", "64");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("FAILED: the code could not be compiled: the compiler ran out of memory");
+    }
+
+    @Test
+    void controlCharactersCannotRewriteTheVerdict() throws Exception {
+        Grade grade = grade("spoof-the-verdict");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("control characters in the report")
+                .doesNotContain("\r", "\033", "\007", "\u202E", "\u200B");
+        assertThat(grade.output().lines().reduce((first, last) -> last)).hasValueSatisfying(
+                last -> assertThat(last).startsWith("FAILED: 2 of 2 scenes wrong."));
+    }
+
+    @Test
+    void aTreeDeeperThanAPathMayBeLongStopsTheRunIsDeletedAndNoNameOfItIsPrinted() throws Exception {
+        Grade grade = grade("deep-tree");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: its output folder holds "
+                + "something the grader cannot count (a folder made unreadable, or deeper than a path may be long)")
+                .doesNotContain("\u001b", "cannot delete");
+    }
+
+    @Test
+    void diskSpaceReservedBeyondAFilesSizeIsRefused() throws Exception {
+        Grade grade = grade("reserve-the-disk");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("fallocate --keep-size in the sandbox")
+                .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: reserved 0 GiB, then: "
+                        + "fallocate: fallocate failed");
+    }
+
+    /** Sparse files (counted by their size) and many small files, below where a walk of 64 levels looked. */
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+        "deep-sparse-files | it wrote more than 256 MiB to its output folder",
+        "deep-many-files   | it made more than 10000 files and folders in its output folder"})
+    void whatTheCodeWritesAnyDepthDownItsOutputFolderIsCounted(String attack, String limit) throws Exception {
+        Grade grade = grade(attack, "--time-limit", "60");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: " + limit);
+    }
+
+    @Test
+    void threadsCoresAndNativeMemoryAreLimited() throws Exception {
+        Grade grade = grade("exceed-limits", "--memory", "64");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("stopped at").contains("threads, on 1 cores")
+                .doesNotContain("allocated 2200 MiB");
+    }
+
+    @Test
+    void theHiddenScenesContentNeverReachesTheReport() throws Exception {
+        Grade grade = grade("quote-the-hidden-scene");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("hidden.xml: FAIL: " + HiddenVerdict.THREW.words() + "\n",
+                "SCENES /scenes/0.xml");
+        String tick1 = resourceOr("/gfx/tick1/scenes/tick1.xml", null);
+        assertThat(resourceOr("/gfx/tick1/scenes/hidden.xml", null).lines().map(String::strip)
+                .filter(line -> line.length() > 8 && !tick1.contains(line)))
+                .as("lines of the hidden scene").isNotEmpty()
+                .allSatisfy(line -> assertThat(grade.output()).doesNotContain(line));
+        assertThat(dir.resolve("report").resolve("2-hidden-expected.png")).doesNotExist();
+    }
+
+    @Test
+    void madeUpClassNamesAndStackFramesCannotCarryAHiddenSceneOut() throws Exception {
+        Grade grade = grade("forge-the-stack-trace");
+        assertFailedAndHarmedNothing(grade);
+        String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: FAIL"));
+        assertThat(grade.output()).as("the public scene's report keeps the message").contains("HIDDENLEAK");
+        assertThat(hidden).as("the hidden scene's report").doesNotContain("HIDDENLEAK")
+                .startsWith("hidden.xml: FAIL: " + HiddenVerdict.THREW.words() + "\nFAILED");
+    }
+
+    @Test
+    void trueStackFramesCannotCarryAHiddenSceneOutInTheirMethodNamesOrLineNumbers() throws Exception {
+        Grade grade = grade("frames-channel");
+        assertFailedAndHarmedNothing(grade);
+        String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: FAIL"));
+        assertThat(grade.output()).as("the public scene's report keeps the frames")
+                .containsPattern("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: (low|high)");
+        assertThat(hidden).as("the hidden scene's report: fixed words only")
+                .startsWith("hidden.xml: FAIL: " + HiddenVerdict.THREW.words() + "\nFAILED")
+                .doesNotContain("leakEven", "leakOdd", "Renderer.java:");
+    }
+
+    /**
+     * A wrong image whose every pixel is a byte of the scene it was given: the public scene's
+     * figures show it, the hidden scene's report is its verdict in fixed words and nothing more.
+     */
+    @Test
+    void aWrongHiddenImageIsOneFixedVerdictWithoutFigures() throws Exception {
+        Grade grade = grade("figures-of-the-hidden-scene");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("the public scene's figures").contains("tick1.xml: FAIL: 19200 of 19200 "
+                + "pixels differ");
+        String hidden = grade.output().substring(grade.output().indexOf("hidden.xml: "));
+        assertThat(hidden).as("the hidden scene's report")
+                .startsWith("hidden.xml: FAIL: " + HiddenVerdict.WRONG.words() + "\nFAILED: 2 of 2 scenes wrong.");
+    }
+
+    /**
+     * The organiser's scenes in a folder under /usr, all of which the sandbox shows read-only: the
+     * code looks for them there, and would quote them in the public scene's report.
+     */
+    @Test
+    void organisersScenesUnderUsrAreHiddenFromTheCode() throws Exception {
+        assumeThat(Files.isWritable(Path.of("/usr"))).as("a folder can be made in /usr (as root)").isTrue();
+        Path scenes = Files.createDirectory(ORGANISERS_SCENES);
+        try {
+            Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml", null)
+                    .replace("<scene>", "<scene><!-- " + secret + " -->"));
+            Grade grade = grade("read-the-organisers-scenes", "--scenes", scenes.toString());
+            assertFailedAndHarmedNothing(grade);
+            assertThat(grade.output()).as("what the code found in the folder: nothing")
+                    .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: read: \n");
+        } finally {
+            Files.deleteIfExists(scenes.resolve("secret-scene.xml"));
+            Files.deleteIfExists(scenes);
+        }
+    }
+
+    /** Where {@link #organisersScenesUnderUsrAreHiddenFromTheCode} puts the organiser's scenes. */
+    private static final Path ORGANISERS_SCENES = Path.of("/usr/tick1-attack-scenes");
+
+    @Test
+    void theSandboxsFileSystemsInMemoryAreSizedOrReadOnly() throws Exception {
+        Grade grade = grade("fill-the-tmpfs");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).containsPattern("/dev/shm: (\\d|[1-5]\\d|6[0-4]) MiB in all "
+                + "\\(No space left on device\\)")
+                .containsPattern("; /fill: stopped after 0 MiB \\(/fill \\((Read-only file system|Permission "
+                        + "denied)\\)")
+                .containsPattern("/dev/fill: stopped after 0 MiB \\(/dev/fill \\((Read-only file system|Permission "
+                        + "denied)\\)");
+    }
+
+    @Test
+    void memorySpreadOverManyProcessesIsHeldToOneTotal() throws Exception {
+        assumeThat(totalsEnforced()).as("a control group can be made here").isTrue();
+        Grade grade = grade("memory-in-many-processes", "--memory", "64");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program used more than 576 MiB of memory in all");
+    }
+
+    @Test
+    void whatTheCodeWritesToItsOutputFolderIsCapped() throws Exception {
+        Grade grade = grade("fill-the-output");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: it wrote more than 256 MiB "
+                + "to its output folder").doesNotContain("wrote 64 files");
+    }
+
+    @Test
+    void filesTheCodeMadeUnreadableAreTheStudentsFailureWhenGradingAsANormalUser() throws Exception {
+        Path home = Files.createDirectory(dir.resolve("normal-user"));
+        Path classPath = Files.createDirectory(home.resolve("class-path"));
+        List<String> entries = new ArrayList<>();
+        for (String entry : System.getProperty("java.class.path").split(java.io.File.pathSeparator)) {
+            Path from = Path.of(entry);
+            if (Files.exists(from)) {
+                Path to = classPath.resolve(entries.size() + "-" + from.getFileName());
+                copyTree(from, to);
+                entries.add(to.toString());
+            }
+        }
+        Path student = Files.createDirectories(home.resolve("student"));
+        Files.writeString(student.resolve("Renderer.java"), resourceOr("/students/attacks/unreadable-progress/"
+                + "Renderer.java", null));
+        Files.writeString(student.resolve("Sphere.java"), StarterKit.source("Sphere"));
+        Path tmp = Files.createDirectory(home.resolve("tmp"));
+        try (Stream<Path> all = Files.walk(home)) {
+            for (Path file : all.toList()) {
+                Files.setAttribute(file, "unix:uid", NORMAL_USER);
+                Files.setAttribute(file, "unix:gid", NORMAL_USER);
+            }
+        }
+        Files.setPosixFilePermissions(home, PosixFilePermissions.fromString("rwx--x--x"));
+        Grade grade = gradeFilesAs(List.of("/usr/bin/setpriv", "--reuid=" + NORMAL_USER, "--regid=" + NORMAL_USER,
+                "--clear-groups"), String.join(java.io.File.pathSeparator, entries), tmp,
+                student.resolve("Sphere.java"), student.resolve("Renderer.java"), "--report",
+                home.resolve("report").toString());
+        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: ").doesNotContain("internal error",
+                "AccessDeniedException");
+        try (Stream<Path> left = Files.list(tmp)) {
+            assertThat(left.toList()).as("work folders left").isEmpty();
+        }
+    }
+
+    /** The user the normal-user grade runs as: nobody. */
+    private static final int NORMAL_USER = 65534;
+
+    /** Copies the folder {@code from}, with all it holds, to {@code to}. */
+    static void copyTree(Path from, Path to) throws IOException {
+        try (Stream<Path> all = Files.walk(from)) {
+            for (Path file : all.toList()) {
+                Files.copy(file, to.resolve(from.relativize(file).toString()));
+            }
+        }
+    }
+
+    /** Whether this machine gives each run a control group (the grade warns when it cannot). */
+    private static boolean totalsEnforced() throws Sandbox.Unavailable, InterruptedException {
+        return Sandbox.confined().totalsNotEnforced() == null;
+    }
+
+    @Test
+    void aTemporaryFolderTheSandboxCannotReachIsOneLineSayingWhatToDo() throws Exception {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx------"));
+        Path[] files = StudentSolution.correct().writeTo(Files.createDirectories(dir.resolve("student")));
+        Grade grade = gradeFiles(files[0], files[1]);
+        assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(grade.output()).isEqualTo("tick1 grade: " + dir + ": the sandbox's user cannot pass through this "
+                + "folder to the work folder; grade with a temporary folder it can reach "
+                + "(JAVA_OPTS=-Djava.io.tmpdir=/tmp)" + System.lineSeparator());
+        assertThat(workFolders()).isEmpty();
+    }
+
+    @Test
+    void sigtermStopsTheStudentsCodeAndDeletesTheWorkFolder() throws Exception {
+        Path student = Files.createDirectories(dir.resolve("looping"));
+        Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
+                "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
+        Process grade = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName(), "grade",
+                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
+                "--width", "16", "--height", "12").redirectErrorStream(true)
+                .redirectOutput(dir.resolve("grade.log").toFile()).start();
+        // Wait (at most a minute) for the student's code to be running: its JVM's class path is /harness.
+        for (int i = 0; i < 600 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
+                .contains("StudentHarness render")); i++) {
+            Thread.sleep(100);
+        }
+        assertThat(grade.descendants().map(p -> p.info().commandLine().orElse("")))
+                .as("the student's code is running").anyMatch(line -> line.contains("StudentHarness render"));
+        List<ProcessHandle> running = grade.descendants().toList();
+
+        grade.destroy();   // SIGTERM
+        assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+        for (ProcessHandle process : running) {
+            process.onExit().get(30, TimeUnit.SECONDS);
+        }
+        assertThat(running).as("processes of the student's").noneMatch(ProcessHandle::isAlive);
+        assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
+    }
+
+    private String resourceOr(String name, String otherwise) throws IOException {
+        try (InputStream in = GradeAttackTest.class.getResourceAsStream(name)) {
+            if (in == null) {
+                assertThat(otherwise).as("test resource " + name).isNotNull();
+                return otherwise;
+            }
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+    }
+
+    private static List<Path> leaks() throws IOException {
+        List<Path> found = new ArrayList<>();
+        for (Path folder : List.of(Path.of("/tmp"), Path.of("/usr"), Path.of(System.getProperty("java.home")),
+                Path.of(System.getProperty("user.home")), Path.of("").toAbsolutePath())) {
+            try (Stream<Path> files = Files.list(folder)) {
+                files.filter(f -> f.getFileName().toString().startsWith("tick1-attack-leak")).forEach(found::add);
+            }
+        }
+        return found;
+    }
+
+    private String listenerHeard() throws IOException {
+        StringBuilder heard = new StringBuilder();
+        while (true) {
+            try (Socket client = listener.accept()) {
+                client.setSoTimeout(1000);
+                heard.append(new String(client.getInputStream().readAllBytes(), StandardCharsets.UTF_8)).append('|');
+            } catch (SocketTimeoutException e) {
+                return heard.toString();
+            }
+        }
+    }
+
+    /** Grade work folders are made in the temporary folder; each grade deletes its own. */
+    private List<Path> workFolders() throws IOException {
+        try (Stream<Path> files = Files.list(temporary)) {
+            return files.filter(f -> f.getFileName().toString().startsWith("tick1-grade")).toList();
+        }
+    }
+
+    /** The processes whose command line mentions {@code marker}. */
+    private static List<String> processesOf(String marker) {
+        return ProcessHandle.allProcesses().filter(p -> p.pid() != ProcessHandle.current().pid())
+                .map(p -> p.info().commandLine().orElse(""))
+                .filter(line -> line.contains(marker) && !line.contains("GradeAttackTest")).toList();
+    }
+}

@@ -1,0 +1,125 @@
+package gfx.tick1.command.grade;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assumptions.assumeThat;
+
+import gfx.tick1.Tick1;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import java.util.zip.ZipEntry;
+import java.util.zip.ZipOutputStream;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A cohort graded while the grader's own disk is short of space: a failure that may be the disk's
+ * doing is never stored as the student's result. The grader's temporary folder is a file system
+ * of 64 MiB (a tmpfs this test mounts, so grading as root where mounting is allowed), less than
+ * the 256 MiB one run's output folder may hold.
+ */
+class GradeCohortDiskTest {
+
+    @TempDir
+    Path dir;
+
+    private Path mounted;
+
+    @BeforeAll
+    static void theSandboxCanRunHere() throws InterruptedException {
+        GradeAttackTest.theSandboxCanRunHere();
+    }
+
+    @AfterEach
+    void unmount() throws Exception {
+        if (mounted != null) {
+            new ProcessBuilder("/bin/umount", mounted.toString()).inheritIO().start().waitFor();
+        }
+    }
+
+    @Test
+    void aFailureOnAGraderShortOfDiskIsNotGradedNotStoredAndGradedOnTheNextRun() throws Exception {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        Path small = Files.createDirectory(dir.resolve("small-tmp"));
+        Process mount = new ProcessBuilder("/bin/mount", "-t", "tmpfs", "-o", "size=64m,mode=0711", "tick1-test",
+                small.toString()).redirectErrorStream(true).start();
+        assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
+        mounted = small;
+        StudentSolution correct = StudentSolution.correct();
+        Path zip = download(correct, correct.editRenderer("return image;",
+                "image.setRGB(0, 0, 0xFFFFFF); return image;"));
+        Path report = dir.resolve("report");
+
+        String shortRun = grade(small, zip, report);
+
+        assertThat(shortRun).as("the failure, on a disk short of space")
+                .contains("Failing Student_102_assignsubmission_file_: not graded",
+                        "MiB free, less than the 256 MiB a run may need");
+        assertThat(stored(report)).as("results stored: the pass only").hasSize(1);
+        assertThat(Files.readString(report.resolve("grades.csv"))).as("grades.csv after the short run: the "
+                + "student not graded has a blank grade (Moodle's upload skips it), never 0.00")
+                .contains("Participant 101,").contains("1.00").doesNotContain("0.00").doesNotContain("FAILED: not");
+
+        Path roomy = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx--x--x")));
+        String nextRun = grade(roomy, zip, report);
+
+        assertThat(nextRun).as("the next run, with space").contains("(1 now, 1 from earlier runs")
+                .doesNotContain("not graded");
+        assertThat(Files.readString(report.resolve("grades.csv"))).as("grades.csv")
+                .contains("Participant 101,", "Participant 102,").contains("1.00").contains("0.00");
+        assertThat(stored(report)).as("results stored").hasSize(2);
+    }
+
+    /** A download of two students: one passing, one whose image is wrong. */
+    private Path download(StudentSolution passing, StudentSolution failing) throws IOException {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        try (ZipOutputStream zip = new ZipOutputStream(bytes)) {
+            String[] folders = {"Passing Student_101_assignsubmission_file_/",
+                "Failing Student_102_assignsubmission_file_/"};
+            StudentSolution[] solutions = {passing, failing};
+            for (int i = 0; i < 2; i++) {
+                for (String[] file : new String[][] {{"Sphere.java", solutions[i].sphere()},
+                        {"Renderer.java", solutions[i].renderer()}}) {
+                    zip.putNextEntry(new ZipEntry(folders[i] + file[0]));
+                    zip.write(file[1].getBytes(StandardCharsets.UTF_8));
+                    zip.closeEntry();
+                }
+            }
+        }
+        return Files.write(dir.resolve("download.zip"), bytes.toByteArray());
+    }
+
+    /** A cohort grade in a JVM of its own with {@code temporary} as its temporary folder: what it printed. */
+    private static String grade(Path temporary, Path zip, Path report) throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
+                .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName(), "grade", "--submissions", zip.toString(), "--report", report.toString(),
+                "--width", "160", "--height", "120", "--time-limit", "30", "--jobs", "1"));
+        Process grade = new ProcessBuilder(command).redirectErrorStream(true).start();
+        grade.getOutputStream().close();
+        byte[] printed = grade.getInputStream().readAllBytes();
+        // Not a timing check: a bound on how long to wait for a grade that may hang.
+        assertThat(grade.waitFor(5, TimeUnit.MINUTES)).as("the grade ended").isTrue();
+        return new String(printed, StandardCharsets.UTF_8);
+    }
+
+    private static List<Path> stored(Path report) throws IOException {
+        Path state = report.resolve(CohortCommand.STATE_FOLDER);
+        if (!Files.isDirectory(state)) {
+            return List.of();
+        }
+        try (Stream<Path> entries = Files.list(state)) {
+            return entries.filter(p -> !p.getFileName().toString().startsWith(".")).toList();
+        }
+    }
+}

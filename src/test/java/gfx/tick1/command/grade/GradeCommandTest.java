@@ -1,0 +1,354 @@
+package gfx.tick1.command.grade;
+
+import static gfx.tick1.command.grade.Mistakes.DIFFUSE;
+import static gfx.tick1.command.grade.Mistakes.HIT_REJECTED_ON_A_NEGATIVE_ROOT;
+import static gfx.tick1.command.grade.Mistakes.NEAR_ROOT;
+import static gfx.tick1.command.grade.Mistakes.ROOTS_ACCEPTED_AT_ZERO;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
+import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * {@code tick1 grade} of one student through the real entry point, on student-style solutions: the
+ * correct one, mistakes that only some scenes show, two mistakes at once, and ones that do not
+ * compile or exit; what one student's grade prints, writes and refuses. Each mistake of the
+ * catalogue, and a loop, a throw and a missing method, are graded once, in GradeCohortTest's
+ * cohort, whose feedback files say what this command prints for them. Images are 160 x 120 to
+ * keep the suite quick; every catalogue entry shows at that size (VariantRendererTest checks it).
+ */
+class GradeCommandTest {
+
+    private static final String[] SMALL = {"--width", "160", "--height", "120"};
+
+    @TempDir
+    Path dir;
+
+    /** Where the one grade that several tests read is made: see {@link #unclampedNdotL}. */
+    @TempDir
+    static Path shared;
+    private static CliRun unclampedNdotL;
+
+    private CliRun grade(StudentSolution solution, String... options) throws IOException {
+        return grade(dir, solution, options);
+    }
+
+    /** Grades {@code solution}, written into {@code folder}/student, with its report in {@code folder}/report. */
+    private static CliRun grade(Path folder, StudentSolution solution, String... options) throws IOException {
+        Path[] files = solution.writeTo(folder.resolve("student"));
+        List<String> args = new java.util.ArrayList<>(List.of("grade", "--sphere", files[0].toString(),
+                "--renderer", files[1].toString(), "--report", folder.resolve("report").toString()));
+        args.addAll(List.of(SMALL));
+        args.addAll(List.of(options));
+        return CliRun.of(args.toArray(String[]::new));
+    }
+
+    @Test
+    void theCorrectSolutionPassesWithTheCoursesWords() throws IOException {
+        CliRun run = grade(StudentSolution.correct());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS")
+                .endsWith(SubmissionGrader.CONGRATULATIONS + System.lineSeparator());
+        assertThat(run.err()).isEmpty();
+    }
+
+    @Test
+    void theCorrectSolutionPassesOnEverySceneOfTheProject() throws IOException {
+        CliRun run = grade(StudentSolution.correct(), "--scenes", "scenes");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("scenes/hundred-spheres.xml: PASS", "scenes/no-ambient.xml: PASS")
+                .doesNotContain("FAIL");
+    }
+
+    /** The starter SceneLoader must read what the reference loader reads, defaults included. */
+    @Test
+    void theStarterLoaderReadsDefaultsNestingAndTheLastLightAsTheReferenceDoes() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Files.writeString(scenes.resolve("defaults.xml"), """
+                <scene>
+                  <point-light x="2" y="2" colour="#FF0000"/>
+                  <sphere z="5" colour="#00FF00">
+                    <sphere x="1.5" y="0.5" z="6" radius="0.5" colour="#0000FF"/>
+                  </sphere>
+                  <point-light x="-1" y="3" z="1" colour="#FFFFFF" intensity="80"/>
+                </scene>
+                """);
+        CliRun run = grade(StudentSolution.correct(), "--scenes", scenes.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("defaults.xml: PASS");
+    }
+
+    @Test
+    void aHitRejectedOnANegativeRootPassesTick1ButFailsWithTheCameraInsideASphere() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("inside"));
+        Files.copy(Path.of("scenes/hard/camera-inside-sphere.xml"), scenes.resolve("camera-inside-sphere.xml"));
+        CliRun run = grade(HIT_REJECTED_ON_A_NEGATIVE_ROOT, "--scenes", scenes.toString());
+        Variant mistake = Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT;
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).as(run.transcript()).contains("tick1.xml: PASS",
+                "camera-inside-sphere.xml: FAIL: " + HiddenVerdict.WRONG.words())
+                .as("the scene is hidden: no catalogue entry").doesNotContain("closest: ", mistake.title());
+        assertThat(run.out()).as("the handout's six steps find no hit from inside either: a correct answer")
+                .doesNotContain("  behaviour: ", "  note: ");
+    }
+
+    @Test
+    void aHitRejectedOnANegativeRootPassesTheCoursesScenesWithoutANote() throws IOException {
+        CliRun run = grade(HIT_REJECTED_ON_A_NEGATIVE_ROOT);
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).as(run.transcript()).contains(SubmissionGrader.CONGRATULATIONS).doesNotContain("Note:");
+    }
+
+    @Test
+    void twoMistakesInTwoMethodsAreEachNamedByTheirModels() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL")
+                .editSphere(NEAR_ROOT, "double s = s2;"));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out().lines().filter(line -> line.startsWith("  behaviour: ")).toList()).as(run.transcript())
+                .satisfiesExactly(
+                        line -> assertThat(line).startsWith("  behaviour: your intersectionWith gives the answers of \""
+                                + Variant.FAR_ROOT.title() + "\" on all "),
+                        line -> assertThat(line).startsWith("  behaviour: your illuminate gives the answers of \""
+                                + Variant.UNCLAMPED_N_DOT_L.title() + "\" on all "));
+    }
+
+    @Test
+    void rootsAcceptedAtZeroPassTick1ButFailWhereASpherePassesThroughTheCamera() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("through"));
+        Files.copy(Path.of("src/test/resources/scenes/sphere-through-camera.xml"),
+                scenes.resolve("sphere-through-camera.xml"));
+        CliRun run = grade(ROOTS_ACCEPTED_AT_ZERO, "--scenes", scenes.toString());
+        Variant mistake = Variant.ROOTS_ACCEPTED_AT_ZERO;
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        // The hidden scene says only its fixed words; what a ray from a sphere's surface does (seen in the public
+        // run) is a note with the untested label.
+        assertThat(run.out()).as(run.transcript()).contains("tick1.xml: PASS",
+                "sphere-through-camera.xml: FAIL: " + HiddenVerdict.WRONG.words(),
+                "  note: not tested by the course's scenes; the handout's six steps leave it open: for a ray that "
+                        + "starts on a sphere's surface")
+                .as("the scene is hidden: no catalogue entry for its image").doesNotContain("closest: ");
+        assertThat(run.out()).as("the note names the model every answer of the public run's fits")
+                .contains("every answer of yours is that of \"" + mistake.title() + "\"");
+    }
+
+    /**
+     * The grade, in {@link #shared}, of a solution whose illuminate leaves N.L unclamped, which fails
+     * both scenes: graded once, on first use, for the tests that read what it printed and wrote.
+     */
+    private static synchronized CliRun unclampedNdotL() throws IOException {
+        if (unclampedNdotL == null) {
+            unclampedNdotL = grade(shared, StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
+        }
+        return unclampedNdotL;
+    }
+
+    @Test
+    void aFailingSceneLeavesItsHeatMapWhereTheReportSays() throws IOException {
+        CliRun run = unclampedNdotL();
+        Path heatMap = shared.resolve("report").resolve("1-tick1-diff.png");
+        assertThat(run.out()).contains("heat map: " + heatMap);
+        assertThat(heatMap).exists();
+        assertThat(shared.resolve("report").resolve("1-tick1-yours.png")).exists();
+    }
+
+    @Test
+    void aFailingSceneWhoseImagesCannotBeWrittenExitsThreeWithOneLineSayingWhy() throws IOException {
+        java.nio.file.Files.writeString(dir.resolve("report"), "a file where the report folder should go");
+        CliRun run = grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(3);
+        assertThat(run.out()).contains("FAILED");
+        assertThat(run.err().lines()).as(run.err()).isNotEmpty()
+                .allMatch(line -> line.startsWith("tick1 grade: ") && line.contains("exists and is not a folder"));
+    }
+
+    @Test
+    void codeThatDoesNotCompileIsReportedWithTheStudentsFileAndLine() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editSphere(NEAR_ROOT, "double s = s1 > 0 ? s1 : s2"));
+        Path sphere = dir.resolve("student").resolve("Sphere.java");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).startsWith("FAILED: the code does not compile (1 error):")
+                .contains(sphere + ":" + StudentSolution.sphereLineOf(NEAR_ROOT) + ":")
+                .contains("error: ';' expected")
+                .doesNotContain("PASS", SubmissionGrader.CONGRATULATIONS);
+    }
+
+    @Test
+    void systemExitInTheStudentsCodeIsReportedNotInherited() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer("return image;", "System.exit(0); return image;"));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).contains("tick1.xml: FAIL: the program ended while rendering this scene, with exit "
+                + "status 0 (does the code call System.exit?)");
+    }
+
+    @Test
+    void aMissingStudentFileIsOneLineAndExitTwo() {
+        CliRun run = CliRun.of("grade", "--sphere", dir.resolve("nope.java").toString(), "--renderer",
+                dir.resolve("Renderer.java").toString());
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err()).isEqualTo("tick1 grade: " + dir.resolve("nope.java") + ": no such file"
+                + System.lineSeparator());
+    }
+
+    @Test
+    void aScenesFolderWithoutScenesIsOneLineAndExitTwo() throws IOException {
+        Files.createDirectories(dir.resolve("empty"));
+        CliRun run = grade(StudentSolution.correct(), "--scenes", dir.resolve("empty").toString());
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines()).hasSize(1);
+        assertThat(run.err()).contains("no *.xml scene files");
+    }
+    @Test
+    void aFileInAnotherPackageFailsWithOneLineNamingThePackageTheTesterNeeds() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editSphere("package gfx.tick1;", "package tick1;"));
+        Path sphere = dir.resolve("student").resolve("Sphere.java");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).isEqualTo("FAILED: " + sphere + ": the tester needs the file in package gfx.tick1 (its "
+                + "first line \"package gfx.tick1;\", as in the starter code), but it declares package tick1"
+                + System.lineSeparator());
+    }
+
+    @Test
+    void aFileThatIsNotUtf8IsNamedWithItsLineColumnAndByte() throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        String renderer = Files.readString(files[1]);
+        List<String> lines = renderer.lines().toList();
+        int line = lines.indexOf(lines.stream().filter(l -> l.contains("// The colour")).findFirst().orElseThrow()) + 1;
+        Files.write(files[1], renderer.replace("// The colour", "// Th\u00e9 colour")
+                .getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
+        CliRun run = CliRun.of("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
+                "--width", "16", "--height", "12");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err()).isEqualTo("tick1 grade: " + files[1] + ":" + line + ":"
+                + (lines.get(line - 1).indexOf("// The") + 6) + ": not UTF-8 text: byte 0xE9 is "
+                + "not part of a UTF-8 character; save the file as UTF-8" + System.lineSeparator());
+    }
+
+    @Test
+    void theReportFolderShowsOnlyThisGradesImages() throws IOException {
+        // The report folder as a failing grade left it, with the organiser's own file beside the images.
+        assertThat(unclampedNdotL().status()).isEqualTo(GradeCommand.EXIT_FAIL);
+        Files.createDirectories(dir.resolve("report"));
+        try (Stream<Path> earlier = Files.list(shared.resolve("report"))) {
+            for (Path image : earlier.toList()) {
+                Files.copy(image, dir.resolve("report").resolve(image.getFileName()));
+            }
+        }
+        assertThat(dir.resolve("report").resolve("1-tick1-diff.png")).exists();
+        Files.writeString(dir.resolve("report").resolve("notes.txt"), "the organiser's own file");
+        CliRun run = grade(StudentSolution.correct());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        try (Stream<Path> files = Files.list(dir.resolve("report"))) {
+            assertThat(files.map(f -> f.getFileName().toString())).containsExactly("notes.txt");
+        }
+    }
+
+    @Test
+    void aFailingHiddenSceneIsFixedWordsWithoutFiguresDiagnosisOrImages() throws IOException {
+        CliRun run = unclampedNdotL();
+        String hidden = run.out().substring(run.out().indexOf("hidden.xml: "));
+        assertThat(hidden).as(run.transcript()).startsWith("hidden.xml: FAIL: "
+                + HiddenVerdict.WRONG.words() + System.lineSeparator() + "FAILED: ");
+        try (Stream<Path> files = Files.list(shared.resolve("report"))) {
+            assertThat(files.map(f -> f.getFileName().toString())).allMatch(name -> name.startsWith("1-tick1-"));
+        }
+    }
+
+    @Test
+    void theHandoutsFormulaPassesAHardHiddenSceneWhoseReportSaysOnlyPass() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("hard"));
+        Files.copy(Path.of("scenes/hard/giant-floor-1e16.xml"), scenes.resolve("giant-floor-1e16.xml"));
+        CliRun run = grade(StudentSolution.correct(), "--scenes", scenes.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out().lines()).as("which reference it matched is the code's to choose: not said")
+                .anyMatch(line -> line.endsWith("/giant-floor-1e16.xml: " + HiddenVerdict.PASS.words()));
+    }
+
+    @Test
+    void anOrganiserCanDemandTheRobustReference() throws IOException {
+        Path scenes = Files.createDirectories(dir.resolve("hard"));
+        Files.copy(Path.of("scenes/hard/giant-floor-1e16.xml"), scenes.resolve("giant-floor-1e16.xml"));
+        CliRun run = grade(StudentSolution.correct(), "--scenes", scenes.toString(), "--reference", "robust");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).contains("giant-floor-1e16.xml: FAIL");
+    }
+
+    @Test
+    void withoutTheSandboxTheGradeWarnsAndStillGrades() throws IOException {
+        CliRun run = grade(StudentSolution.correct(), "--no-sandbox");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.err().lines()).singleElement().asString()
+                .startsWith("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions");
+    }
+
+    @Test
+    void withoutBubblewrapTheGradeRefusesInOneLineNamingThePackage() throws IOException {
+        String property = "tick1.grade.bwrap";
+        System.setProperty(property, dir.resolve("no-bwrap-here").toString());
+        try {
+            CliRun run = grade(StudentSolution.correct());
+            assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+            assertThat(run.out()).isEmpty();
+            assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
+                    .contains("bubblewrap is not installed", "install the bubblewrap package", "--no-sandbox");
+        } finally {
+            System.clearProperty(property);
+        }
+    }
+
+    @Test
+    void swappedFilesAreKnownByTheirClassGradedTheRightWayRoundAndSaidSo() throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        List<String> args = new java.util.ArrayList<>(List.of("grade", "--sphere", files[1].toString(),
+                "--renderer", files[0].toString(), "--report", dir.resolve("report").toString()));
+        args.addAll(List.of(SMALL));
+        CliRun run = CliRun.of(args.toArray(String[]::new));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.err()).isEqualTo("tick1 grade: note: " + files[1] + " declares class Renderer and " + files[0]
+                + " class Sphere: graded the other way round" + System.lineSeparator());
+    }
+
+    @Test
+    void aFolderGivenAsAFileIsNamedWithWhatTheOptionWants() throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        CliRun run = CliRun.of("grade", "--sphere", dir.toString(), "--renderer", files[1].toString());
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err()).isEqualTo("tick1 grade: " + dir + ": a folder, not a file: --sphere wants the "
+                + "student's Sphere.java" + System.lineSeparator());
+    }
+
+    @Test
+    void neitherOneStudentNorACohortIsOneLineSayingWhatToGive() {
+        CliRun run = CliRun.of("grade");
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines().findFirst()).hasValueSatisfying(line -> assertThat(line)
+                .contains("give --sphere and --renderer (one student), or --submissions (a cohort)"));
+    }
+
+    @Test
+    void oneFileOfTwoIsOneLineNamingTheOther() throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        CliRun run = CliRun.of("grade", "--sphere", files[0].toString());
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines().findFirst()).hasValueSatisfying(line -> assertThat(line)
+                .contains("--renderer"));
+    }
+
+    @Test
+    void oneStudentAndACohortAtOnceAreRefused() throws IOException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        CliRun run = CliRun.of("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
+                "--submissions", dir.toString());
+        assertThat(run.status()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines().findFirst()).hasValueSatisfying(line -> assertThat(line)
+                .contains("--submissions", "--sphere"));
+    }
+}

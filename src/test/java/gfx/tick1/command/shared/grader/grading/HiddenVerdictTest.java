@@ -1,0 +1,56 @@
+package gfx.tick1.command.shared.grader.grading;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.Locale;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * What tick1 says of a hidden scene is one of a fixed set of verdicts, whatever the code did: so a
+ * hidden scene can carry no more than log2 of their number bits out of the grade, and
+ * docs/grading.md says how many.
+ */
+class HiddenVerdictTest {
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "the code threw java.lang.IllegalStateException: 3c 73 63 65\\n    at gfx.tick1.Renderer.leak(Renderer.java:33)"
+            + " | THREW",
+        "the code threw gfx.tick1.Leak$a9f3: the time limit | THREW",
+        "the image written for this scene is unusable: the image is 2017272368 x 774976051, expected 64 x 48"
+            + " | NO_IMAGE",
+        "the program ended while rendering this scene, with exit status 120 (System.exit, or the JVM crashed)"
+            + " | NO_IMAGE",
+        "no image within the time limit of 10 s (an infinite loop?); the program was stopped | TIME_LIMIT",
+        "not rendered: the time limit was used up by the earlier scenes | TIME_LIMIT",
+        "not rendered: the run stopped at an earlier scene | NO_IMAGE",
+        "the program used more than 1 GiB of memory in all (all its processes) | MEMORY",
+        "the program was stopped: it wrote more than 256 MiB to its output folder | OUTPUT_FOLDER",
+        "the code threw java.lang.OutOfMemoryError\\nit reached the limit of 96 processes and threads in all"
+            + " | PROCESSES"})
+    void aSceneWithoutAnImageGetsAVerdictAndNothingOfTheReasonsFigures(String reason, HiddenVerdict verdict) {
+        assertThat(HiddenVerdict.ofNoImage(reason.replace("\\n", "\n"))).isEqualTo(verdict);
+    }
+
+    @Test
+    void noVerdictHoldsANumber() {
+        assertThat(Arrays.stream(HiddenVerdict.values()).map(HiddenVerdict::words))
+                .noneMatch(words -> words.matches(".*\\d.*"));
+    }
+
+    @Test
+    void theDocsPromiseExactlyTheBitsTheVerdictsCanCarry() throws IOException {
+        int verdicts = HiddenVerdict.values().length;
+        String docs = Files.readString(Path.of("docs/grading.md")).replaceAll("\\s+", " ");
+        assertThat(docs).as("docs/grading.md's promise for a hidden scene")
+                .contains("one of " + verdicts + " fixed verdicts")
+                .contains(String.format(Locale.ROOT, "log2 %d = %.2f bits", verdicts,
+                        Math.log(verdicts) / Math.log(2)));
+    }
+}

@@ -1,0 +1,164 @@
+package gfx.tick1.engine.fast;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gfx.tick1.engine.fast.FastRenderer.SphereSearch;
+import gfx.tick1.engine.image.ImageDifference;
+import gfx.tick1.engine.math.Vector3;
+import gfx.tick1.engine.render.GoldenImages;
+import gfx.tick1.engine.render.ReferenceRenderer;
+import gfx.tick1.engine.render.SamplePattern;
+import gfx.tick1.engine.scene.Intersection;
+import gfx.tick1.engine.scene.PointLight;
+import gfx.tick1.engine.scene.Scene;
+import gfx.tick1.engine.scene.SceneLoader;
+import gfx.tick1.engine.scene.Sphere;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/** The fast kernel against its oracle, the readable Renderer: the same pixels, always. */
+class FastRendererTest {
+
+    static List<Path> scenes() throws IOException {
+        return GoldenImages.scenesUnder(Path.of("scenes"));
+    }
+
+    private static Scene load(Path scene) {
+        return new SceneLoader(scene, false).getScene();
+    }
+
+    private static void assertSamePixels(BufferedImage expected, BufferedImage actual, String what) {
+        ImageDifference difference = ImageDifference.between(expected, actual);
+        assertThat(difference.differingPixels()).as("%s: %s", what, difference.summary())
+                .isZero();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    void matchesTheReadableRendererOnEveryRepositoryScene(Path scene) {
+        BufferedImage expected = new ReferenceRenderer(640, 480).render(load(scene));
+        assertSamePixels(expected, new FastRenderer(640, 480, new SamplePattern(1)).render(load(scene)),
+                scene.toString());
+    }
+
+    static List<Path> hardScenes() throws IOException {
+        return GoldenImages.scenesUnder(Path.of("scenes/hard"));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("hardScenes")
+    void matchesTheReadableRendererWithEveryIntersectionMethodOnTheHardCases(Path scene) {
+        for (Intersection intersection : Intersection.values()) {
+            BufferedImage expected = new ReferenceRenderer(320, 240, intersection).render(load(scene));
+            assertSamePixels(expected,
+                    new FastRenderer(320, 240, new SamplePattern(1), intersection).render(load(scene)),
+                    scene + " with " + intersection);
+        }
+    }
+
+    @ParameterizedTest(name = "{0} samples")
+    @ValueSource(ints = {2, 4, 5, 16})
+    void matchesTheReadableRendererWhenAntiAliasing(int samples) {
+        Scene scene = load(Path.of("scenes/tick1.xml"));
+        SamplePattern pattern = new SamplePattern(samples);
+        BufferedImage expected = new ReferenceRenderer(160, 120).render(scene, pattern);
+        assertSamePixels(expected, new FastRenderer(160, 120, pattern).render(scene), samples + " samples");
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @ValueSource(longs = {1, 2, 3})
+    void bvhAndBruteForceAgreeOnLargeScenesIncludingExactTies(long seed) {
+        Scene scene = crowd(seed, 1500);
+        BufferedImage readable = new ReferenceRenderer(200, 150).render(scene);
+        BufferedImage brute = new FastRenderer(200, 150, new SamplePattern(1), SphereSearch.BRUTE_FORCE,
+                Intersection.DEFAULT).render(scene);
+        BufferedImage bvh = new FastRenderer(200, 150, new SamplePattern(1), SphereSearch.BVH, Intersection.DEFAULT)
+                .render(scene);
+        assertSamePixels(brute, bvh, "BVH vs brute force");
+        assertSamePixels(readable, bvh, "BVH vs readable");
+    }
+
+    @Test
+    void theBvhFindsTheEarlierOfTwoCoincidentSpheres() {
+        Scene scene = new Scene();
+        for (int i = 0; i < 20; i++) {
+            scene.addObject(new Sphere(new Vector3(i - 10, 0, 30), 0.4, new Vector3(0, 0, 1)));
+        }
+        scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(1, 0, 0)));
+        scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(0, 1, 0)));
+        int centre = new FastRenderer(64, 48, new SamplePattern(1), SphereSearch.BVH, Intersection.DEFAULT)
+                .render(scene).getRGB(32, 24) & 0xFFFFFF;
+        assertThat(centre).as("the red sphere comes first in the file").isEqualTo(0xFF0000);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(doubles = {Double.NaN, Double.NEGATIVE_INFINITY, -1, -0.0, 0.0, Double.MIN_VALUE, 0.1, 0.5,
+        0.9999999999999999, 1, 1.0000000000000002, 2, Double.POSITIVE_INFINITY})
+    void everyChannelValueBecomesTheReadableCodesByte(double channel) {
+        // An unlit white sphere's colour is the ambient light itself: every channel value reaches
+        // the byte conversion as it is, NaN and infinities included.
+        Scene scene = new Scene();
+        scene.setAmbientLight(new Vector3(channel));
+        scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(1)));
+        assertSamePixels(new ReferenceRenderer(16, 12).render(scene),
+                new FastRenderer(16, 12, new SamplePattern(1)).render(scene),
+                "ambient " + channel);
+    }
+
+    @Test
+    void producesAStandardRgbImage() {
+        BufferedImage image = new FastRenderer(8, 6, new SamplePattern(1)).render(new Scene());
+        assertThat(image.getType()).isEqualTo(BufferedImage.TYPE_INT_RGB);
+        assertThat(image.getRGB(3, 3) & 0xFFFFFF).isEqualTo(0x191919);
+    }
+
+    @Test
+    void antiAliasingGivesTheSameImageOnEveryRun() {
+        Scene scene = load(Path.of("scenes/hundred-spheres.xml"));
+        SamplePattern pattern = new SamplePattern(4);
+        assertSamePixels(new FastRenderer(160, 120, pattern).render(scene),
+                new FastRenderer(160, 120, pattern).render(scene), "second run");
+    }
+
+    @Test
+    void antiAliasingBlendsTheColoursOfAnEdgePixel() {
+        // A white sphere lit by ambient light only, on the grey background: edge pixels fall between.
+        Scene scene = new Scene();
+        scene.addObject(new Sphere(new Vector3(0, 0, 5), 1, new Vector3(1)));
+        BufferedImage image = new FastRenderer(64, 48, new SamplePattern(16)).render(scene);
+        long between = 0;
+        for (int y = 0; y < 48; y++) {
+            for (int x = 0; x < 64; x++) {
+                int red = image.getRGB(x, y) >> 16 & 0xFF;
+                between += red > 25 && red < 255 ? 1 : 0;
+            }
+        }
+        assertThat(between).as("pixels between background and sphere").isGreaterThan(20);
+    }
+
+    /** Many small spheres in front of the camera, with every fifth one duplicated exactly. */
+    static Scene crowd(long seed, int count) {
+        Random random = new Random(seed);
+        Scene scene = new Scene();
+        scene.setAmbientLight(new Vector3(0.2));
+        scene.setPointLight(new PointLight(new Vector3(-2, 5, 0), new Vector3(1), 300));
+        for (int i = 0; i < count; i++) {
+            Vector3 centre = new Vector3(random.nextGaussian() * 3, random.nextGaussian() * 2,
+                    4 + random.nextDouble() * 30);
+            Vector3 colour = new Vector3(random.nextDouble(), random.nextDouble(), random.nextDouble());
+            double radius = 0.05 + random.nextDouble() * 0.4;
+            scene.addObject(new Sphere(centre, radius, colour));
+            if (i % 5 == 0) {
+                scene.addObject(new Sphere(centre, radius, new Vector3(1).subtract(colour)));
+            }
+        }
+        return scene;
+    }
+}
