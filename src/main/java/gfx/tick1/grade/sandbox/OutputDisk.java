@@ -40,15 +40,18 @@ final class OutputDisk implements AutoCloseable {
 
     private final Path folder;
     private final boolean mounted;
+    /** The tmpfs's device number, or null: the folder is its root only while it shows this one. */
+    private final Object device;
 
-    private OutputDisk(Path folder, boolean mounted) {
+    private OutputDisk(Path folder, boolean mounted, Object device) {
         this.folder = folder;
         this.mounted = mounted;
+        this.device = device;
     }
 
     /** {@code folder} as it is, on the host's disk: only the walk holds what is written there. */
     static OutputDisk onHostDisk(Path folder) {
-        return new OutputDisk(folder, false);
+        return new OutputDisk(folder, false, null);
     }
 
     /**
@@ -63,7 +66,12 @@ final class OutputDisk implements AutoCloseable {
         if (!Commands.run(List.of(MOUNT.toString(), "-t", "tmpfs", "-o", options, SOURCE, folder.toString()))) {
             throw new IOException("cannot mount a file system of its own on the run's output folder " + folder);
         }
-        return new OutputDisk(folder, true);
+        try {
+            return new OutputDisk(folder, true, Files.getAttribute(folder, "unix:dev"));
+        } catch (IOException | RuntimeException e) {
+            new OutputDisk(folder, true, null).close();
+            throw e;
+        }
     }
 
     /** Whether each run's folder can be a tmpfs of its own here: one is mounted and unmounted in {@code scratch}. */
@@ -85,7 +93,7 @@ final class OutputDisk implements AutoCloseable {
      * the code holds without a name: its blocks in use, and whether a file can still be made.
      */
     String overCap() {
-        if (mounted) {
+        if (mounted && stillMounted()) {
             File root = folder.toFile();
             if (root.getTotalSpace() - root.getFreeSpace() > OutputCount.BYTES_CAP) {
                 return OutputCount.TOO_MANY_BYTES;
@@ -95,6 +103,15 @@ final class OutputDisk implements AutoCloseable {
             }
         }
         return OutputCount.overCap(folder);
+    }
+
+    /** Whether the folder is still the tmpfs's root: the clean-up on Ctrl-C may have detached it. */
+    private boolean stillMounted() {
+        try {
+            return device.equals(Files.getAttribute(folder, "unix:dev"));
+        } catch (IOException | RuntimeException e) {
+            return false;
+        }
     }
 
     /**

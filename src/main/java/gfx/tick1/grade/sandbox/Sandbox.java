@@ -551,6 +551,31 @@ public final class Sandbox {
         return (median(group) + median(shell)) / 1e9;
     }
 
+    /**
+     * What its own output file system adds to one run in the sandbox, in seconds: the median of
+     * {@code runs} times mounting one, counting it once as a run's end does, and unmounting it; NaN
+     * where the runs' output folders are on the host's disk.
+     */
+    public double outputDiskSeconds(int runs) throws IOException {
+        if (!confined || !ownDisks) {
+            return Double.NaN;
+        }
+        Path folder = Files.createTempDirectory("tick1-disk-");
+        try {
+            long[] times = new long[runs];
+            for (int i = 0; i < runs; i++) {
+                long start = System.nanoTime();
+                try (OutputDisk disk = outputDisk(folder)) {
+                    disk.overCap();
+                }
+                times[i] = System.nanoTime() - start;
+            }
+            return median(times) / 1e9;
+        } finally {
+            WorkFolder.delete(folder);
+        }
+    }
+
     private static long timeStart(String... command) throws IOException, InterruptedException {
         long start = System.nanoTime();
         Process process = processFor(List.of(command)).redirectErrorStream(true)
