@@ -122,13 +122,17 @@ final class OutputDisk implements AutoCloseable {
         Path probe = folder.resolve(".tick1-" + Long.toHexString(ThreadLocalRandom.current().nextLong()));
         try {
             Files.createFile(probe);
-            Files.deleteIfExists(probe);
-            return true;
         } catch (FileAlreadyExistsException e) {
             return true;   // a name the code made: no answer, and none needed this time
         } catch (IOException e) {
             return false;
         }
+        try {
+            Files.deleteIfExists(probe);
+        } catch (IOException e) {
+            // The code put something else in its place meanwhile: it is the code's, counted by the walk.
+        }
+        return true;
     }
 
     /**

@@ -15,8 +15,9 @@ import java.util.concurrent.TimeUnit;
  *   <li>runs as an unprivileged user of its own when {@code grade} runs as root (through
  *       {@code setpriv}), with no capabilities and no way to gain any;
  *   <li>sees a read-only system ({@code /usr} and the JDK's configuration), the folders
- *       {@code grade} binds in (read-only but for its output folder) and nothing else: no home
- *       folder, no {@code /tmp}, no other process;
+ *       {@code grade} binds in (read-only but for its output folder, which is a file system of
+ *       its own when {@code grade} runs as root: {@link OutputDisk}) and nothing else: no home
+ *       folder, no {@code /tmp}, no other process, none of the organiser's scenes but its own;
  *   <li>has no network (a network namespace with nothing in it, not even the host's loopback),
  *       an empty environment, and a session and PID namespace of its own, so that it cannot
  *       type into the grader's terminal and everything it starts dies with it
