@@ -86,11 +86,14 @@ final class CohortSection {
                 | median per submission: compare (with the references, explanations and images of failures) | %.3f |
                 | median per submission: total, one job's view | %.3f |
                 | per submission: the control groups (%d runs, each making, joining, removing one) | %.4f |
+                | per submission: the output folders' file systems (%d runs, each mounting, counting, \
+                unmounting one) | %.4f |
 
                 The phases are the grader's view of one submission while the other jobs run beside it, so they \
                 add up to more than the wall time per submission.
                 """, m.submissions(), m.jobs(), WIDTH, HEIGHT, m.passed(), m.submissions(), m.wallPerSubmission(),
                 m.wallSeconds(), m.medianCompile(), m.medianRender(), m.medianCompare(), m.medianTotal(),
-                CohortTiming.RUNS_PER_SUBMISSION, m.cgroupPerSubmission());
+                CohortTiming.RUNS_PER_SUBMISSION, m.cgroupPerSubmission(), CohortTiming.RUNS_PER_SUBMISSION,
+                m.outputDiskPerSubmission());
     }
 }

@@ -217,14 +217,19 @@ public final class GradeCommand implements Callable<Integer> {
                         + " package (apt-get install " + Sandbox.PACKAGE + ")" + (vpl() ? "" : ", or give "
                         + "--no-sandbox to grade without a sandbox"));
             }
-            for (String warning : new String[] {sandbox.totalsNotEnforced(), sandbox.reservationsNotRefused()}) {
+            for (String warning : new String[] {sandbox.totalsNotEnforced(), sandbox.reservationsNotRefused(),
+                    sandbox.diskNotEnforced()}) {
                 if (warning != null) {
                     err.println("tick1 grade: warning: " + warning);
                 }
             }
         }
         if (scenesFolder != null) {
-            sandbox = sandbox.hiding(organisersScenes());
+            try {
+                sandbox = sandbox.hiding(organisersScenes());
+            } catch (Sandbox.CannotHide e) {
+                throw new CommandFailure(EXIT_USAGE, e.getMessage());
+            }
         }
         if (target.cohort != null) {
             return new CohortCommand(this, sandbox, out, err).call();

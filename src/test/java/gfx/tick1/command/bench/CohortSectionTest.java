@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 class CohortSectionTest {
 
     private static final CohortTiming.Measured MEASURED = new CohortTiming.Measured(100, 2, 100, 80.0, 0.9, 0.6,
-            0.05, 1.6, 0.0042);
+            0.05, 1.6, 0.0042, 0.0087);
 
     @Test
     void theSectionGivesTheWallTimePerSubmissionAndEachPhase() {
@@ -19,7 +19,9 @@ class CohortSectionTest {
                 .contains("| wall time per submission (whole grade / submissions) | 0.800 |")
                 .contains("compile (by the job's warm compiler, in the sandbox) | 0.900 |")
                 .contains("| 0.600 |", "| 0.050 |", "| 1.600 |")
-                .contains("the control groups (2 runs, each making, joining, removing one)", "| 0.0042 |");
+                .contains("the control groups (2 runs, each making, joining, removing one)", "| 0.0042 |")
+                .contains("the output folders' file systems (2 runs, each mounting, counting, unmounting one) "
+                        + "| 0.0087 |");
     }
 
     @Test

@@ -323,6 +323,23 @@ class GradeAttackTest {
         assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: " + limit);
     }
 
+    /**
+     * Files deleted while the code keeps them (open, or mapped), which no walk of names sees: the
+     * output folder's file system holds them to its size and number of files, and a run found
+     * holding more than the limit is stopped with the limit's words.
+     */
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+        "hold-deleted-files       | it wrote more than 256 MiB to its output folder",
+        "hold-deleted-small-files | it made more than 10000 files and folders in its output folder"})
+    void filesTheCodeDeletesWhileHoldingThemCountAgainstItsOutputFolder(String attack, String limit)
+            throws Exception {
+        assumeThat(Sandbox.confined().diskNotEnforced()).as("the kernel holds the output folder here").isNull();
+        Grade grade = grade(attack, "--time-limit", "60");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: " + limit);
+    }
+
     @Test
     void threadsCoresAndNativeMemoryAreLimited() throws Exception {
         Grade grade = grade("exceed-limits", "--memory", "64");
@@ -405,6 +422,31 @@ class GradeAttackTest {
 
     /** Where {@link #organisersScenesUnderUsrAreHiddenFromTheCode} puts the organiser's scenes. */
     private static final Path ORGANISERS_SCENES = Path.of("/usr/tick1-attack-scenes");
+
+    /**
+     * A scene of the organiser's --scenes folder that is a link to a file directly in /usr (not in a
+     * folder below it, which could be hidden under an empty folder): the code reads it there.
+     */
+    @Test
+    void aSceneLinkedToAFileDirectlyInUsrIsHiddenFromTheCode() throws Exception {
+        assumeThat(Files.isWritable(Path.of("/usr"))).as("a file can be made in /usr (as root)").isTrue();
+        Path scenes = Files.createDirectory(dir.resolve("scenes"));
+        try {
+            Files.writeString(HIDDEN_SCENE_IN_USR, resourceOr("/gfx/tick1/scenes/hidden.xml", null)
+                    .replace("<scene>", "<scene><!-- " + secret + " -->"));
+            Files.createSymbolicLink(scenes.resolve("secret-scene.xml"), HIDDEN_SCENE_IN_USR);
+            Grade grade = grade("read-a-scene-in-usr", "--scenes", scenes.toString());
+            assertFailedAndHarmedNothing(grade);
+            assertThat(grade.output()).as("what the code read there: no scene")
+                    .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: read: [")
+                    .doesNotContain("<scene>", "point-light");
+        } finally {
+            Files.deleteIfExists(HIDDEN_SCENE_IN_USR);
+        }
+    }
+
+    /** Where {@link #aSceneLinkedToAFileDirectlyInUsrIsHiddenFromTheCode} puts the organiser's scene. */
+    private static final Path HIDDEN_SCENE_IN_USR = Path.of("/usr/tick1-attack-hidden-scene.xml");
 
     @Test
     void theSandboxsFileSystemsInMemoryAreSizedOrReadOnly() throws Exception {

@@ -206,6 +206,15 @@ class GradeCommandTest {
         assertThat(run.err().lines()).hasSize(1);
         assertThat(run.err()).contains("no *.xml scene files");
     }
+
+    @Test
+    void aScenesFolderThatHoldsWhatTheSandboxShowsIsRefusedInOneLine() throws IOException {
+        CliRun run = grade(StudentSolution.correct(), "--scenes", "/usr");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err()).as("what grade said").isEqualTo("tick1 grade: /usr: the sandbox shows the student's "
+                + "code what is in /usr, so it cannot hide this folder's scenes from it: give the scenes a folder of "
+                + "their own" + System.lineSeparator());
+    }
     @Test
     void aFileInAnotherPackageFailsWithOneLineNamingThePackageTheTesterNeeds() throws IOException {
         CliRun run = grade(StudentSolution.correct().editSphere("package gfx.tick1;", "package tick1;"));

@@ -26,10 +26,12 @@ public final class CohortTiming {
 
     /**
      * What was measured: the cohort's size, the jobs, the wall time of the whole grade (the
-     * shared set-up included) and the median time per submission of each phase, in seconds.
+     * shared set-up included), the median time per submission of each phase, and what the control
+     * groups and the output folders' own file systems add to a submission, in seconds.
      */
     public record Measured(int submissions, int jobs, int passed, double wallSeconds, double medianCompile,
-            double medianRender, double medianCompare, double medianTotal, double cgroupPerSubmission) {
+            double medianRender, double medianCompare, double medianTotal, double cgroupPerSubmission,
+            double outputDiskPerSubmission) {
 
         /** The wall time of the whole grade shared out over the submissions. */
         public double wallPerSubmission() {
@@ -47,11 +49,12 @@ public final class CohortTiming {
     }
 
     /**
-     * The sandbox runs of one submission, each in a control group of its own: tick1.xml with the
-     * probes, and the hidden scene (the job's warm compiler has one group for all its compiles).
+     * The sandbox runs of one submission, each in a control group and with an output file system of
+     * its own: tick1.xml with the probes, and the hidden scene (the job's warm compiler has one group
+     * for all its compiles, and writes to the grader's disk).
      */
     public static final int RUNS_PER_SUBMISSION = 2;
-    /** How many times the parts of a control group's cost are timed. */
+    /** How many times the parts of a control group's cost, and an output file system's, are timed. */
     private static final int CGROUP_PROBES = 51;
 
     /** {@code tick1 grade}'s default --memory. */
@@ -105,7 +108,8 @@ public final class CohortTiming {
                     median(phases.stream().mapToLong(SubmissionGrader.Phases::renderNanos).toArray()),
                     median(phases.stream().mapToLong(SubmissionGrader.Phases::compareNanos).toArray()),
                     median(done.results().stream().mapToLong(r -> r.time().toNanos()).toArray()),
-                    RUNS_PER_SUBMISSION * sandbox.cgroupSeconds(CGROUP_PROBES));
+                    RUNS_PER_SUBMISSION * sandbox.cgroupSeconds(CGROUP_PROBES),
+                    RUNS_PER_SUBMISSION * sandbox.outputDiskSeconds(CGROUP_PROBES));
         } finally {
             WorkFolder.delete(work);
             WorkFolder.delete(report);

@@ -26,6 +26,11 @@ final class OutputCount {
     static final long BYTES_CAP = 256L << 20;
     /** The most files and folders it may make there. */
     static final int ENTRIES_CAP = 10_000;
+    /** The words for a run stopped for what it wrote, by bytes and by files and folders. */
+    static final String TOO_MANY_BYTES = "the program was stopped: it wrote more than " + Sandbox.size(BYTES_CAP)
+            + " to its output folder";
+    static final String TOO_MANY_ENTRIES = "the program was stopped: it made more than " + ENTRIES_CAP
+            + " files and folders in its output folder";
     /** The words for a run stopped for what the walk could not read. */
     static final String UNCOUNTABLE = "the program was stopped: its output folder holds something the grader cannot "
             + "count (a folder made unreadable, or deeper than a path may be long)";
@@ -84,11 +89,10 @@ final class OutputCount {
             return UNCOUNTABLE;
         }
         if (bytes[0] > BYTES_CAP) {
-            return "the program was stopped: it wrote more than " + Sandbox.size(BYTES_CAP) + " to its output folder";
+            return TOO_MANY_BYTES;
         }
         if (entries[0] > ENTRIES_CAP) {
-            return "the program was stopped: it made more than " + ENTRIES_CAP + " files and folders in its output "
-                    + "folder";
+            return TOO_MANY_ENTRIES;
         }
         return uncountable[0] ? UNCOUNTABLE : null;
     }

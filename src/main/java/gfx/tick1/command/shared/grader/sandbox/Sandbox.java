@@ -15,8 +15,9 @@ import java.util.concurrent.TimeUnit;
  *   <li>runs as an unprivileged user of its own when {@code grade} runs as root (through
  *       {@code setpriv}), with no capabilities and no way to gain any;
  *   <li>sees a read-only system ({@code /usr} and the JDK's configuration), the folders
- *       {@code grade} binds in (read-only but for its output folder) and nothing else: no home
- *       folder, no {@code /tmp}, no other process;
+ *       {@code grade} binds in (read-only but for its output folder, which is a file system of
+ *       its own when {@code grade} runs as root: {@link OutputDisk}) and nothing else: no home
+ *       folder, no {@code /tmp}, no other process, none of the organiser's scenes but its own;
  *   <li>has no network (a network namespace with nothing in it, not even the host's loopback),
  *       an empty environment, and a session and PID namespace of its own, so that it cannot
  *       type into the grader's terminal and everything it starts dies with it
@@ -78,9 +79,11 @@ public final class Sandbox {
     private final Path spaceFilter;
     /** Folders of the grader's to hide wherever the sandbox would show them: the organiser's scenes. */
     private final List<Path> secrets;
+    /** Whether each run's output folder is a file system of its own ({@link OutputDisk}). */
+    private final boolean ownDisks;
 
     private Sandbox(Path bwrap, boolean confined, int uid, int job, Cgroup.Place cgroups, Path spaceFilter,
-            List<Path> secrets) {
+            List<Path> secrets, boolean ownDisks) {
         this.bwrap = bwrap;
         this.confined = confined;
         this.cgroups = cgroups;
@@ -88,17 +91,22 @@ public final class Sandbox {
         this.job = job;
         this.spaceFilter = spaceFilter;
         this.secrets = List.copyOf(secrets);
+        this.ownDisks = ownDisks;
     }
 
     /**
-     * The same sandbox, which also hides {@code folders} (the organiser's scenes) under an empty
-     * folder of its own, should they lie in what it shows (/usr, the JDK's folders): the runs get
-     * their scenes only through the folder bound for them, never through a path of the grader's.
+     * The same sandbox, which also hides {@code paths} (the organiser's scenes and their folder),
+     * should their real paths lie in what it shows (/usr, the JDK's folders): a folder under an
+     * empty folder, a file under an empty file. The runs get their scenes only through the folder
+     * bound for them, never through a path of the grader's.
+     *
+     * @throws CannotHide when one is a folder that holds what the sandbox shows
      */
-    public Sandbox hiding(List<Path> folders) {
+    public Sandbox hiding(List<Path> paths) throws CannotHide {
         List<Path> all = new ArrayList<>(secrets);
-        all.addAll(folders);
-        return new Sandbox(bwrap, confined, uid, job, cgroups, spaceFilter, all);
+        all.addAll(paths);
+        secretsShown(shown(), all);
+        return new Sandbox(bwrap, confined, uid, job, cgroups, spaceFilter, all, ownDisks);
     }
 
     /**
@@ -111,7 +119,7 @@ public final class Sandbox {
             throw new IllegalArgumentException("job " + job + ": must be from 0 to " + (MOST_JOBS - 1));
         }
         return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + job * JOB_UID_STEP, job, cgroups, spaceFilter,
-                secrets);
+                secrets, ownDisks);
     }
 
     /**
@@ -121,12 +129,12 @@ public final class Sandbox {
      */
     public Sandbox forCompiler() {
         return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job, cgroups,
-                spaceFilter, secrets);
+                spaceFilter, secrets, ownDisks);
     }
 
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
     public static Sandbox unconfined() {
-        return new Sandbox(null, false, -1, 0, null, null, List.of());
+        return new Sandbox(null, false, -1, 0, null, null, List.of(), false);
     }
 
     /**
@@ -156,7 +164,7 @@ public final class Sandbox {
         }
         Sandbox sandbox = new Sandbox(bwrap, true,
                 root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0, Cgroup.find(),
-                spaceFilter, List.of());
+                spaceFilter, List.of(), root && canMountOutputDisks());
         sandbox.selfTest();
         return sandbox;
     }
@@ -192,6 +200,40 @@ public final class Sandbox {
         return !confined || spaceFilter != null ? null
                 : "tick1 has no seccomp filter for this machine (" + System.getProperty("os.arch") + "): disk space "
                         + "the code reserves with fallocate is not counted in its output folder's limit";
+    }
+
+    /**
+     * Null when each run's output folder is a file system of its own whose size and number of
+     * files the kernel enforces; else the one line that says it is not.
+     */
+    public String diskNotEnforced() {
+        return !confined || ownDisks ? null
+                : (uid < 0 ? "grading as a normal user" : "no file system can be mounted here")
+                        + ": the output folder of each run is on the host's disk, held to its limit by a count of "
+                        + "its files' names, which misses files the code deletes while it holds them open";
+    }
+
+    /**
+     * The file system of one run's output folder {@code folder}, an empty folder this sandbox has
+     * {@link #share shared} for writing: a tmpfs of its own where the sandbox can mount one (close
+     * it once the folder is read), else the folder as it is.
+     */
+    OutputDisk outputDisk(Path folder) throws IOException {
+        return ownDisks ? OutputDisk.mount(folder, uid) : OutputDisk.onHostDisk(folder);
+    }
+
+    /** Whether this grader can mount each run a tmpfs of its own: it mounts one, in a new temporary folder. */
+    private static boolean canMountOutputDisks() {
+        try {
+            Path scratch = Files.createTempDirectory("tick1-mount-");
+            try {
+                return OutputDisk.canMount(scratch);
+            } finally {
+                Files.deleteIfExists(scratch);
+            }
+        } catch (IOException e) {
+            return false;
+        }
     }
 
     /** A control group for one run held to {@code totals}, or null when none can be made. */
@@ -248,7 +290,7 @@ public final class Sandbox {
      * {@code oneCore}, on one processor core only.
      */
     List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB, boolean oneCore,
-            Cgroup cgroup) {
+            Cgroup cgroup) throws CannotHide {
         if (!confined) {
             return command;
         }
@@ -284,24 +326,32 @@ public final class Sandbox {
         if (Files.isDirectory(JAVA_CONFIG)) {
             wrapped.addAll(List.of("--ro-bind", JAVA_CONFIG.toString(), JAVA_CONFIG.toString()));
         }
-        Path javaHome = Path.of(System.getProperty("java.home")).toAbsolutePath();
-        List<Path> shown = new ArrayList<>(List.of(Path.of("/usr")));
-        if (Files.isDirectory(JAVA_CONFIG)) {
-            shown.add(JAVA_CONFIG);
-        }
+        Path javaHome = javaHome();
         if (!javaHome.startsWith("/usr")) {
             wrapped.addAll(List.of("--ro-bind", javaHome.toString(), javaHome.toString()));
-            shown.add(javaHome);
         }
-        // tick1 itself, the organiser's scenes and the grader's temporary folder (every work folder, with
-        // the hidden scenes each job copies) may lie in what is shown: hide them, so that there is no
-        // renderer to copy and no scene to read but those bound in for the run.
+        // tick1 itself and the grader's temporary folder (every work folder, with the hidden scenes each
+        // job copies) may lie in what is shown: hide them, so that there is no renderer to copy and no
+        // scene to read but those bound in for the run.
         List<Path> hide = new ArrayList<>(ownCode());
-        hide.addAll(secrets);
         hide.add(Path.of(System.getProperty("java.io.tmpdir")));
-        for (Path system : shown) {
+        List<Path> hidden = new ArrayList<>();
+        for (Path system : shown()) {
             for (Path folder : foldersUnder(system, hide)) {
                 wrapped.addAll(List.of("--size", Long.toString(HIDING_BYTES), "--tmpfs", folder.toString()));
+                hidden.add(folder);
+            }
+        }
+        // The organiser's scenes, each file and folder by its real path, wherever in what is shown.
+        for (Secret secret : secretsShown(shown(), secrets)) {
+            if (hidden.stream().anyMatch(secret.path()::startsWith)) {
+                continue;
+            }
+            if (secret.folder()) {
+                wrapped.addAll(List.of("--size", Long.toString(HIDING_BYTES), "--tmpfs", secret.path().toString()));
+                hidden.add(secret.path());
+            } else {
+                wrapped.addAll(List.of("--ro-bind", "/dev/null", secret.path().toString()));
             }
         }
         // Every tmpfs has a size, and / and /dev (bwrap's own, of half the host's memory) are read-only.
@@ -351,6 +401,69 @@ public final class Sandbox {
             // The class path above is all there is to hide.
         }
         return code;
+    }
+
+    /** The JDK this program runs on, which the sandbox shows for the harness's JVM. */
+    private static Path javaHome() {
+        return Path.of(System.getProperty("java.home")).toAbsolutePath();
+    }
+
+    /** The host's folders the sandbox shows, read-only: /usr, the JDK's configuration, the JDK if elsewhere. */
+    private static List<Path> shown() {
+        List<Path> shown = new ArrayList<>(List.of(Path.of("/usr")));
+        if (Files.isDirectory(JAVA_CONFIG)) {
+            shown.add(JAVA_CONFIG);
+        }
+        if (!javaHome().startsWith("/usr")) {
+            shown.add(javaHome());
+        }
+        return shown;
+    }
+
+    /** One of the organiser's scenes, or their folder, by its real path: hidden under an empty folder or file. */
+    record Secret(Path path, boolean folder) {
+    }
+
+    /**
+     * The real paths of {@code secrets} (files and folders, or links to them) that lie in one of
+     * {@code shown}, the folders the sandbox shows, the folders before the files. A secret that
+     * cannot be read is not there to hide.
+     *
+     * @throws CannotHide for a folder that is one of {@code shown} or holds one: hiding it would hide
+     *     what the runs need
+     */
+    static List<Secret> secretsShown(List<Path> shown, List<Path> secrets) throws CannotHide {
+        List<Secret> folders = new ArrayList<>(), files = new ArrayList<>();
+        for (Path secret : secrets) {
+            Path real;
+            try {
+                real = secret.toRealPath();
+            } catch (IOException e) {
+                continue;
+            }
+            boolean folder = Files.isDirectory(real);
+            for (Path system : shown) {
+                if (folder && system.startsWith(real)) {
+                    throw new CannotHide(secret + ": the sandbox shows the student's code what is in " + system
+                            + ", so it cannot hide this folder's scenes from it: give the scenes a folder of "
+                            + "their own");
+                }
+            }
+            if (shown.stream().anyMatch(real::startsWith)) {
+                (folder ? folders : files).add(new Secret(real, folder));
+            }
+        }
+        folders.addAll(files);
+        return folders;
+    }
+
+    /** Why the sandbox cannot hide the organiser's scenes: in one line for the organiser. */
+    public static final class CannotHide extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        CannotHide(String reason) {
+            super(reason);
+        }
     }
 
     /**
@@ -437,6 +550,31 @@ public final class Sandbox {
             shell[i] = timeStart("/bin/sh", "-c", "exec /usr/bin/true") - timeStart("/usr/bin/true");
         }
         return (median(group) + median(shell)) / 1e9;
+    }
+
+    /**
+     * What its own output file system adds to one run in the sandbox, in seconds: the median of
+     * {@code runs} times mounting one, counting it once as a run's end does, and unmounting it; NaN
+     * where the runs' output folders are on the host's disk.
+     */
+    public double outputDiskSeconds(int runs) throws IOException {
+        if (!confined || !ownDisks) {
+            return Double.NaN;
+        }
+        Path folder = Files.createTempDirectory("tick1-disk-");
+        try {
+            long[] times = new long[runs];
+            for (int i = 0; i < runs; i++) {
+                long start = System.nanoTime();
+                try (OutputDisk disk = outputDisk(folder)) {
+                    disk.overCap();
+                }
+                times[i] = System.nanoTime() - start;
+            }
+            return median(times) / 1e9;
+        } finally {
+            WorkFolder.delete(folder);
+        }
     }
 
     private static long timeStart(String... command) throws IOException, InterruptedException {

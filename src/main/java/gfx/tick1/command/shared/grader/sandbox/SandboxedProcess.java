@@ -34,10 +34,11 @@ final class SandboxedProcess {
     /**
      * What to run: the harness's arguments, the folders bound in, the time limit (until the
      * harness logs "compiled" in {@code progress} when that is given, and {@code thenLimit} from
-     * then on), the heap, whether it runs the student's code (on one core) and the JVM's options.
+     * then on), the heap, whether it runs the student's code (on one core), the JVM's options, and
+     * the file system of the one folder it may write, whose caps the run is held to (or null).
      */
     record Request(List<String> harnessArguments, List<Bind> binds, Duration timeLimit, Path progress,
-            Duration thenLimit, int heapMegabytes, boolean studentCode, List<String> javaOptions, Path output) {
+            Duration thenLimit, int heapMegabytes, boolean studentCode, List<String> javaOptions, OutputDisk output) {
     }
 
     /**
@@ -93,8 +94,7 @@ final class SandboxedProcess {
                 String reached = started.limitReached();
                 // Counted once more now that nothing of the run's can write: what it wrote after the last
                 // count, or in the moments before it ended, counts as much as what it wrote before.
-                String over = waited.overOutputCap() != null ? waited.overOutputCap()
-                        : OutputCount.overCap(request.output());
+                String over = waited.overOutputCap() != null ? waited.overOutputCap() : overCap(request);
                 return new Run(waited.finished() && over == null, process.exitValue(),
                         ChildOutput.printable(tail.text()), waited.compiledAt() >= 0, waited.compileNanos(),
                         over != null ? over : reached);
@@ -175,7 +175,7 @@ final class SandboxedProcess {
             }
             if (now - counted >= TimeUnit.MILLISECONDS.toNanos(COUNT_EVERY_MILLIS)) {
                 counted = now;
-                String over = OutputCount.overCap(request.output());
+                String over = overCap(request);
                 if (over != null) {
                     return new Waited(false, compiledAt, compileNanos, over);
                 }
@@ -184,6 +184,11 @@ final class SandboxedProcess {
                 return new Waited(false, compiledAt, compileNanos, null);
             }
         }
+    }
+
+    /** What the run holds beyond its output folder's caps, in words for the student, or null. */
+    private static String overCap(Request request) {
+        return request.output() == null ? null : request.output().overCap();
     }
 
     /**

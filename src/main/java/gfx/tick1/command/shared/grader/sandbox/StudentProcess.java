@@ -135,10 +135,23 @@ public final class StudentProcess implements AutoCloseable {
         if (compiler != null) {
             return compileWarm(sources, output, sphereName, rendererName, timeLimit);
         }
-        Run run = run(new Request(List.of("compile", SOURCES, OUTPUT, sphereName, rendererName),
-                List.of(new Bind(sources, SOURCES, false), new Bind(output, OUTPUT, true)),
-                timeLimit, null, Duration.ZERO, compilerHeap(), false, archiveOption(), output));
-        return compiled(run, output, timeLimit);
+        // Written in a folder of its own, whose class files are copied into output: what else the compile
+        // left goes with its file system.
+        Path written = Files.createDirectory(output.resolve("written"));
+        sandbox.share(written, true);
+        try (OutputDisk disk = sandbox.outputDisk(written)) {
+            Run run = run(new Request(List.of("compile", SOURCES, OUTPUT, sphereName, rendererName),
+                    List.of(new Bind(sources, SOURCES, false), new Bind(written, OUTPUT, true)),
+                    timeLimit, null, Duration.ZERO, compilerHeap(), false, archiveOption(), disk));
+            Compiled compiled = compiled(run, written, timeLimit);
+            if (compiled.compiled()) {
+                copyClasses(written.resolve(StudentHarness.CLASSES_FOLDER),
+                        output.resolve(StudentHarness.CLASSES_FOLDER));
+            }
+            return compiled;
+        } finally {
+            WorkFolder.delete(written);
+        }
     }
 
     /**
@@ -227,18 +240,20 @@ public final class StudentProcess implements AutoCloseable {
             arguments.add(1, StudentHarness.PROBES);
         }
         sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
-        Run run = run(new Request(arguments, List.of(new Bind(sources, SOURCES, false),
-                new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), timeLimit,
-                output.resolve(StudentHarness.PROGRESS_FILE), timeLimit, memoryMegabytes, true, archiveOption(),
-                output));
-        if (!run.compiledSeen()) {
-            Compiled compiled = compiled(run, output, timeLimit);
-            return new CompiledAndRendered(compiled.compiled()
-                    ? new Compiled(List.of(), "the compiler stopped without logging that it had finished") : compiled,
-                    null, run.compileNanos());
+        try (OutputDisk disk = sandbox.outputDisk(output)) {
+            Run run = run(new Request(arguments, List.of(new Bind(sources, SOURCES, false),
+                    new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), timeLimit,
+                    output.resolve(StudentHarness.PROGRESS_FILE), timeLimit, memoryMegabytes, true, archiveOption(),
+                    disk));
+            if (!run.compiledSeen()) {
+                Compiled compiled = compiled(run, output, timeLimit);
+                return new CompiledAndRendered(compiled.compiled()
+                        ? new Compiled(List.of(), "the compiler stopped without logging that it had finished")
+                        : compiled, null, run.compileNanos());
+            }
+            return new CompiledAndRendered(new Compiled(List.of(), null),
+                    rendered(run, output, sceneFiles, width, height, timeLimit), run.compileNanos());
         }
-        return new CompiledAndRendered(new Compiled(List.of(), null),
-                rendered(run, output, sceneFiles, width, height, timeLimit), run.compileNanos());
     }
 
     /** What a run that compiled (or tried to) says about compiling. */
@@ -286,10 +301,12 @@ public final class StudentProcess implements AutoCloseable {
             arguments.add(1, StudentHarness.PROBES);
         }
         sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
-        Run run = run(new Request(arguments, List.of(new Bind(classes, CLASSES, false),
-                new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), timeLeft, null, Duration.ZERO,
-                memoryMegabytes, true, archiveOption(), output));
-        return rendered(run, output, sceneFiles, width, height, timeLimit);
+        try (OutputDisk disk = sandbox.outputDisk(output)) {
+            Run run = run(new Request(arguments, List.of(new Bind(classes, CLASSES, false),
+                    new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), timeLeft, null, Duration.ZERO,
+                    memoryMegabytes, true, archiveOption(), disk));
+            return rendered(run, output, sceneFiles, width, height, timeLimit);
+        }
     }
 
     private Result rendered(Run run, Path output, List<String> sceneFiles, int width, int height, Duration timeLimit)
@@ -374,20 +391,22 @@ public final class StudentProcess implements AutoCloseable {
         sandbox.share(work, false);
         Path output = Files.createDirectory(work.resolve("output"));
         sandbox.share(output, true);
-        // With the probes, so that the classes they load are in the archive too.
-        Run run = run(new Request(List.of("render", StudentHarness.PROBES, StudentHarness.COMPILE_FIRST, SOURCES,
-                "Sphere.java", "Renderer.java", OUTPUT, "8", "6", SCENES + "/0.xml"),
-                List.of(new Bind(sources, SOURCES, false),
-                new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), ARCHIVE_TIME_LIMIT, null,
-                Duration.ZERO, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false,
-                List.of("-XX:ArchiveClassesAtExit=" + inside(output, OUTPUT) + "/" + SHARED_ARCHIVE), output));
-        Path archive = output.resolve(SHARED_ARCHIVE);
-        // Without the image the run never reached ImageIO and the render: the archive would miss them.
-        if (!run.finished() || !ChildOutput.isRegularFile(archive)
-                || !ChildOutput.isRegularFile(output.resolve("0.png"))) {
-            return this;
+        try (OutputDisk disk = sandbox.outputDisk(output)) {
+            // With the probes, so that the classes they load are in the archive too.
+            Run run = run(new Request(List.of("render", StudentHarness.PROBES, StudentHarness.COMPILE_FIRST,
+                    SOURCES, "Sphere.java", "Renderer.java", OUTPUT, "8", "6", SCENES + "/0.xml"),
+                    List.of(new Bind(sources, SOURCES, false),
+                    new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), ARCHIVE_TIME_LIMIT, null,
+                    Duration.ZERO, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false,
+                    List.of("-XX:ArchiveClassesAtExit=" + inside(output, OUTPUT) + "/" + SHARED_ARCHIVE), disk));
+            Path archive = output.resolve(SHARED_ARCHIVE);
+            // Without the image the run never reached ImageIO and the render: the archive would miss them.
+            if (!run.finished() || !ChildOutput.isRegularFile(archive)
+                    || !ChildOutput.isRegularFile(output.resolve("0.png"))) {
+                return this;
+            }
+            Files.copy(archive, folder.resolve(SHARED_ARCHIVE));
         }
-        Files.move(archive, folder.resolve(SHARED_ARCHIVE));
         Files.setPosixFilePermissions(folder.resolve(SHARED_ARCHIVE), PosixFilePermissions.fromString("r--r--r--"));
         return new StudentProcess(sandbox, harness, memoryMegabytes, folder, null);
     }

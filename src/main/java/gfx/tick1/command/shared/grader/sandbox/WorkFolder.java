@@ -10,7 +10,7 @@ import java.nio.file.Path;
 import java.nio.file.SimpleFileVisitor;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.PosixFilePermissions;
-import java.util.concurrent.TimeUnit;
+import java.util.List;
 import java.util.regex.Pattern;
 
 /**
@@ -40,6 +40,7 @@ public final class WorkFolder {
      *     folder itself (the names inside it are the student's, and may hold anything)
      */
     public static synchronized String delete(Path folder) {
+        OutputDisk.detachAllUnder(folder);   // a run's file system still mounted there, on Ctrl-C
         if (deleteByWalking(folder) || deleteWithRm(folder)) {
             return null;
         }
@@ -97,42 +98,9 @@ public final class WorkFolder {
      */
     private static boolean deleteWithRm(Path folder) {
         String name = folder.toString();
-        run("/bin/chmod", "-R", "u+rwx", "--", name);   // what it cannot change, rm reports by failing
-        return run("/bin/rm", "-rf", "--one-file-system", "--", name)
+        Commands.run(List.of("/bin/chmod", "-R", "u+rwx", "--", name));   // what it cannot change, rm reports
+        return Commands.run(List.of("/bin/rm", "-rf", "--one-file-system", "--", name))
                 && !Files.exists(folder, LinkOption.NOFOLLOW_LINKS);
-    }
-
-    /**
-     * Runs a command to its end, at most two minutes, whatever this thread's interrupt status (the
-     * grade may be stopping: the folder must still go); whether it exited 0.
-     */
-    private static boolean run(String... command) {
-        Process process;
-        try {
-            process = new ProcessBuilder(command).redirectErrorStream(true)
-                    .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-        } catch (IOException e) {
-            return false;   // no such program here
-        }
-        long deadline = System.nanoTime() + TimeUnit.MINUTES.toNanos(2);
-        boolean interrupted = false;
-        try {
-            while (true) {
-                try {
-                    if (process.waitFor(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS)) {
-                        return process.exitValue() == 0;
-                    }
-                    process.destroyForcibly();
-                    return false;
-                } catch (InterruptedException e) {
-                    interrupted = true;
-                }
-            }
-        } finally {
-            if (interrupted) {
-                Thread.currentThread().interrupt();
-            }
-        }
     }
 
     /**

@@ -1,6 +1,7 @@
 package gfx.tick1.command.shared.grader.sandbox;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -9,7 +10,10 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** What the sandbox hides of the grader's own code when that is installed inside the system it shows. */
+/**
+ * What the sandbox hides of the grader's own code when that is installed inside the system it
+ * shows, and of the organiser's scenes wherever they really are.
+ */
 class SandboxTest {
 
     @TempDir
@@ -34,5 +38,37 @@ class SandboxTest {
         Path system = Files.createDirectories(dir.resolve("usr"));
         Path jar = Files.writeString(system.resolve("tick1.jar"), "a jar");
         assertThat(Sandbox.foldersUnder(system.toRealPath(), List.of(jar, system))).isEmpty();
+    }
+
+    @Test
+    void aSceneLinkedToAFileDirectlyInTheSystemIsHiddenAsThatFile() throws IOException {
+        Path system = Files.createDirectories(dir.resolve("usr"));
+        Path real = Files.writeString(system.resolve("hidden.xml"), "<scene/>");
+        Path scenes = Files.createDirectories(dir.resolve("home/scenes"));
+        Path link = Files.createSymbolicLink(scenes.resolve("hidden.xml"), real);
+
+        assertThat(Sandbox.secretsShown(List.of(system.toRealPath()), List.of(scenes, link)))
+                .as("the scenes folder is not shown; the file it links to is")
+                .containsExactly(new Sandbox.Secret(real.toRealPath(), false));
+    }
+
+    @Test
+    void aScenesFolderInTheSystemIsHiddenAsAFolderBeforeAnyFile() throws IOException {
+        Path system = Files.createDirectories(dir.resolve("usr"));
+        Path scenes = Files.createDirectories(system.resolve("share/scenes"));
+        Path scene = Files.writeString(scenes.resolve("hidden.xml"), "<scene/>");
+
+        assertThat(Sandbox.secretsShown(List.of(system.toRealPath()), List.of(scene, scenes))).containsExactly(
+                new Sandbox.Secret(scenes.toRealPath(), true), new Sandbox.Secret(scene.toRealPath(), false));
+    }
+
+    @Test
+    void aScenesFolderThatHoldsTheSystemIsRefusedInOneLine() throws IOException {
+        Path system = Files.createDirectories(dir.resolve("usr"));
+
+        assertThatThrownBy(() -> Sandbox.secretsShown(List.of(system.toRealPath()), List.of(dir)))
+                .isInstanceOf(Sandbox.CannotHide.class)
+                .hasMessage(dir + ": the sandbox shows the student's code what is in " + system.toRealPath()
+                        + ", so it cannot hide this folder's scenes from it: give the scenes a folder of their own");
     }
 }
