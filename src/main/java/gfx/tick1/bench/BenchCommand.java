@@ -61,8 +61,8 @@ public final class BenchCommand implements Callable<Integer> {
     private CommandSpec spec;
 
     @Option(names = "--quick", description = "Small frames, each whole run once and a cohort of 2: for CI, a "
-            + "check that everything runs and each goal is measured (coarsely), not a measure of speed. The full run "
-            + "is for people.")
+            + "check that everything runs and each goal is measured (coarsely), not a measure of speed. About half a "
+            + "minute on two cores, or less; more when other work keeps them busy. The full run is for people.")
     private boolean quick;
 
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "tick1-bench",
