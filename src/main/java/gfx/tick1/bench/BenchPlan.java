@@ -5,8 +5,9 @@ import java.util.List;
 /**
  * How much a benchmark run does: the frames and repetitions of the in-process variants, the crowds,
  * how many times each fresh process is timed, the big frame of the C yardstick's goal and the
- * cohort's size. The quick plan is the full one made smaller in every part, so that it runs in
- * about half a minute on two cores and still measures all three goals, more coarsely.
+ * cohort's size. The quick plan is the full one made smaller in every part, so that it stays cheap
+ * on a two-core machine that other work shares, and still measures all three goals, more coarsely
+ * (docs/benchmark.md has what it costs).
  *
  * @param width the in-process tick1.xml frame's width; {@code height} its height
  * @param errorWidth the smaller frame on which each variant's error is measured; {@code errorHeight} its height
