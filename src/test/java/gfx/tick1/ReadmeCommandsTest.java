@@ -15,6 +15,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -104,6 +106,21 @@ class ReadmeCommandsTest {
             assertThat(process.waitFor()).as("%s in the kit's folder:%n%s", line, output).isZero();
             assertThat(output).as(line).doesNotContainIgnoringCase("no such file");
         }
+    }
+
+    /**
+     * The section for students sends them to work in the starter kit's folder: a scene its prose names for
+     * {@code tick1 preview} is one the kit holds there, not a file of this repository.
+     */
+    @Test
+    void theStudentSectionPreviewsASceneOfTheStarterKit(@TempDir Path dir) throws Exception {
+        assertThat(CliRun.inFolder(dir, "starter", "--out", "kit").status()).isZero();
+        String readme = Files.readString(Path.of("README.md"));
+        String section = readme.substring(readme.indexOf("## For students"), readme.indexOf("## For course staff"));
+        Matcher preview = Pattern.compile("`tick1 preview ([^`]+)`").matcher(section);
+        assertThat(preview.find()).as("the section for students shows tick1 preview").isTrue();
+        assertThat(dir.resolve("kit").resolve(preview.group(1))).as("the scene it previews, in the kit's folder")
+                .isRegularFile();
     }
 
     @ParameterizedTest(name = "{0}")

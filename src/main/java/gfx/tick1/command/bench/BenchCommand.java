@@ -60,8 +60,9 @@ public final class BenchCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Option(names = "--quick", description = "Small frames, few runs and a cohort of 4: for CI, a check that "
-            + "everything runs, not a measure of speed. The full run is for people.")
+    @Option(names = "--quick", description = "Small frames, each whole run once and a cohort of 2: for CI, a "
+            + "check that everything runs and each goal is measured (coarsely), not a measure of speed. About half a "
+            + "minute on two cores, or less; more when other work keeps them busy. The full run is for people.")
     private boolean quick;
 
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "tick1-bench",
@@ -98,7 +99,7 @@ public final class BenchCommand implements Callable<Integer> {
     private int run() throws IOException {
         log = spec.commandLine().getOut();
         Files.createDirectories(out);
-        Settings settings = quick ? Settings.QUICK : Settings.FULL;
+        BenchPlan plan = quick ? BenchPlan.QUICK : BenchPlan.FULL;
         int cores = Runtime.getRuntime().availableProcessors();
 
         Path tick1File = BundledScenes.extract(BundledScenes.TICK1, scenes);
@@ -108,19 +109,19 @@ public final class BenchCommand implements Callable<Integer> {
         log.printf("tick1 bench (%s): %s, Java %s%n", quick ? "quick" : "full", count(cores, "core"),
                 System.getProperty("java.version"));
 
-        BufferedImage truth = new TruthRenderer(settings.errorWidth, settings.errorHeight).render(tick1);
-        BufferedImage manySamples = new FastRenderer(settings.errorWidth, settings.errorHeight,
+        BufferedImage truth = new TruthRenderer(plan.errorWidth(), plan.errorHeight()).render(tick1);
+        BufferedImage manySamples = new FastRenderer(plan.errorWidth(), plan.errorHeight(),
                 new SamplePattern(256)).render(tick1);
         for (RenderSetting setting : tick1Settings(cores)) {
             boolean antiAliased = setting.samples() > 1;
-            results.add(measure(setting, "tick1.xml", tick1, settings.width, settings.height, settings,
+            results.add(measure(setting, "tick1.xml", tick1, plan.width(), plan.height(), plan,
                     antiAliased ? "256 samples" : "truth", antiAliased ? manySamples : truth));
         }
-        for (int count : settings.crowds) {
+        for (int count : plan.crowds()) {
             Path file = scenes.resolve("crowd-" + count + ".xml");
             Files.writeString(file, CrowdScene.xml(count));
             Scene crowd = load(file);
-            BufferedImage bruteForce = new FastRenderer(settings.errorWidth, settings.errorHeight, new SamplePattern(1),
+            BufferedImage bruteForce = new FastRenderer(plan.errorWidth(), plan.errorHeight(), new SamplePattern(1),
                     FastRenderer.SphereSearch.BRUTE_FORCE, Intersection.DEFAULT).render(crowd);
             for (FastRenderer.SphereSearch search : new FastRenderer.SphereSearch[] {
                 FastRenderer.SphereSearch.BRUTE_FORCE, FastRenderer.SphereSearch.BVH}) {
@@ -129,20 +130,20 @@ public final class BenchCommand implements Callable<Integer> {
                         (s, w, h) -> new FastRenderer(w, h, new SamplePattern(1), search, Intersection.DEFAULT)
                                 .render(s));
                 // Brute force over 10,000 spheres takes seconds a frame: fewer runs for the crowds.
-                results.add(measure(setting, file.getFileName().toString(), crowd, settings.crowdWidth,
-                        settings.crowdWidth * 3 / 4, settings.withRuns(1, Math.min(settings.runs, 3)), "brute force",
+                results.add(measure(setting, file.getFileName().toString(), crowd, plan.crowdWidth(),
+                        plan.crowdWidth() * 3 / 4, plan.withRuns(1, Math.min(plan.runs(), 3)), "brute force",
                         bruteForce));
             }
         }
 
-        Map<String, String> png = pngEncoding(tick1, settings);
-        ProcessRuns runs = new ProcessRuns();
-        Whole whole = wholeRuns(runs, settings, tick1File, tick1);
+        Map<String, String> png = pngEncoding(tick1, plan);
+        ProcessRuns runs = new ProcessRuns(plan.warmUpProcesses());
+        Whole whole = wholeRuns(runs, plan, tick1File, tick1);
 
         BenchReport report = new BenchReport(quick, cores, results, png, runs.describe(), whole);
         report.write(out);
-        CohortTiming.Measured cohort = CohortSection.appendTo(out.resolve("report.md"), quick, log);
-        Goals goals = new Goals(quick, whole, cohort);
+        CohortTiming.Measured cohort = CohortSection.appendTo(out.resolve("report.md"), plan.cohort(), log);
+        Goals goals = new Goals(quick, plan, whole, cohort);
         Files.writeString(out.resolve("report.md"), goals.markdown(), StandardCharsets.UTF_8,
                 StandardOpenOption.APPEND);
         goals.print(log);
@@ -151,20 +152,8 @@ public final class BenchCommand implements Callable<Integer> {
         return EXIT_OK;
     }
 
-    /** Frame sizes, repetitions and scenes for the two modes. */
-    private record Settings(int width, int height, int errorWidth, int errorHeight, int warmups, int runs,
-            int[] crowds, int crowdWidth, int processRuns) {
-        static final Settings FULL = new Settings(3840, 2160, 640, 480, 6, 7, new int[] {1_000, 10_000}, 640, 11);
-        // About a minute on two cores: a quarter of the pixels of 640 x 480 (the crowd's too), two of each whole run.
-        static final Settings QUICK = new Settings(320, 240, 160, 120, 1, 3, new int[] {1_000}, 320, 2);
-
-        Settings withRuns(int warmups, int runs) {
-            return new Settings(width, height, errorWidth, errorHeight, warmups, runs, crowds, crowdWidth, processRuns);
-        }
-    }
-
     /**
-     * The render settings, in the order they run. The default comes first: everything the JIT learns
+     * The render plan, in the order they run. The default comes first: everything the JIT learns
      * from the others (other intersection methods, the readable classes) only slows later code,
      * and a user's render runs the default alone.
      */
@@ -196,9 +185,9 @@ public final class BenchCommand implements Callable<Integer> {
     }
 
     private Result measure(RenderSetting setting, String sceneName, Scene scene, int width, int height,
-            Settings settings, String errorAgainst, BufferedImage reference) {
+            BenchPlan plan, String errorAgainst, BufferedImage reference) {
         Timing timing = Timing.of(() -> setting.frame().render(scene, width, height), setting.threads(),
-                settings.warmups, settings.runs);
+                plan.warmups(), plan.runs());
         BufferedImage small = setting.frame().render(scene, reference.getWidth(), reference.getHeight());
         Result result = new Result(setting.name(), sceneName, width, height, setting.samples(), setting.threads(),
                 timing, errorAgainst, ImageDifference.between(reference, small), reference.getWidth(),
@@ -216,8 +205,8 @@ public final class BenchCommand implements Callable<Integer> {
     }
 
     /** ImageIO's PNG writer at several deflate levels on the benchmark's largest tick1 frame: time and size. */
-    private Map<String, String> pngEncoding(Scene scene, Settings settings) throws IOException {
-        BufferedImage frame = new FastRenderer(settings.width, settings.height, new SamplePattern(1)).render(scene);
+    private Map<String, String> pngEncoding(Scene scene, BenchPlan plan) throws IOException {
+        BufferedImage frame = new FastRenderer(plan.width(), plan.height(), new SamplePattern(1)).render(scene);
         Map<String, String> rows = new LinkedHashMap<>();
         Map<String, Encoder> encoders = new LinkedHashMap<>();
         encoders.put("ImageIO, deflate level 1", (image, stream) -> PngOutput.write(image, stream, 1));
@@ -235,7 +224,7 @@ public final class BenchCommand implements Callable<Integer> {
                 }
                 size[0] = bytes.size();
                 return null;
-            }, Runtime.getRuntime().availableProcessors(), settings.warmups, settings.runs);
+            }, Runtime.getRuntime().availableProcessors(), plan.warmups(), plan.runs());
             rows.put(encoder.getKey(), String.format("%.1f ms | %,d bytes", timing.median(), size[0]));
             log.printf("  PNG %-45s %8.1f ms %,12d bytes%n", encoder.getKey(), timing.median(), size[0]);
         }
@@ -250,44 +239,45 @@ public final class BenchCommand implements Callable<Integer> {
      * Whole runs in fresh processes. {@code courseCode} and {@code scalarC} are the yardsticks run
      * in turn with tick1's runs beside them ({@code startup} and {@code endToEnd}), or null with
      * the reason in {@code courseCodeMissing} and {@code scalarCMissing}; {@code scalarCDiffering}
-     * counts the pixels where the C tracer's image differs from tick1's.
+     * counts the pixels where the C tracer's image differs from tick1's; {@code processes} is how many
+     * processes the runs started (the yardsticks' builds not counted).
      */
     record Whole(Map<String, Double> phases, Timing startup, Timing courseCode, String courseCodeMissing,
             Timing handoutStyle, Timing crowd10, Timing crowd10k, Timing endToEnd, String endToEndSize,
-            Timing scalarC, String scalarCMissing, long scalarCDiffering) {
+            Timing scalarC, String scalarCMissing, long scalarCDiffering, int processes) {
     }
 
-    private Whole wholeRuns(ProcessRuns runs, Settings settings, Path tick1File, Scene tick1) throws IOException {
+    private Whole wholeRuns(ProcessRuns runs, BenchPlan plan, Path tick1File, Scene tick1) throws IOException {
         Path image = scenes.resolve("whole-run.png");
         String scene = tick1File.toString();
         Path yardsticks = Files.createDirectories(scenes.resolve("yardsticks"));
-        Map<String, Double> phases = runs.phases(settings.processRuns, "-q", "-i", scene, "-o", image.toString());
+        Map<String, Double> phases = runs.phases(plan.singleRuns(), "-q", "-i", scene, "-o", image.toString());
         List<String> small = runs.tick1Command("-q", "-i", scene, "-o", image.toString());
         Timing startup, courseCode = null;
         String courseCodeMissing = null;
         try {
             List<String> course = CourseCode.build(yardsticks, tick1File, yardsticks.resolve("course-code.png"));
-            List<Timing> pair = runs.interleaved(settings.processRuns, List.of(small, course));
+            List<Timing> pair = runs.interleaved(plan.pairedRuns(), List.of(small, course));
             startup = pair.get(0);
             courseCode = pair.get(1);
         } catch (IOException e) {
             courseCodeMissing = e.getMessage();
-            startup = runs.tick1(settings.processRuns, small.subList(1, small.size()).toArray(String[]::new));
+            startup = runs.tick1(plan.pairedRuns(), small.subList(1, small.size()).toArray(String[]::new));
         }
-        Timing handoutStyle = runs.java(settings.processRuns, HandoutStyleRender.class.getName(), scene,
+        Timing handoutStyle = runs.java(plan.singleRuns(), HandoutStyleRender.class.getName(), scene,
                 image.toString());
         Path crowd10 = scenes.resolve("crowd-10.xml"), crowd10k = scenes.resolve("crowd-10000.xml");
         Files.writeString(crowd10, CrowdScene.xml(10));
         Files.writeString(crowd10k, CrowdScene.xml(10_000));
-        Timing ten = runs.tick1(settings.processRuns, "-q", "-i", crowd10.toString(), "-o", image.toString());
-        Timing tenThousand = runs.tick1(settings.processRuns, "-q", "-i", crowd10k.toString(), "-o", image.toString());
-        int w = quick ? 1920 : 3840, h = quick ? 1080 : 2160, samples = 4;
+        Timing ten = runs.tick1(plan.singleRuns(), "-q", "-i", crowd10.toString(), "-o", image.toString());
+        Timing tenThousand = runs.tick1(plan.singleRuns(), "-q", "-i", crowd10k.toString(), "-o", image.toString());
+        int w = plan.bigWidth(), h = plan.bigHeight(), samples = 4;
         List<String> big = runs.tick1Command("-q", "-i", scene, "-o", image.toString(), "--width", "" + w,
                 "--height", "" + h, "--samples", "" + samples);
         Timing endToEnd, scalarC = null;
         String scalarCMissing = null;
         long differing = -1;
-        int bigRuns = quick ? 1 : 7;
+        int bigRuns = plan.bigRuns();
         try {
             ScalarC c = ScalarC.build(yardsticks, tick1, w, h, samples);
             List<Timing> pair = runs.interleaved(bigRuns, List.of(big, c.command()));
@@ -299,13 +289,14 @@ public final class BenchCommand implements Callable<Integer> {
             endToEnd = runs.tick1(bigRuns, big.subList(1, big.size()).toArray(String[]::new));
         }
         log.printf("  whole runs: start-up %.0f ms (course code %s, handout-style java run %.0f ms); 10 spheres %.0f "
-                + "ms, 10,000 spheres %.0f ms; %d x %d x %d samples %.0f ms (scalar C %s)%n", startup.median(),
+                + "ms, 10,000 spheres %.0f ms; %d x %d x %d samples %.0f ms (scalar C %s); %s%n", startup.median(),
                 courseCode == null ? "not run" : String.format(Locale.ROOT, "%.0f ms", courseCode.median()),
                 handoutStyle.median(), ten.median(), tenThousand.median(), w, h, samples, endToEnd.median(),
-                scalarC == null ? "not run" : String.format(Locale.ROOT, "%.0f ms", scalarC.median()));
+                scalarC == null ? "not run" : String.format(Locale.ROOT, "%.0f ms", scalarC.median()),
+                "fresh processes: " + runs.started());
         Files.deleteIfExists(image);
         return new Whole(phases, startup, courseCode, courseCodeMissing, handoutStyle, ten, tenThousand, endToEnd,
-                w + " x " + h, scalarC, scalarCMissing, differing);
+                w + " x " + h, scalarC, scalarCMissing, differing, runs.started());
     }
 
     private static Scene load(Path file) {

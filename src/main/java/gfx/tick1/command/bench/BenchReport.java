@@ -105,7 +105,10 @@ final class BenchReport {
 
     private void wholeRuns(StringBuilder md) {
         md.append("\n## Whole runs in fresh processes\n\nStarted through ").append(launcher)
-                .append("; JVM start and PNG encoding included; median of the runs.\n\n");
+                .append("; JVM start and PNG encoding included; median of the runs. ")
+                .append(whole.processes()).append(" fresh processes in all")
+                .append(quick ? ", each timed once (tick1 and the course code twice), with no untimed run before "
+                        + "it.\n\n" : ", each command run once untimed first.\n\n");
         md.append("Where the time of one 640 x 480 render of tick1.xml goes (`tick1 --timings`, medians): the main "
                 + "thread's phases (after the command line, the time it waits for each), then when the render's "
                 + "own threads, started on a guess at the command line, had loaded the scene, rendered the last "

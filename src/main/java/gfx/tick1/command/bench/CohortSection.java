@@ -18,8 +18,6 @@ import java.util.Locale;
  */
 final class CohortSection {
 
-    /** The cohort's size: a year's worth, or for --quick two rounds of the two jobs a two-core machine runs. */
-    static final int FULL_COHORT = 100, QUICK_COHORT = 4;
     /** The course grades at 640 x 480. */
     private static final int WIDTH = 640, HEIGHT = 480;
 
@@ -27,12 +25,10 @@ final class CohortSection {
     }
 
     /**
-     * Measures a cohort of {@value #FULL_COHORT} (the full run) or {@value #QUICK_COHORT} (--quick) and appends the
-     * section to {@code report};
-     * returns what was measured, or null where nothing could be.
+     * Measures a cohort of {@code count} submissions and appends the section to {@code report}; returns what was
+     * measured, or null where nothing could be.
      */
-    static CohortTiming.Measured appendTo(Path report, boolean quick, PrintWriter log) throws IOException {
-        int count = quick ? QUICK_COHORT : FULL_COHORT;
+    static CohortTiming.Measured appendTo(Path report, int count, PrintWriter log) throws IOException {
         int jobs = Runtime.getRuntime().availableProcessors();
         String section;
         CohortTiming.Measured measured = null;

@@ -24,10 +24,25 @@ final class ProcessRuns {
     private final String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
     private final String classPath = System.getProperty("java.class.path");
     private final Path launcher = findLauncher();
+    private final boolean warmUp;
+    private int started;
+
+    /**
+     * With {@code warmUp}, each command is run once untimed before its timed runs, so that its files
+     * are in the cache; without, the first run is timed too.
+     */
+    ProcessRuns(boolean warmUp) {
+        this.warmUp = warmUp;
+    }
 
     /** How the runs start tick1, for the report. */
     String describe() {
         return launcher != null ? "the installed launcher " + launcher : "java -cp (no installed launcher found)";
+    }
+
+    /** How many processes the runs have started so far, the untimed ones included. */
+    int started() {
+        return started;
     }
 
     /** The wall-clock times of {@code runs} runs of tick1 with these arguments. */
@@ -83,7 +98,7 @@ final class ProcessRuns {
      */
     List<Timing> interleaved(int runs, List<List<String>> commands) throws IOException {
         for (List<String> command : commands) {
-            run(command); // one untimed run each: the file cache, not the program, is what it warms
+            warmUp(command);
         }
         double[][] millis = new double[commands.size()][runs];
         for (int i = 0; i < runs; i++) {
@@ -101,7 +116,7 @@ final class ProcessRuns {
     }
 
     private Timing time(List<String> command, int runs) throws IOException {
-        run(command); // one untimed run: the file cache, not the program, is what it warms
+        warmUp(command);
         double[] millis = new double[runs];
         for (int i = 0; i < runs; i++) {
             long start = System.nanoTime();
@@ -111,8 +126,16 @@ final class ProcessRuns {
         return Timing.of(millis);
     }
 
+    /** One untimed run, where asked for: the file cache, not the program, is what it warms. */
+    private void warmUp(List<String> command) throws IOException {
+        if (warmUp) {
+            run(command);
+        }
+    }
+
     /** Runs a command to its end and returns what it printed on standard error. */
-    private static String run(List<String> command) throws IOException {
+    private String run(List<String> command) throws IOException {
+        started++;
         Path err = Files.createTempFile("tick1-bench", ".err");
         try {
             Process process = new ProcessBuilder(command).redirectError(err.toFile())

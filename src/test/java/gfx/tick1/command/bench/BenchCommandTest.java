@@ -11,6 +11,8 @@ import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
@@ -114,6 +116,26 @@ class BenchCommandTest {
                     "grading a cohort: wall time a submission", "at most 0.8", "at most 0.5 s");
         }
         assertThat(report).contains("## Speed goals", "| measure | this run | goal | met |");
+    }
+
+    /**
+     * Whole runs of tick1 and the yardsticks are most of a quick run's cost: each once, tick1 and the course code twice
+     * (phases, the pair of each, the handout-style run, two crowds, the big frame and the C tracer).
+     */
+    @Test
+    void aQuickRunStartsAtMostTenFreshProcessesAndSaysHowMany() throws IOException {
+        String report = Files.readString(out.resolve("report.md"));
+        Matcher count = Pattern.compile("(\\d+) fresh processes in all").matcher(report);
+        assertThat(count.find()).as("the report says how many fresh processes it started").isTrue();
+        assertThat(Integer.parseInt(count.group(1))).as("fresh processes of a quick run").isBetween(1, 10);
+        assertThat(printed).contains("fresh processes: " + count.group(1));
+    }
+
+    @Test
+    void aQuickRunSaysHowEachGoalIsMeasuredMoreCoarsely() {
+        assertThat(printed).as("the quick run's goals on the console")
+                .contains("measured coarsely: 2 runs each, not 11", "1920 x 1080, not 3840 x 2160",
+                        "a cohort of 2, not 100");
     }
 
     @Test
