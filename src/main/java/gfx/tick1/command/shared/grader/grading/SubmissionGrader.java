@@ -8,6 +8,7 @@ import gfx.tick1.command.shared.grader.harness.StudentHarness;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
+import gfx.tick1.command.shared.grader.sandbox.NoImage;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess.Outcome;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
@@ -213,7 +214,7 @@ public final class SubmissionGrader {
             }
             Duration left = Duration.ofNanos(deadline - System.nanoTime());
             if (left.toMillis() < 1) {
-                batch.forEach(scene -> outcomes.add(new Outcome.Failed(
+                batch.forEach(scene -> outcomes.add(new Outcome.Failed(NoImage.TIME_LIMIT,
                         "not rendered: the time limit was used up by the earlier scenes")));
                 batch.forEach(scene -> traces.add(null));
                 continue;
@@ -269,11 +270,18 @@ public final class SubmissionGrader {
 
     /** A scene the code gave no image for: why; for a hidden scene, a {@link HiddenVerdict}'s fixed words. */
     private static String notRendered(Grade grade, GradingScene scene, Outcome.Failed failedScene, PrintWriter out) {
-        String reason = scene.hidden() ? HiddenVerdict.ofNoImage(failedScene.reason()).words() : failedScene.reason();
+        HiddenVerdict hidden = HiddenVerdict.ofNoImage(failedScene);
+        String reason = scene.hidden() ? hidden.words() : failedScene.reason();
         out.println(scene.name() + ": FAIL: " + indent(reason));
         grade.scenes.add(new SceneResult(scene.name(), scene.hidden(), false, reason.lines().toList(),
                 null, null, null));
-        return reason.contains("time limit") ? TIME_LIMIT : reason.startsWith("the code threw") ? EXCEPTION : CRASHED;
+        // A hidden scene's category is its verdict's: the process total, not the failure beside it.
+        NoImage why = scene.hidden() && hidden == HiddenVerdict.PROCESSES ? NoImage.PROCESS_LIMIT : failedScene.why();
+        return switch (why) {
+            case TIME_LIMIT -> TIME_LIMIT;
+            case THREW -> EXCEPTION;
+            default -> CRASHED;
+        };
     }
 
     /** The verdict line, the notes of a pass, and the result with its row's reason. */
