@@ -194,8 +194,7 @@ final class SceneJudge {
         boolean exact = diagnosis.verdict() == Diagnosis.Verdict.EXPLAINED;
         boolean behaviourSays = probes.anyFailed();
         // What to reread comes from the tested findings; the image's own entry only when it matches exactly.
-        diagnosis.report().stream().filter(line -> !line.startsWith("reread:") || exact && !behaviourSays)
-                .forEach(lines::add);
+        lines.addAll(diagnosis.report(exact && !behaviourSays));
         boolean shows = !probesShown && (behaviourSays || !probes.untested().isEmpty());
         if (shows) {
             lines.addAll(probes.failureLines());
