@@ -144,6 +144,14 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
      * candidates with what to reread for each; no entry is called the closest.
      */
     public List<String> report() {
+        return report(true);
+    }
+
+    /**
+     * The diagnosis for a person, as {@link #report()} gives it, with its "reread:" line only when
+     * {@code reread}: a grade leaves it out where the tested findings, not the image, say what to reread.
+     */
+    public List<String> report(boolean reread) {
         List<String> lines = new ArrayList<>();
         Verdict verdict = verdict();
         if (verdict != Verdict.UNSURE) {
@@ -158,8 +166,8 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         List<Candidate> explaining = explaining();
         switch (verdict) {
             case CORRECT -> correct(lines, explaining.get(0));
-            case LEVEL_OFF_CORRECT -> levelOff(lines, levelOffCorrect());
-            case EXPLAINED -> explained(lines, explaining);
+            case LEVEL_OFF_CORRECT -> levelOff(lines, levelOffCorrect(), reread);
+            case EXPLAINED -> explained(lines, explaining, reread);
             case UNSURE -> unsure(lines);
             default -> throw new IllegalStateException();
         }
@@ -200,7 +208,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
     }
 
     /** Every pixel within one level of the correct render, some not equal: not correct, and why it may be so. */
-    private void levelOff(List<String> lines, Candidate correct) {
+    private void levelOff(List<String> lines, Candidate correct, boolean reread) {
         ImageDifference difference = correct.difference();
         int off = difference.differingPixels();
         lines.add("verdict: not correct: " + Counted.of(off, "pixel") + " of " + difference.totalPixels()
@@ -208,10 +216,12 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
                 + ", by 1 level in a channel; the tester, and tick1 grade, want every pixel equal.");
         lines.add("possible cause: the same formulas computed in float rather than double, or in another order "
                 + "than the handout's, round some colours to the next level.");
-        lines.add("reread: handout section 5 (compute each term in double, in the order the handout writes it).");
+        if (reread) {
+            lines.add("reread: handout section 5 (compute each term in double, in the order the handout writes it).");
+        }
     }
 
-    private void explained(List<String> lines, List<Candidate> explaining) {
+    private void explained(List<String> lines, List<Candidate> explaining, boolean reread) {
         if (explaining.size() == 1) {
             Candidate only = explaining.get(0);
             int off = only.difference().differingPixels();
@@ -220,7 +230,9 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
                     : ": every pixel within 1 level of its render" + ofTheScene() + " (" + Counted.of(off, "pixel")
                             + " 1 level off, as the same formulas in float or in another order give)."));
             lines.add("likely cause: " + only.variant().explanation() + ".");
-            lines.add("reread: handout " + only.variant().reread() + ".");
+            if (reread) {
+                lines.add("reread: handout " + only.variant().reread() + ".");
+            }
             return;
         }
         lines.add("verdict: a tie: " + titles(explaining) + " each match every pixel exactly; this "

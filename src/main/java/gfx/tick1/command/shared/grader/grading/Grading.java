@@ -130,10 +130,6 @@ public final class Grading {
     }
 
     /**
-     * The reference image of {@code scene} with {@code intersection}: rendered by the first thread
-     * that asks, and waited for by any other that asks meanwhile.
-     */
-    /**
      * Starts rendering every reference image the grade compares with, on a thread of its own, so that they
      * are ready when the student's code has run: one student's grade leaves a core idle while the code
      * compiles and runs in its own process. A reference that fails here fails again, as ever, when compared.
@@ -154,6 +150,10 @@ public final class Grading {
         ahead.start();
     }
 
+    /**
+     * The reference image of {@code scene} with {@code intersection}: rendered by the first thread
+     * that asks, and waited for by any other that asks meanwhile.
+     */
     BufferedImage reference(GradingScene scene, Intersection intersection) {
         String key = scenes.indexOf(scene) + "/" + intersection;
         CompletableFuture<BufferedImage> mine = new CompletableFuture<>();

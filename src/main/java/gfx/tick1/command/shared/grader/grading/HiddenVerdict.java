@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.grader.grading;
 
+import gfx.tick1.command.shared.grader.sandbox.StudentProcess.Outcome;
 import java.util.List;
 
 /**
@@ -50,23 +51,20 @@ public enum HiddenVerdict {
     }
 
     /**
-     * The verdict of a hidden scene that gave no image, from the reason the sandbox gave. The
-     * reason may hold the code's words (an exception's message), so whatever it says, the answer
-     * is one of the verdicts: the words decide only which.
+     * The verdict of a hidden scene that gave no image, from why the run gave none. The reason's
+     * words may hold the code's (an exception's message) and are not read: the kind alone decides.
      */
-    static HiddenVerdict ofNoImage(String reason) {
-        if (reason.startsWith("the program used more than")) {
-            return MEMORY;
-        }
-        if (reason.startsWith("the program was stopped: it")) {
-            return OUTPUT_FOLDER;
-        }
-        if (reason.lines().anyMatch(line -> line.startsWith("it reached the limit of"))) {
+    static HiddenVerdict ofNoImage(Outcome.Failed failed) {
+        if (failed.atProcessLimit()) {
             return PROCESSES;
         }
-        if (reason.startsWith("the code threw")) {
-            return THREW;
-        }
-        return reason.contains("time limit") ? TIME_LIMIT : NO_IMAGE;
+        return switch (failed.why()) {
+            case MEMORY_LIMIT -> MEMORY;
+            case DISK_LIMIT -> OUTPUT_FOLDER;
+            case PROCESS_LIMIT -> PROCESSES;
+            case THREW -> THREW;
+            case TIME_LIMIT -> TIME_LIMIT;
+            case ENDED -> NO_IMAGE;
+        };
     }
 }

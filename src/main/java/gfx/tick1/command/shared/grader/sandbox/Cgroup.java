@@ -193,18 +193,20 @@ final class Cgroup implements AutoCloseable {
     }
 
     /**
-     * The total the run reached, in words for the student, or null: the kernel's own counts of
-     * processes it killed for memory and of forks it refused.
+     * The total the run reached, or null: the kernel's own counts of processes it killed for memory
+     * and of forks it refused.
      */
-    String limitReached() {
+    LimitReached limitReached() {
         Path memory = groups.get(place.v2() ? "" : "memory");
         Path pids = groups.get(place.v2() ? "" : "pids");
         if (count(memory, place.v2() ? "memory.events" : "memory.oom_control", "oom_kill") > 0) {
-            return "the program used more than " + Sandbox.size(totals.memoryBytes()) + " of memory in all (all its "
-                    + "processes, and the files they kept in memory, together), and the kernel killed a process of it";
+            return new LimitReached(NoImage.MEMORY_LIMIT, "the program used more than "
+                    + Sandbox.size(totals.memoryBytes()) + " of memory in all (all its processes, and the files they "
+                    + "kept in memory, together), and the kernel killed a process of it");
         }
         if (count(pids, "pids.events", "max") > 0) {
-            return "it reached the limit of " + totals.processes() + " processes and threads in all";
+            return new LimitReached(NoImage.PROCESS_LIMIT,
+                    "it reached the limit of " + totals.processes() + " processes and threads in all");
         }
         return null;
     }

@@ -120,7 +120,7 @@ final class CompileServer implements AutoCloseable {
         }
         if (answer.status() == null) {
             compiler.process().waitFor(10, TimeUnit.SECONDS);
-            String reached = compiler.limitReached();
+            LimitReached reached = compiler.limitReached();
             close();
             return new Attempt(new Run(true, compiler.process().isAlive() ? -1 : compiler.process().exitValue(),
                     answer.tail(), false, 0, reached), true);
@@ -132,7 +132,8 @@ final class CompileServer implements AutoCloseable {
             // no word of it: after any compile that did not succeed, the next one gets a fresh compiler.
             close();
         }
-        return new Attempt(new Run(over == null, answer.status(), answer.tail(), false, 0, over), false);
+        return new Attempt(new Run(over == null, answer.status(), answer.tail(), false, 0,
+                over == null ? null : new LimitReached(NoImage.DISK_LIMIT, over)), false);
     }
 
     /** Whether the compiler that takes the next compile has compiled others already. */

@@ -44,10 +44,10 @@ final class SandboxedProcess {
     /**
      * How a run ended, and the end of what it printed (printable characters only); for a run that
      * compiles first, whether it was seen to finish compiling and how long that took; and the
-     * total it reached, in words for the student, or null.
+     * total it reached, or null.
      */
     record Run(boolean finished, int exitStatus, String outputTail, boolean compiledSeen, long compileNanos,
-            String limitReached) {
+            LimitReached limitReached) {
     }
 
     private final Sandbox sandbox;
@@ -91,13 +91,13 @@ final class SandboxedProcess {
                 }
                 tail.join(1000);
                 kill(process);
-                String reached = started.limitReached();
+                LimitReached reached = started.limitReached();
                 // Counted once more now that nothing of the run's can write: what it wrote after the last
                 // count, or in the moments before it ended, counts as much as what it wrote before.
                 String over = waited.overOutputCap() != null ? waited.overOutputCap() : overCap(request);
                 return new Run(waited.finished() && over == null, process.exitValue(),
                         ChildOutput.printable(tail.text()), waited.compiledAt() >= 0, waited.compileNanos(),
-                        over != null ? over : reached);
+                        over != null ? new LimitReached(NoImage.DISK_LIMIT, over) : reached);
             } finally {
                 running = null;
             }
@@ -110,8 +110,8 @@ final class SandboxedProcess {
      */
     record Started(Process process, Cgroup cgroup) implements AutoCloseable {
 
-        /** The total the run reached, in words for the student, or null. */
-        String limitReached() {
+        /** The total the run reached, or null. */
+        LimitReached limitReached() {
             return cgroup == null ? null : cgroup.limitReached();
         }
 

@@ -62,8 +62,14 @@ public final class StudentProcess implements AutoCloseable {
         record Rendered(BufferedImage image) implements Outcome {
         }
 
-        /** No image: why, in words for the student. */
-        record Failed(String reason) implements Outcome {
+        /**
+         * No image: why, as a kind and in words for the student; whether the run also reached its total of
+         * processes and threads (which does not stop it, so the scene's own failure stands beside it).
+         */
+        record Failed(NoImage why, String reason, boolean atProcessLimit) implements Outcome {
+            public Failed(NoImage why, String reason) {
+                this(why, reason, false);
+            }
         }
     }
 
@@ -259,7 +265,7 @@ public final class StudentProcess implements AutoCloseable {
     /** What a run that compiled (or tried to) says about compiling. */
     private Compiled compiled(Run run, Path output, Duration timeLimit) throws IOException {
         if (run.limitReached() != null) {
-            return new Compiled(List.of(), run.limitReached());
+            return new Compiled(List.of(), run.limitReached().words());
         }
         if (!run.finished()) {
             return new Compiled(List.of(),
@@ -315,8 +321,8 @@ public final class StudentProcess implements AutoCloseable {
         List<Outcome> outcomes = new ArrayList<>();
         for (int i = 0; i < sceneFiles.size(); i++) {
             outcomes.add(progressText == null && run.finished() && run.exitStatus() == 0
-                    ? new Outcome.Failed("no image: the log of the run's progress is missing, unreadable or not a "
-                            + "regular file (did the code remove, replace or chmod it?)")
+                    ? new Outcome.Failed(NoImage.ENDED, "no image: the log of the run's progress is missing, "
+                            + "unreadable or not a regular file (did the code remove, replace or chmod it?)")
                     : outcome(output, i, progressText == null ? List.of() : progressText.lines().toList(), run,
                             width, height, timeLimit));
         }
@@ -335,11 +341,12 @@ public final class StudentProcess implements AutoCloseable {
      * counts); the process total follows the scene's own failure, on a line of its own (which a
      * hidden scene's report leaves out with the rest of the code's words), as the run went on.
      */
-    private static Outcome withLimit(Outcome outcome, String limit) {
-        if (limit.startsWith("the program")) {
-            return new Outcome.Failed(limit);
+    private static Outcome withLimit(Outcome outcome, LimitReached limit) {
+        if (limit.stoppedTheRun()) {
+            return new Outcome.Failed(limit.kind(), limit.words());
         }
-        return outcome instanceof Outcome.Failed failed ? new Outcome.Failed(failed.reason() + "\n" + limit) : outcome;
+        return outcome instanceof Outcome.Failed failed
+                ? new Outcome.Failed(failed.why(), failed.reason() + "\n" + limit.words(), true) : outcome;
     }
 
     /**
@@ -489,27 +496,30 @@ public final class StudentProcess implements AutoCloseable {
         Path image = output.resolve(index + ".png");
         String error = ChildOutput.readText(output.resolve(index + ".error"));
         if (error != null) {
-            return new Outcome.Failed("the code threw " + error);
+            return new Outcome.Failed(NoImage.THREW, "the code threw " + error);
         }
         if (progress.contains("end " + index) && ChildOutput.isRegularFile(image)) {
             try {
                 return new Outcome.Rendered(ChildOutput.readPng(image, width, height));
             } catch (ChildOutput.Unusable e) {
-                return new Outcome.Failed("the image written for this scene is unusable: " + e.getMessage());
+                return new Outcome.Failed(NoImage.ENDED,
+                        "the image written for this scene is unusable: " + e.getMessage());
             }
         }
         if (!run.finished()) {
             if (!progress.contains("start " + index) && index > 0) {
-                return new Outcome.Failed("not rendered: the time limit was reached at an earlier scene");
+                return new Outcome.Failed(NoImage.TIME_LIMIT,
+                        "not rendered: the time limit was reached at an earlier scene");
             }
-            return new Outcome.Failed("no image within the time limit of " + describe(timeLimit)
+            return new Outcome.Failed(NoImage.TIME_LIMIT, "no image within the time limit of " + describe(timeLimit)
                     + " (an infinite loop?); the program was stopped");
         }
         if (!progress.contains("start " + index)) {
-            return new Outcome.Failed("not rendered: the run stopped at an earlier scene");
+            return new Outcome.Failed(NoImage.ENDED, "not rendered: the run stopped at an earlier scene");
         }
         int exitStatus = run.exitStatus();
-        return new Outcome.Failed("the program ended while rendering this scene, with exit status " + exitStatus
+        return new Outcome.Failed(NoImage.ENDED, "the program ended while rendering this scene, with exit status "
+                + exitStatus
                 + (exitStatus == 0 ? " (does the code call System.exit?)" : " (System.exit, or the JVM crashed)"));
     }
 

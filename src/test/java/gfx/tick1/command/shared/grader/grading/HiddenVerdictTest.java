@@ -2,6 +2,8 @@ package gfx.tick1.command.shared.grader.grading;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.command.shared.grader.sandbox.NoImage;
+import gfx.tick1.command.shared.grader.sandbox.StudentProcess.Outcome;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -20,22 +22,31 @@ class HiddenVerdictTest {
 
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
-        "the code threw java.lang.IllegalStateException: 3c 73 63 65\\n    at gfx.tick1.Renderer.leak(Renderer.java:33)"
-            + " | THREW",
-        "the code threw gfx.tick1.Leak$a9f3: the time limit | THREW",
-        "the image written for this scene is unusable: the image is 2017272368 x 774976051, expected 64 x 48"
-            + " | NO_IMAGE",
-        "the program ended while rendering this scene, with exit status 120 (System.exit, or the JVM crashed)"
-            + " | NO_IMAGE",
-        "no image within the time limit of 10 s (an infinite loop?); the program was stopped | TIME_LIMIT",
-        "not rendered: the time limit was used up by the earlier scenes | TIME_LIMIT",
-        "not rendered: the run stopped at an earlier scene | NO_IMAGE",
-        "the program used more than 1 GiB of memory in all (all its processes) | MEMORY",
-        "the program was stopped: it wrote more than 256 MiB to its output folder | OUTPUT_FOLDER",
-        "the code threw java.lang.OutOfMemoryError\\nit reached the limit of 96 processes and threads in all"
-            + " | PROCESSES"})
-    void aSceneWithoutAnImageGetsAVerdictAndNothingOfTheReasonsFigures(String reason, HiddenVerdict verdict) {
-        assertThat(HiddenVerdict.ofNoImage(reason.replace("\\n", "\n"))).isEqualTo(verdict);
+        "THREW | false | the code threw java.lang.IllegalStateException: 3c 73 63 65\\n    at gfx.tick1.Renderer.leak"
+            + "(Renderer.java:33) | THREW",
+        "ENDED | false | the image written for this scene is unusable: the image is 2017272368 x 774976051 | NO_IMAGE",
+        "ENDED | false | the program ended while rendering this scene, with exit status 120 | NO_IMAGE",
+        "TIME_LIMIT | false | no image within the time limit of 10 s (an infinite loop?) | TIME_LIMIT",
+        "TIME_LIMIT | false | not rendered: the time limit was used up by the earlier scenes | TIME_LIMIT",
+        "ENDED | false | not rendered: the run stopped at an earlier scene | NO_IMAGE",
+        "MEMORY_LIMIT | false | the program used more than 1 GiB of memory in all (all its processes) | MEMORY",
+        "DISK_LIMIT | false | the program was stopped: it wrote more than 256 MiB to its output folder | OUTPUT_FOLDER",
+        "THREW | true | the code threw java.lang.OutOfMemoryError\\nit reached the limit of 96 processes | PROCESSES"})
+    void aSceneWithoutAnImageGetsAVerdictAndNothingOfTheReasonsFigures(NoImage why, boolean atProcessLimit,
+            String reason, HiddenVerdict verdict) {
+        assertThat(HiddenVerdict.ofNoImage(new Outcome.Failed(why, reason.replace("\\n", "\n"), atProcessLimit)))
+                .isEqualTo(verdict);
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "THREW | the code threw gfx.tick1.Leak$a9f3: the time limit | THREW",
+        "ENDED | the code threw java.lang.Error: it reached the limit of 96 processes | NO_IMAGE",
+        "TIME_LIMIT | the program used more than 1 GiB of memory | TIME_LIMIT"})
+    void theWordsOfAReasonDoNotChooseTheVerdict(NoImage why, String reason, HiddenVerdict verdict) {
+        assertThat(HiddenVerdict.ofNoImage(new Outcome.Failed(why, reason)))
+                .as("the verdict of a scene that gave no image because it %s, whose reason reads \"%s\"", why, reason)
+                .isEqualTo(verdict);
     }
 
     @Test

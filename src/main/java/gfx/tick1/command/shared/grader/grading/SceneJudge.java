@@ -1,0 +1,216 @@
+package gfx.tick1.command.shared.grader.grading;
+
+import gfx.tick1.command.shared.diagnosis.Diagnoser;
+import gfx.tick1.command.shared.diagnosis.Diagnosis;
+import gfx.tick1.command.shared.grader.grading.Grading.GradingScene;
+import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
+import gfx.tick1.command.shared.grader.sandbox.NoImage;
+import gfx.tick1.command.shared.grader.sandbox.StudentProcess.Outcome;
+import gfx.tick1.engine.image.ImageDifference;
+import gfx.tick1.engine.scene.Intersection;
+import java.awt.image.BufferedImage;
+import java.io.PrintWriter;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * The grade's judging step, scene by scene: compares a student image with the references
+ * --reference allows, and, when it matches, with what their own methods give for the sampled
+ * pixels; explains a difference, and, for a scene that is not hidden, has its images written.
+ * A scene that gave no image is judged by why it gave none.
+ */
+final class SceneJudge {
+
+    /**
+     * One scene judged: its result, its verdict, whether its explanation now holds the behaviour
+     * comparison's findings, and whether its images could not be written.
+     */
+    record Judged(SceneResult result, SceneVerdict verdict, boolean showedProbes, boolean imagesUnwritable) {
+    }
+
+    /** The figures, diagnosis and findings of a wrong image: its verdict, and whether the findings are in it. */
+    private record Explained(SceneVerdict.WrongPixels verdict, boolean showedProbes) {
+    }
+
+    /** The two references --reference allows for one scene (either may be null: not compared with). */
+    private record References(BufferedImage handout, BufferedImage robust) {
+        boolean both() {
+            return handout != null && robust != null;
+        }
+
+        boolean differ() {
+            return both() && !Pixels.same(handout, robust);
+        }
+    }
+
+    private final Grading grading;
+    private final ProbeFindings probes;
+    private final FeedbackImages images;
+    private final PrintWriter out;
+
+    /** Judges with the behaviour comparison's {@code probes}, writing images with {@code images}. */
+    SceneJudge(Grading grading, ProbeFindings probes, FeedbackImages images, PrintWriter out) {
+        this.grading = grading;
+        this.probes = probes;
+        this.images = images;
+        this.out = out;
+    }
+
+    /** Every scene judged, in grading order: the public ones, then the hidden ones. */
+    List<Judged> judgeAll(SceneRuns.Rendered rendered) {
+        List<GradingScene> ordered = new ArrayList<>(grading.batch(false));
+        ordered.addAll(grading.batch(true));
+        List<Judged> judged = new ArrayList<>();
+        boolean probesShown = false;
+        for (int i = 0; i < ordered.size(); i++) {
+            Judged scene = judge(i + 1, ordered.get(i), rendered.outcomes().get(i), rendered.traces().get(i),
+                    probesShown);
+            probesShown |= scene.showedProbes();
+            judged.add(scene);
+        }
+        return judged;
+    }
+
+    /** Scene {@code number} judged; {@code probesShown}: an earlier scene's explanation has the findings. */
+    private Judged judge(int number, GradingScene scene, Outcome outcome, String trace, boolean probesShown) {
+        if (outcome instanceof Outcome.Failed failed) {
+            return notRendered(scene, failed);
+        }
+        BufferedImage image = ((Outcome.Rendered) outcome).image();
+        ReferenceChoice choice = grading.limits().referenceChoice();
+        References references = new References(
+                choice == ReferenceChoice.robust ? null : grading.reference(scene, Intersection.HANDOUT),
+                choice == ReferenceChoice.handout ? null : grading.reference(scene, Intersection.ROBUST));
+        boolean handoutMatched = references.handout() != null && Pixels.same(references.handout(), image);
+        if (handoutMatched || references.robust() != null && Pixels.same(references.robust(), image)) {
+            SampleCheck.Result check = SampleCheck.check(image, trace);
+            return check == SampleCheck.Result.AGREES ? passed(scene, image, references, handoutMatched)
+                    : notFromTheCode(scene, check);
+        }
+        if (scene.hidden()) {
+            return wrongHiddenImage(scene, probesShown);
+        }
+        return wrongImage(number, scene, image, references, probesShown);
+    }
+
+    /** A scene the code gave no image for: why; for a hidden scene, a {@link HiddenVerdict}'s fixed words. */
+    private Judged notRendered(GradingScene scene, Outcome.Failed failed) {
+        HiddenVerdict hidden = HiddenVerdict.ofNoImage(failed);
+        String reason = scene.hidden() ? hidden.words() : failed.reason();
+        out.println(scene.name() + ": FAIL: " + reason.replace("\n", "\n    "));
+        // A hidden scene's category is its verdict's: the process total, not the failure beside it.
+        NoImage why = scene.hidden() && hidden == HiddenVerdict.PROCESSES ? NoImage.PROCESS_LIMIT : failed.why();
+        return new Judged(new SceneResult(scene.name(), scene.hidden(), false, reason.lines().toList(),
+                null, null, null), new SceneVerdict.Missing(why), false, false);
+    }
+
+    private Judged passed(GradingScene scene, BufferedImage image, References references, boolean handoutMatched) {
+        if (scene.hidden()) {
+            // Which reference it matched is the code's to choose, on a scene where the two differ.
+            out.println(scene.name() + ": " + HiddenVerdict.PASS.words());
+        } else {
+            String which = "the reference", other = "";
+            if (references.differ()) {
+                which = handoutMatched ? "the handout-arithmetic reference" : "the robust reference";
+                other = "; the " + (handoutMatched ? "robust" : "handout-arithmetic")
+                        + " reference differs on this scene";
+            }
+            out.println(scene.name() + ": PASS (identical to " + which + ", "
+                    + image.getWidth() * image.getHeight() + " pixels" + other + ")");
+        }
+        return new Judged(new SceneResult(scene.name(), scene.hidden(), true, List.of(), null, null, null),
+                new SceneVerdict.Passed(), false, false);
+    }
+
+    /** Why a matching image fails: their own methods give other colours, or could not be asked. */
+    private Judged notFromTheCode(GradingScene scene, SampleCheck.Result check) {
+        String reason = check == SampleCheck.Result.DISAGREES ? Explainer.NOT_FROM_THE_CODE + ": traced through "
+                + "your own intersectionWith and illuminate, its sampled pixels have other colours"
+                : Explainer.NOT_FROM_THE_CODE + "? Its sampled pixels could not be traced through your "
+                + "intersectionWith and illuminate (they did not return in time, or the harness's record of them "
+                + "is missing)";
+        String shown = scene.hidden() ? HiddenVerdict.NOT_FROM_THE_CODE.words() : reason;
+        out.println(scene.name() + ": FAIL: " + shown);
+        return new Judged(new SceneResult(scene.name(), scene.hidden(), false, List.of(shown), null, null, null),
+                new SceneVerdict.NotFromTheCode(), false, false);
+    }
+
+    /**
+     * A hidden scene's wrong image: the fixed verdict, and no figure, diagnosis or image of it
+     * (each is the code's to choose). The behaviour comparison's findings and notes follow, if no
+     * earlier scene showed them: its inputs are fixed and ran in the run of the public scenes, which
+     * never had a hidden one, so they carry nothing of it. The chart's category is the first tested
+     * finding's, or that the mistake is not recognised.
+     */
+    private Judged wrongHiddenImage(GradingScene scene, boolean probesShown) {
+        List<String> lines = new ArrayList<>(List.of(HiddenVerdict.WRONG.words()));
+        boolean shows = !probesShown && (probes.anyFailed() || !probes.untested().isEmpty());
+        if (shows) {
+            lines.addAll(probes.failureLines());
+        }
+        print(scene, lines);
+        return new Judged(new SceneResult(scene.name(), true, false, lines, null, null, null),
+                new SceneVerdict.WrongPixels(probes.anyFailed() ? probes.label() : Explainer.UNRECOGNISED, null),
+                shows, false);
+    }
+
+    /** A wrong image of a scene that is not hidden: explained against the closer reference, its images written. */
+    private Judged wrongImage(int number, GradingScene scene, BufferedImage image, References references,
+            boolean probesShown) {
+        ImageDifference toHandout = references.handout() == null ? null
+                : ImageDifference.between(references.handout(), image);
+        ImageDifference toRobust = references.robust() == null ? null
+                : ImageDifference.between(references.robust(), image);
+        boolean againstHandout = toRobust == null
+                || toHandout != null && toHandout.differingPixels() < toRobust.differingPixels();
+        ImageDifference difference = againstHandout ? toHandout : toRobust;
+        List<String> lines = new ArrayList<>();
+        lines.add(difference.summary());
+        if (references.differ()) {
+            lines.add("(compared with the " + (againstHandout ? "handout-arithmetic" : "robust")
+                    + " reference, the closer of the two, which differ on this scene)");
+        }
+        Explained explained = explain(scene, image, difference, lines, probesShown);
+        print(scene, lines);
+        Optional<FeedbackImages.Written> written = images.write(number, scene, image, difference,
+                againstHandout ? references.handout() : references.robust());
+        SceneResult result = written.map(names -> new SceneResult(scene.name(), false, false, lines,
+                names.heatMap(), names.yours(), names.expected()))
+                .orElseGet(() -> new SceneResult(scene.name(), false, false, lines, null, null, null));
+        return new Judged(result, explained.verdict(), explained.showedProbes(), written.isEmpty());
+    }
+
+    /**
+     * The figures and the diagnosis of a wrong image, then the failed probes (the first wrong image
+     * only) and what to reread, added to {@code lines}; its verdict.
+     */
+    private Explained explain(GradingScene scene, BufferedImage image, ImageDifference difference,
+            List<String> lines, boolean probesShown) {
+        double[] mean = difference.meanPerChannel();
+        lines.add(String.format("mean difference R %.3f, G %.3f, B %.3f levels; PSNR %.2f dB", mean[0], mean[1],
+                mean[2], difference.psnr()));
+        Diagnosis diagnosis = new Diagnoser().diagnose(image, scene.scene());
+        boolean exact = diagnosis.verdict() == Diagnosis.Verdict.EXPLAINED;
+        boolean behaviourSays = probes.anyFailed();
+        // What to reread comes from the tested findings; the image's own entry only when it matches exactly.
+        lines.addAll(diagnosis.report(exact && !behaviourSays));
+        boolean shows = !probesShown && (behaviourSays || !probes.untested().isEmpty());
+        if (shows) {
+            lines.addAll(probes.failureLines());
+        } else if (!behaviourSays && !exact) {
+            lines.add(probes.noFindingLine());
+        }
+        String title = exact ? diagnosis.explaining().get(0).variant().title() : null;
+        String exactly = exact ? (scene.hidden() ? "A hidden scene" : scene.name()) + " is exactly the image of \""
+                + title + "\"." : null;
+        // The chart counts exact matches first, then tested findings; never what the scenes cannot show.
+        String category = exact ? title : behaviourSays ? probes.label() : Explainer.UNRECOGNISED;
+        return new Explained(new SceneVerdict.WrongPixels(category, exactly), shows);
+    }
+
+    private void print(GradingScene scene, List<String> lines) {
+        out.println(scene.name() + ": FAIL: " + lines.get(0));
+        lines.subList(1, lines.size()).forEach(line -> out.println("  " + line));
+    }
+}
