@@ -3,8 +3,8 @@ package gfx.tick1.command.shared.grader.grading;
 import gfx.tick1.command.shared.diagnosis.Diagnoser;
 import gfx.tick1.command.shared.diagnosis.Diagnosis;
 import gfx.tick1.command.shared.grader.grading.Grading.GradingScene;
-import gfx.tick1.command.shared.grader.harness.StudentFile;
 import gfx.tick1.command.shared.grader.harness.StudentHarness;
+import gfx.tick1.command.shared.grader.intake.StudentFile;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -27,6 +27,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 
 /**
@@ -127,11 +128,10 @@ public final class SubmissionGrader {
         } catch (StudentFile.NotUtf8Exception e) {
             return failed(grade, submission, out, NOT_UTF8, e.getMessage());
         }
-        for (String problem : new String[] {StudentFile.packageProblem(submission.sphere().path(), code.sphere()),
-                StudentFile.packageProblem(submission.renderer().path(), code.renderer())}) {
-            if (problem != null) {
-                return failed(grade, submission, out, WRONG_PACKAGE, problem);
-            }
+        Optional<String> packageProblem = StudentFile.packageProblem(submission.sphere().path(), code.sphere())
+                .or(() -> StudentFile.packageProblem(submission.renderer().path(), code.renderer()));
+        if (packageProblem.isPresent()) {
+            return failed(grade, submission, out, WRONG_PACKAGE, packageProblem.get());
         }
         Path sources = writeSources(work, code);
         long phaseStart = System.nanoTime();
