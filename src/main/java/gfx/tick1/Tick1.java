@@ -9,7 +9,6 @@ import gfx.tick1.command.preview.PreviewCommand;
 import gfx.tick1.command.render.CommandLineGuess;
 import gfx.tick1.command.render.RenderCommand;
 import gfx.tick1.command.render.RenderJob;
-import gfx.tick1.command.render.RenderOptions;
 import gfx.tick1.command.render.Timings;
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatuses;
@@ -42,8 +41,8 @@ public final class Tick1 {
         Timings.mainStarted();
         // A plain render starts on a guess at its options while picocli reads them (which takes
         // longer than rendering a small frame); the render command checks the guess.
-        RenderOptions guess = CommandLineGuess.of(args);
-        RenderJob ahead = guess != null && guess.problem() == null ? RenderJob.start(guess) : null;
+        RenderJob ahead = CommandLineGuess.of(args).filter(guess -> guess.problem().isEmpty()).map(RenderJob::start)
+                .orElse(null);
         CommandLine commandLine = commandLine(new RenderCommand(System.out, ahead), args);
         int status;
         try {

@@ -168,7 +168,7 @@ class ArchitectureTest {
                 .whereLayer("Report").mayOnlyBeAccessedByLayers("Cohort", "Commands")
                 .whereLayer("Look-alikes").mayOnlyBeAccessedByLayers("Report", "Commands")
                 .whereLayer("Grading").mayOnlyBeAccessedByLayers("Report", "Cohort", "VPL", "Commands")
-                .whereLayer("Intake").mayOnlyBeAccessedByLayers("Cohort", "Commands")
+                .whereLayer("Intake").mayOnlyBeAccessedByLayers("Grading", "Cohort", "Commands")
                 .whereLayer("Sandbox").mayOnlyBeAccessedByLayers("Grading", "Cohort", "VPL", "Commands")
                 .whereLayer("Harness").mayOnlyBeAccessedByLayers("Sandbox", "Grading", "Cohort", "Commands")
                 .check(program);

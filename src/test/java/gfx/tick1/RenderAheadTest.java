@@ -9,6 +9,7 @@ import gfx.tick1.command.render.RenderOptions;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 
@@ -39,7 +40,7 @@ class RenderAheadTest {
     @Test
     void aRightGuessGivesTheSameImageAndMessages() {
         String[] args = {"-i", "scenes/tick1.xml", "-o", "-", "--width", "160", "--height", "120", "--samples", "3"};
-        RenderJob ahead = RenderJob.start(CommandLineGuess.of(args));
+        RenderJob ahead = RenderJob.start(CommandLineGuess.of(args).orElseThrow());
         assertSameRun(CliRun.of(args), run(ahead, args));
     }
 
@@ -47,7 +48,7 @@ class RenderAheadTest {
     void aWrongGuessIsThrownAwayForWhatPicocliRead() {
         String[] args = {"-i", "scenes/tick1.xml", "-o", "-", "--width", "160", "--height", "120"};
         RenderOptions wrong = new RenderOptions("scenes/tick1.xml", false, 200, 120, 1,
-                CommandLineGuess.of(args).intersection(), null);
+                CommandLineGuess.of(args).orElseThrow().intersection(), null);
         assertSameRun(CliRun.of(args), run(RenderJob.start(wrong), args));
     }
 
@@ -55,15 +56,15 @@ class RenderAheadTest {
     void aGuessAtAnInvalidCommandLineChangesNoMessage() {
         String[] args = {"-i", "scenes/tick1.xml", "-o", "-", "--width", "0"};
         RenderOptions guess = new RenderOptions("scenes/tick1.xml", false, 640, 480, 1,
-                CommandLineGuess.of("-i", "scenes/tick1.xml").intersection(), null);
+                CommandLineGuess.of("-i", "scenes/tick1.xml").orElseThrow().intersection(), null);
         assertSameRun(CliRun.of(args), run(RenderJob.start(guess), args));
     }
 
     @Test
     void aSceneErrorFoundAheadIsReportedAsWithoutTheGuess() {
         String[] args = {"-i", "src/test/resources/bad-scenes/binary-garbage.xml", "-o", "-"};
-        RenderOptions guess = CommandLineGuess.of(args);
-        assertThat(guess).isNotNull();
-        assertSameRun(CliRun.of(args), run(RenderJob.start(guess), args));
+        Optional<RenderOptions> guess = CommandLineGuess.of(args);
+        assertThat(guess).as("the guess at a plain render's command line").isPresent();
+        assertSameRun(CliRun.of(args), run(RenderJob.start(guess.orElseThrow()), args));
     }
 }

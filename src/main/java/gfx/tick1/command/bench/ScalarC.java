@@ -14,6 +14,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -40,10 +41,7 @@ final class ScalarC {
 
     /** Builds the tracer in {@code folder} for this scene and frame; throws with the reason it cannot. */
     static ScalarC build(Path folder, Scene scene, int width, int height, int samples) throws IOException {
-        String compiler = compiler();
-        if (compiler == null) {
-            throw new IOException("no C compiler (cc, gcc or clang) on the path");
-        }
+        String compiler = compiler().orElseThrow(() -> new IOException("no C compiler (cc, gcc or clang) on the path"));
         Path source = folder.resolve(SOURCE);
         try (InputStream in = ScalarC.class.getResourceAsStream(SOURCE)) {
             Files.write(source, in.readAllBytes());
@@ -122,17 +120,17 @@ final class ScalarC {
         return hex(v.x) + " " + hex(v.y) + " " + hex(v.z);
     }
 
-    /** The first C compiler on the path, or null. */
-    private static String compiler() {
+    /** The first C compiler on the path, if there is one. */
+    private static Optional<String> compiler() {
         String path = System.getenv("PATH");
         for (String name : new String[] {"cc", "gcc", "clang"}) {
             for (String folder : path == null ? new String[0] : path.split(java.io.File.pathSeparator)) {
                 if (!folder.isEmpty() && Files.isExecutable(Path.of(folder, name))) {
-                    return Path.of(folder, name).toString();
+                    return Optional.of(Path.of(folder, name).toString());
                 }
             }
         }
-        return null;
+        return Optional.empty();
     }
 
     private static void run(List<String> command, String what) throws IOException {

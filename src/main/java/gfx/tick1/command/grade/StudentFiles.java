@@ -1,12 +1,13 @@
 package gfx.tick1.command.grade;
 
-import gfx.tick1.command.shared.grader.harness.StudentFile;
-import gfx.tick1.command.shared.grader.intake.JavaClassName;
+import gfx.tick1.command.shared.grader.intake.JavaDeclarations;
+import gfx.tick1.command.shared.grader.intake.StudentFile;
 import gfx.tick1.command.shared.grader.model.Submission;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Optional;
 
 /**
  * One student's two files as {@code grade --sphere --renderer} takes them: each read and checked as
@@ -27,7 +28,7 @@ final class StudentFiles {
     static Submission of(Path sphere, Path renderer, PrintWriter err) throws IOException {
         Submission.SourceFile sphereFile = read(sphere, "--sphere", "Sphere.java");
         Submission.SourceFile rendererFile = read(renderer, "--renderer", "Renderer.java");
-        if ("Renderer".equals(className(sphereFile)) && "Sphere".equals(className(rendererFile))) {
+        if (declaresClass(sphereFile, "Renderer") && declaresClass(rendererFile, "Sphere")) {
             err.println("tick1 grade: note: " + sphere + " declares class Renderer and " + renderer
                     + " class Sphere: graded the other way round");
             Submission.SourceFile swap = sphereFile;
@@ -61,7 +62,7 @@ final class StudentFiles {
         return new Submission.SourceFile(file.toString(), content);
     }
 
-    private static String className(Submission.SourceFile file) throws IOException {
-        return JavaClassName.of(StudentFile.decode(file.path(), file.content()));
+    private static boolean declaresClass(Submission.SourceFile file, String name) throws IOException {
+        return JavaDeclarations.firstClassOf(StudentFile.decode(file.path(), file.content())).equals(Optional.of(name));
     }
 }

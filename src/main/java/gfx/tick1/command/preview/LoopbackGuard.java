@@ -3,6 +3,7 @@ package gfx.tick1.command.preview;
 import com.sun.net.httpserver.Headers;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.Set;
 
 /**
@@ -29,21 +30,21 @@ final class LoopbackGuard {
         origins = Set.of("http://127.0.0.1:" + port, "http://localhost:" + port);
     }
 
-    /** Why the request must be refused, or null when it may be answered. */
-    String refusal(Headers headers) {
+    /** Why the request must be refused, empty when it may be answered. */
+    Optional<String> refusal(Headers headers) {
         List<String> host = headers.get("Host");
         if (host == null || host.size() != 1 || !hosts.contains(host.get(0).toLowerCase(Locale.ROOT))) {
-            return "Host " + host + " is not this server";
+            return Optional.of("Host " + host + " is not this server");
         }
         List<String> origin = headers.get("Origin");
         if (origin != null && (origin.size() != 1 || !origins.contains(origin.get(0).toLowerCase(Locale.ROOT)))) {
-            return "Origin " + origin + " is not this server";
+            return Optional.of("Origin " + origin + " is not this server");
         }
         String site = headers.getFirst("Sec-Fetch-Site");
         boolean navigation = "navigate".equals(headers.getFirst("Sec-Fetch-Mode"));
         if (("cross-site".equals(site) || "same-site".equals(site)) && !navigation) {
-            return "request made by another site's page";
+            return Optional.of("request made by another site's page");
         }
-        return null;
+        return Optional.empty();
     }
 }

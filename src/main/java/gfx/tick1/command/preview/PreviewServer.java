@@ -19,6 +19,7 @@ import java.net.URI;
 import java.net.URLDecoder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.Optional;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -150,9 +151,9 @@ public final class PreviewServer implements AutoCloseable {
         Headers headers = exchange.getResponseHeaders();
         headers.set("X-Content-Type-Options", "nosniff");
         headers.set("Referrer-Policy", "no-referrer");
-        String refusal = guard.refusal(exchange.getRequestHeaders());
-        if (refusal != null) {
-            sendText(exchange, 403, "Forbidden: " + refusal);
+        Optional<String> refusal = guard.refusal(exchange.getRequestHeaders());
+        if (refusal.isPresent()) {
+            sendText(exchange, 403, "Forbidden: " + refusal.get());
             return;
         }
         String method = exchange.getRequestMethod();
@@ -172,11 +173,12 @@ public final class PreviewServer implements AutoCloseable {
                 answer(exchange, path, name, () -> new SceneLoader(name, upload, false));
             }
         } else if (method.equals("GET")) {
-            StaticFiles.File file = files.find(path);
-            if (file == null) {
+            Optional<StaticFiles.File> found = files.find(path);
+            if (found.isEmpty()) {
                 sendText(exchange, 404, "Not found");
                 return;
             }
+            StaticFiles.File file = found.get();
             if (file.contentType().startsWith("text/html")) {
                 headers.set("Content-Security-Policy", contentSecurityPolicy);
             }

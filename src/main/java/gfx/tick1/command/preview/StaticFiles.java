@@ -8,6 +8,7 @@ import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.Base64;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Properties;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -43,20 +44,19 @@ final class StaticFiles {
         threeDirectory = "META-INF/resources/webjars/three/" + webJarVersion("org.webjars.npm", "three") + "/";
     }
 
-    /** The file served at {@code path}, or null when there is none. */
-    File find(String path) {
+    /** The file served at {@code path}, empty when there is none. */
+    Optional<File> find(String path) {
         String page = PAGE.get(path);
         if (page != null) {
-            return new File(read(PAGE_DIRECTORY + page), contentType(page));
+            return Optional.of(new File(read(PAGE_DIRECTORY + page), contentType(page)));
         }
         if (path.startsWith(THREE_PREFIX)) {
             String name = path.substring(THREE_PREFIX.length());
             if (THREE_FILE.matcher(name).matches()) {
-                byte[] bytes = readIfPresent(threeDirectory + name);
-                return bytes == null ? null : new File(bytes, contentType(name));
+                return readIfPresent(threeDirectory + name).map(bytes -> new File(bytes, contentType(name)));
             }
         }
-        return null;
+        return Optional.empty();
     }
 
     /**
@@ -103,16 +103,13 @@ final class StaticFiles {
     }
 
     private static byte[] read(String resource) {
-        byte[] bytes = readIfPresent(resource);
-        if (bytes == null) {
-            throw new IllegalStateException(resource + " is missing from the classpath");
-        }
-        return bytes;
+        return readIfPresent(resource)
+                .orElseThrow(() -> new IllegalStateException(resource + " is missing from the classpath"));
     }
 
-    private static byte[] readIfPresent(String resource) {
+    private static Optional<byte[]> readIfPresent(String resource) {
         try (InputStream in = open(resource)) {
-            return in == null ? null : in.readAllBytes();
+            return in == null ? Optional.empty() : Optional.of(in.readAllBytes());
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }

@@ -4,6 +4,7 @@ import gfx.tick1.engine.scene.Intersection;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashSet;
+import java.util.Optional;
 import java.util.Set;
 
 /**
@@ -19,8 +20,8 @@ public final class CommandLineGuess {
     private CommandLineGuess() {
     }
 
-    /** The options these arguments ask for, or null when they are not a plain render's. */
-    public static RenderOptions of(String... args) {
+    /** The options these arguments ask for, empty when they are not a plain render's. */
+    public static Optional<RenderOptions> of(String... args) {
         String input = "basic_scene.xml";
         boolean strict = false;
         int width = 640, height = 480, samples = 1;
@@ -37,24 +38,24 @@ public final class CommandLineGuess {
                 }
                 String name = canonical(arg);
                 if (name == null || !seen.add(name)) {
-                    return null;
+                    return Optional.empty();
                 }
                 boolean flag = name.equals("--strict") || name.equals("--quiet") || name.equals("--timings");
                 if (flag) {
                     if (value != null) {
-                        return null;
+                        return Optional.empty();
                     }
                     strict |= name.equals("--strict");
                     continue;
                 }
                 if (value == null) {
                     if (i + 1 == args.length) {
-                        return null;
+                        return Optional.empty();
                     }
                     value = args[++i];
                 }
                 if (value.startsWith("-") && value.length() > 1) {
-                    return null;
+                    return Optional.empty();
                 }
                 switch (name) {
                     case "--input" -> input = value;
@@ -68,11 +69,11 @@ public final class CommandLineGuess {
             }
             // Only a file can be read twice (should the guess be wrong) with nothing lost: never a pipe.
             if (!Files.isRegularFile(Path.of(input))) {
-                return null;
+                return Optional.empty();
             }
-            return new RenderOptions(input, strict, width, height, samples, intersection, threads);
+            return Optional.of(new RenderOptions(input, strict, width, height, samples, intersection, threads));
         } catch (RuntimeException e) {
-            return null; // not a number, not a method, not a file name: picocli will say what is wrong
+            return Optional.empty(); // not a number, not a method, not a file name: picocli will say what is wrong
         }
     }
 

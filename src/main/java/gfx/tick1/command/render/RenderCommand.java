@@ -22,6 +22,7 @@ import java.time.Duration;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
@@ -177,12 +178,12 @@ public final class RenderCommand implements Callable<Integer> {
         RenderOptions options = options();
         // A render begun on a guess at the command line counts only if picocli read the same options.
         RenderJob guessed = ahead != null && ahead.options().equals(options) ? ahead : null;
-        String usage = usageProblem(options);
-        if (ahead != null && (guessed == null || usage != null || wouldReplaceAnUnnamedFile())) {
+        Optional<String> usage = usageProblem(options);
+        if (ahead != null && (guessed == null || usage.isPresent() || wouldReplaceAnUnnamedFile())) {
             ahead.cancel();
         }
-        if (usage != null) {
-            throw new ParameterException(spec.commandLine(), usage);
+        if (usage.isPresent()) {
+            throw new ParameterException(spec.commandLine(), usage.get());
         }
         if (wouldReplaceAnUnnamedFile()) {
             err.println("tick1: " + output + " already exists (it may be your own render) and -o was not given; "
@@ -212,14 +213,11 @@ public final class RenderCommand implements Callable<Integer> {
         return status;
     }
 
-    /** What is wrong with the command line beyond what picocli's types check, or null. */
-    private String usageProblem(RenderOptions options) {
-        String problem = options.problem();
-        if (problem == null && ImageFormat.ofName(output).filter(format -> format != ImageFormat.PNG).isPresent()) {
-            return "--output " + output + ": tick1 writes PNG images only (every pixel exact); name it "
-                    + ImageFormat.asPng(output);
-        }
-        return problem;
+    /** What is wrong with the command line beyond what picocli's types check, if anything. */
+    private Optional<String> usageProblem(RenderOptions options) {
+        return options.problem().or(() -> ImageFormat.ofName(output).filter(format -> format != ImageFormat.PNG)
+                .map(format -> "--output " + output + ": tick1 writes PNG images only (every pixel exact); name it "
+                        + ImageFormat.asPng(output)));
     }
 
     /** Waits for the scene, prints its warnings, and says why it cannot be rendered if it cannot. */

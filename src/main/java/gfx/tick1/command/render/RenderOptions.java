@@ -2,6 +2,7 @@ package gfx.tick1.command.render;
 
 import gfx.tick1.engine.render.SamplePattern;
 import gfx.tick1.engine.scene.Intersection;
+import java.util.Optional;
 
 /**
  * What a render depends on, as the command line gives it: the scene file and how it is read,
@@ -35,30 +36,30 @@ public record RenderOptions(String input, boolean strict, int width, int height,
         return ((input.hashCode() * 31 + width) * 31 + height) * 31 + samples;
     }
 
-    /** What is wrong with these options that picocli's types cannot say (ranges, memory), or null. */
-    public String problem() {
+    /** What is wrong with these options that picocli's types cannot say (ranges, memory), if anything. */
+    public Optional<String> problem() {
         if (width < 1 || width > MAX_DIMENSION) {
-            return "--width " + width + ": must be from 1 to " + MAX_DIMENSION;
+            return Optional.of("--width " + width + ": must be from 1 to " + MAX_DIMENSION);
         }
         if (height < 1 || height > MAX_DIMENSION) {
-            return "--height " + height + ": must be from 1 to " + MAX_DIMENSION;
+            return Optional.of("--height " + height + ": must be from 1 to " + MAX_DIMENSION);
         }
         if (samples < 1 || samples > SamplePattern.MAX_SAMPLES) {
-            return "--samples " + samples + ": must be from 1 to " + SamplePattern.MAX_SAMPLES;
+            return Optional.of("--samples " + samples + ": must be from 1 to " + SamplePattern.MAX_SAMPLES);
         }
         if (threads != null && (threads < 1 || threads > MAX_THREADS)) {
-            return "--threads " + threads + ": must be from 1 to " + MAX_THREADS;
+            return Optional.of("--threads " + threads + ": must be from 1 to " + MAX_THREADS);
         }
         // The renderer holds the frame twice (its pixel array and the image), 4 bytes a pixel each,
         // and the PNG encoder needs room of its own: half the heap is a safe ceiling.
         long needed = 8L * width * height;
         long available = Runtime.getRuntime().maxMemory() / 2;
         if (needed > available) {
-            return String.format("a %d x %d image needs about %d MiB, more than half of the %d MiB this Java "
-                    + "may use; raise that with JAVA_OPTS=-Xmx...", width, height, needed >> 20,
-                    Runtime.getRuntime().maxMemory() >> 20);
+            return Optional.of(String.format("a %d x %d image needs about %d MiB, more than half of the %d MiB this "
+                    + "Java may use; raise that with JAVA_OPTS=-Xmx...", width, height, needed >> 20,
+                    Runtime.getRuntime().maxMemory() >> 20));
         }
-        return null;
+        return Optional.empty();
     }
 
     /** The threads to render with: --threads, or one a core. */

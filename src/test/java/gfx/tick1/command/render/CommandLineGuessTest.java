@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.Tick1;
 import java.util.List;
+import java.util.Optional;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -31,20 +32,20 @@ class CommandLineGuessTest {
     @MethodSource("commandLines")
     void aGuessIsWhatPicocliReadsOrNone(String line) {
         String[] args = line.split(" ");
-        RenderOptions guess = CommandLineGuess.of(args);
-        if (guess == null) {
+        Optional<RenderOptions> guess = CommandLineGuess.of(args);
+        if (guess.isEmpty()) {
             return;
         }
         RenderCommand command = new RenderCommand();
         CommandLine commandLine = Tick1.commandLine(command, args);
         commandLine.parseArgs(args);
-        assertThat(guess).as(line).isEqualTo(command.options());
+        assertThat(guess).as(line).contains(command.options());
     }
 
     @ParameterizedTest
     @ValueSource(strings = {"-i " + SCENE + " -o out.png", "-i " + SCENE + " --width 320 --strict -q"})
     void thePlainFormsAreGuessed(String line) {
-        assertThat(CommandLineGuess.of(line.split(" "))).as(line).isNotNull();
+        assertThat(CommandLineGuess.of(line.split(" "))).as(line).isPresent();
     }
 
     @ParameterizedTest
@@ -52,6 +53,6 @@ class CommandLineGuessTest {
         "-i " + SCENE + " --width ten", "-i " + SCENE + " -o -q", "-i " + SCENE + " --help", "grade -i " + SCENE,
         "-i /dev/stdin", "-i scenes", "-i no-such-scene.xml"})
     void anythingElseIsLeftToPicocli(String line) {
-        assertThat(CommandLineGuess.of(line.split(" "))).as(line).isNull();
+        assertThat(CommandLineGuess.of(line.split(" "))).as(line).isEmpty();
     }
 }

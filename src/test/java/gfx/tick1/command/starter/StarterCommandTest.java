@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.grader.harness.StudentCompiler;
-import gfx.tick1.command.shared.grader.harness.StudentFile;
+import gfx.tick1.command.shared.grader.intake.StudentFile;
 import gfx.tick1.command.shared.kit.StarterKit;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;

@@ -1,6 +1,6 @@
 package gfx.tick1.command.shared.grader.grading;
 
-import gfx.tick1.command.shared.grader.harness.StudentFile;
+import gfx.tick1.command.shared.grader.intake.StudentFile;
 import gfx.tick1.command.shared.grader.model.Submission;
 
 /**
@@ -35,12 +35,9 @@ final class SourceCheck {
         } catch (StudentFile.NotUtf8Exception e) {
             return new Problem(Explainer.NOT_UTF8, e.getMessage());
         }
-        for (String problem : new String[] {StudentFile.packageProblem(submission.sphere().path(), code.sphere()),
-                StudentFile.packageProblem(submission.renderer().path(), code.renderer())}) {
-            if (problem != null) {
-                return new Problem(Explainer.WRONG_PACKAGE, problem);
-            }
-        }
-        return code;
+        return StudentFile.packageProblem(submission.sphere().path(), code.sphere())
+                .or(() -> StudentFile.packageProblem(submission.renderer().path(), code.renderer()))
+                .<Checked>map(problem -> new Problem(Explainer.WRONG_PACKAGE, problem))
+                .orElse(code);
     }
 }

@@ -29,8 +29,8 @@ import javax.tools.ToolProvider;
  * Compiles a student's {@code Sphere.java} and {@code Renderer.java} with the starter kit's other
  * classes, in memory, through the JDK's own compiler (javax.tools): no files but the student's are
  * read and nothing is written. Errors carry the student's own file names and line numbers.
- * {@code grade} runs it inside the sandbox, where it must not need anything but the JDK and
- * {@link StudentFile}: the starter kit's classes are handed to it as sources.
+ * {@code grade} runs it inside the sandbox, where it must not need anything but the JDK: the
+ * starter kit's classes are handed to it as sources.
  */
 public final class StudentCompiler {
 

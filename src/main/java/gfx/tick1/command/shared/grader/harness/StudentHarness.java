@@ -76,8 +76,7 @@ public final class StudentHarness {
 
     /** The classes of the harness's jar: these and their nested classes are all of tick1 the child sees. */
     public static final List<Class<?>> CLASSES = List.of(StudentHarness.class, StudentCompiler.class,
-            StudentFile.class, StarterApi.class, ProbeCalls.class, ProbeRunner.class, SampleTrace.class,
-            Bounded.class);
+            StarterApi.class, ProbeCalls.class, ProbeRunner.class, SampleTrace.class, Bounded.class);
 
     private StudentHarness() {
     }

@@ -8,6 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.ByteBuffer;
+import java.util.Optional;
 
 /**
  * What a file given as a download is, when its first bytes show plainly that it is not a zip, so
@@ -24,39 +25,39 @@ final class FileKind {
 
     /**
      * "an empty file", "a CSV file", "a text file", "a PNG image", "a gzip file", "a RAR archive",
-     * "a 7-Zip archive", or null when the file may be a zip (or cannot be read: the zip reader says why).
+     * "a 7-Zip archive"; empty when the file may be a zip (or cannot be read: the zip reader says why).
      */
-    static String unlessZip(Path file) {
+    static Optional<String> unlessZip(Path file) {
         byte[] head;
         try (InputStream in = Files.newInputStream(file)) {
             head = in.readNBytes(HEAD);
         } catch (IOException e) {
-            return null;
+            return Optional.empty();
         }
         if (head.length == 0) {
-            return "an empty file";
+            return Optional.of("an empty file");
         }
         if (startsWith(head, 'P', 'K')) {
-            return null;
+            return Optional.empty();
         }
         if (startsWith(head, 0x89, 'P', 'N', 'G')) {
-            return "a PNG image";
+            return Optional.of("a PNG image");
         }
         if (startsWith(head, 0x1F, 0x8B)) {
-            return "a gzip file";
+            return Optional.of("a gzip file");
         }
         if (startsWith(head, 'R', 'a', 'r', '!')) {
-            return "a RAR archive";
+            return Optional.of("a RAR archive");
         }
         if (startsWith(head, '7', 'z', 0xBC, 0xAF)) {
-            return "a 7-Zip archive";
+            return Optional.of("a 7-Zip archive");
         }
         if (isText(head)) {
             String text = new String(head, StandardCharsets.UTF_8);
             String firstLine = text.lines().findFirst().orElse("");
-            return firstLine.indexOf(',') >= 0 ? "a CSV file" : "a text file";
+            return Optional.of(firstLine.indexOf(',') >= 0 ? "a CSV file" : "a text file");
         }
-        return null;
+        return Optional.empty();
     }
 
     private static boolean startsWith(byte[] bytes, int... prefix) {

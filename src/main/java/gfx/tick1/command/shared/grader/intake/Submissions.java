@@ -18,6 +18,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
 import org.apache.commons.compress.utils.SeekableInMemoryByteChannel;
@@ -76,9 +77,9 @@ public final class Submissions {
         if (!Files.isRegularFile(path)) {
             throw new CohortInputException(path + ": no such file or folder");
         }
-        String notZip = FileKind.unlessZip(path);
-        if (notZip != null) {
-            throw new CohortInputException(path + ": " + notZip + ", not a zip: --submissions wants Moodle's "
+        Optional<String> notZip = FileKind.unlessZip(path);
+        if (notZip.isPresent()) {
+            throw new CohortInputException(path + ": " + notZip.get() + ", not a zip: --submissions wants Moodle's "
                     + "\"Download all submissions\" zip, or the folder it unpacks to (a grading worksheet goes to "
                     + "--worksheet)");
         }

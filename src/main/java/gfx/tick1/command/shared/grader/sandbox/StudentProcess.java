@@ -1,7 +1,6 @@
 package gfx.tick1.command.shared.grader.sandbox;
 
 import gfx.tick1.command.shared.grader.harness.StudentCompiler;
-import gfx.tick1.command.shared.grader.harness.StudentFile;
 import gfx.tick1.command.shared.grader.harness.StudentHarness;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox.Bind;
 import gfx.tick1.command.shared.grader.sandbox.SandboxedProcess.Request;
@@ -351,8 +350,8 @@ public final class StudentProcess implements AutoCloseable {
 
     /**
      * Writes the harness's class path into {@code folder}, as {@value #HARNESS_JAR}: the class
-     * files of {@link StudentHarness#CLASSES} ({@link StudentHarness}, {@link StudentCompiler},
-     * {@link StudentFile}, and those that call the student's methods), their nested classes, and
+     * files of {@link StudentHarness#CLASSES} ({@link StudentHarness}, {@link StudentCompiler}
+     * and those that call the student's methods), their nested classes, and
      * nothing else of this program (no reference renderer, no scenes, no images for
      * the student's code to use). A jar, not a folder, as Java's class data sharing needs one.
      */

@@ -1,4 +1,4 @@
-package gfx.tick1.command.shared.grader.harness;
+package gfx.tick1.command.shared.grader.intake;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
@@ -10,10 +10,12 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Optional;
 
 /**
  * A student's source file as the tester reads it: UTF-8 text (a byte-order mark, which some
- * editors write, is accepted and dropped) declaring {@code package gfx.tick1;}. Needs only the JDK.
+ * editors write, is accepted and dropped) declaring {@code package gfx.tick1;}. Read by the grader
+ * before anything of the student's is compiled or run.
  */
 public final class StudentFile {
 
@@ -76,22 +78,28 @@ public final class StudentFile {
 
     /**
      * Why the tester cannot use {@code code} from the file {@code name} as a file of package
-     * gfx.tick1, in one line, or null when it declares that package.
+     * gfx.tick1, in one line; empty when it declares that package.
      */
-    public static String packageProblem(String name, String code) {
-        PackageDeclaration.Found found = PackageDeclaration.in(code);
-        String declared = found.name();
-        if (PACKAGE.equals(declared)) {
-            return null;
-        }
-        String said = switch (found.kind()) {
-            case DECLARED -> "declares package " + (declared.length() <= QUOTED_NAME_CAP ? declared
-                    : declared.substring(0, QUOTED_NAME_CAP) + "... (" + declared.length() + " characters)");
-            case NONE -> "declares no package";
-            case BEYOND_CAP -> "declares no package within its first " + PackageDeclaration.SCAN_CAP
+    public static Optional<String> packageProblem(String name, String code) {
+        JavaDeclarations.PackageClause clause = JavaDeclarations.packageOf(code);
+        String said;
+        if (clause instanceof JavaDeclarations.PackageClause.Declared declared) {
+            if (declared.name().equals(PACKAGE)) {
+                return Optional.empty();
+            }
+            said = "declares package " + quoted(declared.name());
+        } else if (clause instanceof JavaDeclarations.PackageClause.BeyondCap) {
+            said = "declares no package within its first " + JavaDeclarations.PACKAGE_SCAN_CAP
                     + " characters (comments and blank lines included)";
-        };
-        return name + ": the tester needs the file in package " + PACKAGE + " (its first line \"package " + PACKAGE
-                + ";\", as in the starter code), but it " + said;
+        } else {
+            said = "declares no package";
+        }
+        return Optional.of(name + ": the tester needs the file in package " + PACKAGE + " (its first line \"package "
+                + PACKAGE + ";\", as in the starter code), but it " + said);
+    }
+
+    private static String quoted(String declared) {
+        return declared.length() <= QUOTED_NAME_CAP ? declared
+                : declared.substring(0, QUOTED_NAME_CAP) + "... (" + declared.length() + " characters)";
     }
 }
