@@ -218,9 +218,9 @@ public final class SubmissionGrader {
                 batch.forEach(scene -> traces.add(null));
                 continue;
             }
-            StudentProcess.Result result = process.render(started.classes(), Grading.batchScenes(scenes, hidden),
-                    sceneFiles(batch.size()), childFolder(work, (hidden ? "hidden" : "public") + "-run"),
-                    limits.width(), limits.height(), left, limits.timeLimit(), !hidden);
+            StudentProcess.Result result = process.render(started.classes(), new StudentProcess.Batch(
+                    Grading.batchScenes(scenes, hidden), sceneFiles(batch.size()), limits.width(), limits.height(),
+                    !hidden), childFolder(work, (hidden ? "hidden" : "public") + "-run"), left, limits.timeLimit());
             outcomes.addAll(result.outcomes());
             traces.addAll(result.traces());
             if (!hidden) {
