@@ -247,10 +247,12 @@ final class BehaviourJudge {
 
         Vector3 model(Set<Variant> variants) {
             boolean set = phongSet;
+            ProbeCalls.Light light = call.light();
+            ProbeCalls.Material material = call.sphere().material();
             return MethodModels.illuminate(new MethodModels.Shading(v(call.ambient()),
-                    new PointLight(v(call.light()), v(call.lightColour()), call.intensity()), v(call.colour()),
-                    set ? call.kD() : ProbeCalls.COURSE_KD, set ? call.kS() : ProbeCalls.COURSE_KS,
-                    set ? call.n() : ProbeCalls.COURSE_N, v(call.point()), v(call.normal())), variants);
+                    new PointLight(v(light.position()), v(light.colour()), light.intensity()), v(material.colour()),
+                    set ? material.kD() : ProbeCalls.COURSE_KD, set ? material.kS() : ProbeCalls.COURSE_KS,
+                    set ? material.n() : ProbeCalls.COURSE_N, v(call.point()), v(call.normal())), variants);
         }
 
         @Override
