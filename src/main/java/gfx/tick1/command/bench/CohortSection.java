@@ -88,8 +88,8 @@ final class CohortSection {
                 The phases are the grader's view of one submission while the other jobs run beside it, so they \
                 add up to more than the wall time per submission.
                 """, m.submissions(), m.jobs(), WIDTH, HEIGHT, m.passed(), m.submissions(), m.wallPerSubmission(),
-                m.wallSeconds(), m.medianCompile(), m.medianRender(), m.medianCompare(), m.medianTotal(),
-                CohortTiming.RUNS_PER_SUBMISSION, m.cgroupPerSubmission(), CohortTiming.RUNS_PER_SUBMISSION,
-                m.outputDiskPerSubmission());
+                m.wallSeconds(), m.medians().compile(), m.medians().render(), m.medians().compare(),
+                m.medians().total(), CohortTiming.RUNS_PER_SUBMISSION, m.perSubmission().cgroup(),
+                CohortTiming.RUNS_PER_SUBMISSION, m.perSubmission().outputDisk());
     }
 }

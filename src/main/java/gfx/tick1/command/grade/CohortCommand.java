@@ -35,14 +35,16 @@ import java.util.concurrent.atomic.AtomicReference;
 /**
  * {@code tick1 grade --submissions}: reads the cohort's download, grades every submission
  * ({@link CohortGrade}), and writes grades.csv, the feedback folders and index.html from every
- * result, those of earlier runs included.
+ * result, those of earlier runs included. {@link GradeCommand} parses the command line and hands
+ * it the options as values: those of every grade, and the cohort's own.
  */
 final class CohortCommand {
 
     /** The folder inside the report folder where each result is kept as soon as it is known. */
     static final String STATE_FOLDER = "state";
 
-    private final GradeCommand options;
+    private final GradeOptions options;
+    private final CohortOptions cohortOptions;
     private final Sandbox sandbox;
     private final PrintWriter out;
     private final PrintWriter err;
@@ -51,8 +53,10 @@ final class CohortCommand {
     /** The grade of a pass: --max-grade, else the worksheet's Maximum Grade, else 1. */
     private double maxGrade;
 
-    CohortCommand(GradeCommand options, Sandbox sandbox, PrintWriter out, PrintWriter err) {
+    CohortCommand(GradeOptions options, CohortOptions cohortOptions, Sandbox sandbox, PrintWriter out,
+            PrintWriter err) {
         this.options = options;
+        this.cohortOptions = cohortOptions;
         this.sandbox = sandbox;
         this.out = out;
         this.err = err;
@@ -63,7 +67,7 @@ final class CohortCommand {
         try {
             // The worksheet first: a bad one must stop the grade before anything is graded or written.
             readWorksheet();
-            submissions = withoutOwnFiles(Submissions.read(options.submissions()));
+            submissions = withoutOwnFiles(Submissions.read(cohortOptions.submissions()));
         } catch (IOException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, IoErrors.describe(e));
         }
@@ -100,16 +104,16 @@ final class CohortCommand {
      * the worksheet's Maximum Grade is refused, since Moodle would take its grades on the wrong scale.
      */
     private void readWorksheet() throws CohortInputException {
-        Double given = options.maxGrade();
+        Double given = cohortOptions.maxGrade();
         Double sheet = null;
-        if (options.worksheet() != null) {
-            worksheet = Worksheet.read(options.worksheet());
+        if (cohortOptions.worksheet() != null) {
+            worksheet = Worksheet.read(cohortOptions.worksheet());
             sheet = worksheet.maximumGrade();
         }
         if (given != null && sheet != null && Math.abs(given - sheet) > 1e-9) {
             throw new CohortInputException("--max-grade " + Worksheet.grade(given) + " differs from the Maximum Grade "
-                    + Worksheet.grade(sheet) + " of " + options.worksheet() + ": leave --max-grade out to grade out "
-                    + "of " + Worksheet.grade(sheet) + ", or change the assignment's maximum in Moodle first");
+                    + Worksheet.grade(sheet) + " of " + cohortOptions.worksheet() + ": leave --max-grade out to grade "
+                    + "out of " + Worksheet.grade(sheet) + ", or change the assignment's maximum in Moodle first");
         }
         maxGrade = given != null ? given : sheet != null ? sheet : 1;
     }
@@ -143,7 +147,8 @@ final class CohortCommand {
             throw new CommandFailure(GradeCommand.EXIT_CANNOT_WRITE, options.reportFolder()
                     + ": cannot write the report: " + IoErrors.describe(e));
         }
-        CohortGrade cohort = new CohortGrade(grading, sandbox, options.jobs(), store, err, System.console() != null);
+        CohortGrade cohort = new CohortGrade(grading, sandbox, cohortOptions.jobs(), store, err,
+                System.console() != null);
         running.set(cohort);
         CohortGrade.Done done = cohort.run(submissions, work);
         if (cohort.stopped()) {
@@ -168,8 +173,8 @@ final class CohortCommand {
             writeGrades(results, done.results().stream().map(StudentResult::submission)
                     .map(Submissions::namedByMoodle).toList(), report);
             CohortReport.write(report, results,
-                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, options.perScene())),
-                    options.lookalikes() ? Lookalikes.find(results) : null)
+                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, cohortOptions.perScene())),
+                    cohortOptions.lookalikes() ? Lookalikes.find(results) : null)
                     .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
         } catch (CohortInputException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());
@@ -203,9 +208,9 @@ final class CohortCommand {
      * folder (a report written beside the students' folders is not a student).
      */
     private List<Submission> withoutOwnFiles(List<Submission> submissions) {
-        Path download = options.submissions().toAbsolutePath().normalize();
+        Path download = cohortOptions.submissions().toAbsolutePath().normalize();
         List<String> own = new ArrayList<>();
-        for (Path path : new Path[] {options.reportFolder(), options.worksheet()}) {
+        for (Path path : new Path[] {options.reportFolder(), cohortOptions.worksheet()}) {
             if (path != null && download.equals(path.toAbsolutePath().normalize().getParent())) {
                 own.add(path.getFileName().toString());
             }
@@ -231,7 +236,7 @@ final class CohortCommand {
         for (int i = 0; i < results.size(); i++) {
             if (moodleNamed.get(i)) {
                 marks.add(Worksheet.Mark.of(results.get(i),
-                        CohortOutputs.grade(results.get(i), maxGrade, options.perScene())));
+                        CohortOutputs.grade(results.get(i), maxGrade, cohortOptions.perScene())));
             }
         }
         if (worksheet == null) {
@@ -242,10 +247,10 @@ final class CohortCommand {
         Worksheet.Filled filled = worksheet.fill(marks);
         ReportFiles.write(report.resolve(ReportFiles.GRADES), out -> out.write(filled.bytes()));
         for (String student : filled.withoutSubmission()) {
-            err.println("tick1 grade: " + options.worksheet() + ": " + printable(student) + " has no submission");
+            err.println("tick1 grade: " + cohortOptions.worksheet() + ": " + printable(student) + " has no submission");
         }
         for (String student : filled.withoutRow()) {
-            err.println("tick1 grade: " + options.worksheet() + ": no row for " + printable(student)
+            err.println("tick1 grade: " + cohortOptions.worksheet() + ": no row for " + printable(student)
                     + ": graded in the report, but not in grades.csv");
         }
     }

@@ -3,7 +3,6 @@ package gfx.tick1.command.grade;
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
 import gfx.tick1.command.shared.grader.grading.Grading;
-import gfx.tick1.command.shared.grader.grading.ReferenceChoice;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
@@ -19,12 +18,12 @@ import java.io.PrintWriter;
 import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -83,7 +82,7 @@ public final class GradeCommand implements Callable<Integer> {
         private OneStudent student;
 
         @ArgGroup(exclusive = false, multiplicity = "1")
-        private Cohort cohort;
+        private CohortOptions cohort;
     }
 
     /** {@code --sphere} and {@code --renderer}, both needed. */
@@ -97,76 +96,9 @@ public final class GradeCommand implements Callable<Integer> {
         private Path renderer;
     }
 
-    /** {@code --submissions} and the options that go only with it. */
-    static final class Cohort {
-        @Option(names = "--submissions", paramLabel = "PATH", required = true,
-                description = "Grade a whole cohort instead: PATH is Moodle's \"Download all submissions\" zip, or "
-                        + "the folder it unpacks to, with one folder per student. Writes grades.csv (Moodle's "
-                        + "grading worksheet), index.html, lookalikes.csv and a feedback folder per student into "
-                        + "the --report folder.")
-        private Path submissions;
-
-        @Option(names = "--worksheet", paramLabel = "FILE.csv",
-                description = "With --submissions: the grading worksheet downloaded from the assignment; grades.csv "
-                        + "is that worksheet with the grades and feedback filled in. It is read and checked before "
-                        + "anything is graded; the file itself is never changed.")
-        private Path worksheet;
-
-        @Option(names = "--jobs", paramLabel = "N",
-                description = "With --submissions: how many submissions to grade at once, each in a sandbox of its "
-                        + "own (default: the number of cores).")
-        private int jobs = Runtime.getRuntime().availableProcessors();
-
-        @Option(names = "--max-grade", paramLabel = "G",
-                description = "With --submissions: the grade for a pass; a fail is 0 (default: the worksheet's "
-                        + "Maximum Grade with --worksheet, else 1). A submission whose files could not be used "
-                        + "gets a blank grade, for you to look at first.")
-        private Double maxGrade;
-
-        @Option(names = "--per-scene",
-                description = "With --submissions: the grade is the share of scenes passed times --max-grade.")
-        private boolean perScene;
-
-        @Option(names = "--no-lookalikes", negatable = false,
-                description = "With --submissions: skip the look-alikes (lookalikes.csv and the report's \"Look "
-                        + "alike\" section: pairs of submissions whose methods share most of their tokens, or the "
-                        + "same rare wrong answers, and submissions like tick1's reference).")
-        private boolean noLookalikes;
-    }
-
-    @Option(names = "--scenes", paramLabel = "DIR",
-            description = "Grade on tick1.xml and every *.xml in DIR instead of tick1.xml and the built-in hidden "
-                    + "scene. The scenes of DIR are hidden: the report never quotes them and writes no images of them.")
-    private Path scenesFolder;
-
-    @Option(names = "--report", paramLabel = "DIR", defaultValue = "grade-report",
-            description = "Where to write the images of failing scenes: the student's, the expected one and a heat "
-                    + "map; with --submissions, the whole report and, in its state folder, every result so far "
-                    + "(default: ${DEFAULT-VALUE}).")
-    private Path reportFolder;
-
-    @Option(names = "--time-limit", paramLabel = "SECONDS", defaultValue = "60",
-            description = "How long the student's code may take for all scenes together, Java's start included; "
-                    + "compiling may take as long again (default: ${DEFAULT-VALUE}).")
-    private double timeLimitSeconds;
-
-    @Option(names = "--memory", paramLabel = "MiB", defaultValue = "512",
-            description = "The student's code's heap limit (default: ${DEFAULT-VALUE}).")
-    private int memoryMegabytes;
-
-    @Option(names = "--width", paramLabel = "PIXELS", defaultValue = "640",
-            description = "Image width (default: ${DEFAULT-VALUE}, as the course grades; smaller is quicker).")
-    private int width;
-
-    @Option(names = "--height", paramLabel = "PIXELS", defaultValue = "480",
-            description = "Image height (default: ${DEFAULT-VALUE}).")
-    private int height;
-
-    @Option(names = "--reference", paramLabel = "WHICH", defaultValue = "either",
-            description = "Which reference image a scene must equal: handout (the handout's intersection formula in "
-                    + "plain doubles), robust (tick1's own renderer, accurate where that formula is not) or either "
-                    + "(default: ${DEFAULT-VALUE}). The two differ only on hard scenes, such as giant spheres.")
-    private ReferenceChoice referenceChoice;
+    /** The options of every grade: the scenes, the report folder, the limits and the size. */
+    @Mixin
+    private GradeOptions options;
 
     /** What one student's grade prints: tick1's own report, or VPL's evaluation format. */
     enum Format { text, vpl }
@@ -224,7 +156,7 @@ public final class GradeCommand implements Callable<Integer> {
                 }
             }
         }
-        if (scenesFolder != null) {
+        if (options.scenesFolder() != null) {
             try {
                 sandbox = sandbox.hiding(organisersScenes());
             } catch (Sandbox.CannotHide e) {
@@ -232,10 +164,10 @@ public final class GradeCommand implements Callable<Integer> {
             }
         }
         if (target.cohort != null) {
-            return new CohortCommand(this, sandbox, out, err).call();
+            return new CohortCommand(options, target.cohort, sandbox, out, err).call();
         }
         Path work = Files.createTempDirectory("tick1-grade");
-        StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), memoryMegabytes);
+        StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), options.memoryMegabytes());
         // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
         // scenes and all.
         OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
@@ -268,14 +200,9 @@ public final class GradeCommand implements Callable<Integer> {
         if (!(maxGrade > 0 && maxGrade <= 1_000_000)) {
             return "--max-grade " + maxGrade + ": must be more than 0 and at most 1000000";
         }
-        if (!(timeLimitSeconds > 0 && timeLimitSeconds <= 3600)) {
-            return "--time-limit " + timeLimitSeconds + ": must be more than 0 and at most 3600 seconds";
-        }
-        if (memoryMegabytes < 32 || memoryMegabytes > 65536) {
-            return "--memory " + memoryMegabytes + ": must be from 32 to 65536 MiB";
-        }
-        if (width < 1 || width > 4096 || height < 1 || height > 4096) {
-            return "--width and --height must be from 1 to 4096, not " + width + " x " + height;
+        String problem = options.problem();
+        if (problem != null) {
+            return problem;
         }
         return format == Format.vpl ? VplGrade.checkOptions(this) : null;
     }
@@ -286,13 +213,13 @@ public final class GradeCommand implements Callable<Integer> {
         Submission submission;
         try {
             sandbox.checkReachable(work);
-            grading = Grading.prepare(work, scenesFolder, limits());
+            grading = Grading.prepare(work, options.scenesFolder(), options.limits());
             grading.copyScenes(work);
             grading.renderReferencesAhead();
             submission = vpl() ? StudentFiles.asSubmitted(target.student.sphere, target.student.renderer, err)
                     : StudentFiles.of(target.student.sphere, target.student.renderer, err);
             if (!vpl()) {
-                WorkFolder.removeEarlierReport(reportFolder);
+                WorkFolder.removeEarlierReport(options.reportFolder());
             }
         } catch (SceneException e) {
             throw new CommandFailure(EXIT_USAGE, e.getMessage());
@@ -301,8 +228,8 @@ public final class GradeCommand implements Callable<Integer> {
         }
         StudentProcess.writeHarness(Files.createDirectory(work.resolve("harness")));
         SubmissionGrader.Graded graded = new SubmissionGrader(grading, sandbox, process, work).grade(submission,
-                work, vpl() ? work.resolve("images") : reportFolder, vpl() ? new PrintWriter(Writer.nullWriter()) : out,
-                err);
+                work, vpl() ? work.resolve("images") : options.reportFolder(),
+                vpl() ? new PrintWriter(Writer.nullWriter()) : out, err);
         if (vpl()) {
             out.print(VplReport.of(graded.result(), graded.compileErrors(), gradeRange()));
             out.flush();
@@ -339,6 +266,7 @@ public final class GradeCommand implements Callable<Integer> {
      * folder it really is in, which a link may put elsewhere.
      */
     private List<Path> organisersScenes() throws IOException {
+        Path scenesFolder = options.scenesFolder();
         List<Path> scenes = new ArrayList<>(List.of(scenesFolder));
         if (Files.isDirectory(scenesFolder)) {
             try (var files = Files.list(scenesFolder)) {
@@ -348,44 +276,14 @@ public final class GradeCommand implements Callable<Integer> {
         return scenes;
     }
 
-    Path scenesFolder() {
-        return scenesFolder;
-    }
-
-    Path reportFolder() {
-        return reportFolder;
-    }
-
-    Path submissions() {
-        return target.cohort.submissions;
-    }
-
-    Path worksheet() {
-        return target.cohort == null ? null : target.cohort.worksheet;
-    }
-
-    int jobs() {
+    /** The --jobs given, for the check of the options; the number of cores for one student. */
+    private int jobs() {
         return target == null || target.cohort == null ? Runtime.getRuntime().availableProcessors()
-                : target.cohort.jobs;
+                : target.cohort.jobs();
     }
 
-    /** The --max-grade given, or null: the worksheet's maximum, else 1. */
-    Double maxGrade() {
-        return target == null || target.cohort == null ? null : target.cohort.maxGrade;
-    }
-
-    boolean perScene() {
-        return target.cohort.perScene;
-    }
-
-    /** Whether to look for look-alikes in the cohort (on unless --no-lookalikes). */
-    boolean lookalikes() {
-        return !target.cohort.noLookalikes;
-    }
-
-    /** The limits and sizes of this grade. */
-    Grading.Limits limits() {
-        return new Grading.Limits(width, height, Duration.ofMillis(Math.round(timeLimitSeconds * 1000)),
-                memoryMegabytes, referenceChoice);
+    /** The --max-grade given, or null, for the check of the options. */
+    private Double maxGrade() {
+        return target == null || target.cohort == null ? null : target.cohort.maxGrade();
     }
 }

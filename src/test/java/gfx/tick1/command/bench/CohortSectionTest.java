@@ -8,8 +8,8 @@ import org.junit.jupiter.api.Test;
 /** The benchmark's cohort section says what was measured, with every phase, and sets no target. */
 class CohortSectionTest {
 
-    private static final CohortTiming.Measured MEASURED = new CohortTiming.Measured(100, 2, 100, 80.0, 0.9, 0.6,
-            0.05, 1.6, 0.0042, 0.0087);
+    private static final CohortTiming.Measured MEASURED = new CohortTiming.Measured(100, 2, 100, 80.0,
+            new CohortTiming.Medians(0.9, 0.6, 0.05, 1.6), new CohortTiming.Overheads(0.0042, 0.0087));
 
     @Test
     void theSectionGivesTheWallTimePerSubmissionAndEachPhase() {

@@ -25,18 +25,28 @@ import java.util.List;
 public final class CohortTiming {
 
     /**
-     * What was measured: the cohort's size, the jobs, the wall time of the whole grade (the
-     * shared set-up included), the median time per submission of each phase, and what the control
-     * groups and the output folders' own file systems add to a submission, in seconds.
+     * What was measured: the cohort's size, the jobs, how many passed, the wall time of the whole
+     * grade (the shared set-up included), the median time per submission of each phase, and what the
+     * control groups and the output folders' own file systems add to a submission, in seconds.
      */
-    public record Measured(int submissions, int jobs, int passed, double wallSeconds, double medianCompile,
-            double medianRender, double medianCompare, double medianTotal, double cgroupPerSubmission,
-            double outputDiskPerSubmission) {
+    public record Measured(int submissions, int jobs, int passed, double wallSeconds, Medians medians,
+            Overheads perSubmission) {
 
         /** The wall time of the whole grade shared out over the submissions. */
         public double wallPerSubmission() {
             return wallSeconds / submissions;
         }
+    }
+
+    /** The median time per submission of each phase, and of the whole of one submission, in seconds. */
+    public record Medians(double compile, double render, double compare, double total) {
+    }
+
+    /**
+     * What a submission's sandbox runs add beyond the grade's own work, in seconds: their control
+     * groups, and their output folders' own file systems.
+     */
+    public record Overheads(double cgroup, double outputDisk) {
     }
 
     /** Why the cohort could not be timed (no sandbox here). */
@@ -57,7 +67,7 @@ public final class CohortTiming {
     /** How many times the parts of a control group's cost, and an output file system's, are timed. */
     private static final int CGROUP_PROBES = 51;
 
-    /** {@code tick1 grade}'s default --memory. */
+    /** {@code tick1 grade}'s default --memory: the heap for the student's code (the compiler has at least 256 MiB). */
     private static final int DEFAULT_MEMORY_MEGABYTES = 512;
 
     private CohortTiming() {
@@ -70,15 +80,6 @@ public final class CohortTiming {
      */
     public static Measured measure(String sphere, String renderer, int count, int jobs, int width, int height)
             throws IOException, InterruptedException, Unavailable {
-        return measure(sphere, renderer, count, jobs, width, height, DEFAULT_MEMORY_MEGABYTES);
-    }
-
-    /**
-     * As above, with {@code memoryMegabytes} of heap for the student's code (the compiler has at
-     * least 256 MiB whatever it is).
-     */
-    public static Measured measure(String sphere, String renderer, int count, int jobs, int width, int height,
-            int memoryMegabytes) throws IOException, InterruptedException, Unavailable {
         Sandbox sandbox;
         try {
             sandbox = Sandbox.confined();
@@ -97,19 +98,19 @@ public final class CohortTiming {
         try {
             long start = System.nanoTime();
             Grading grading = Grading.prepare(Files.createDirectory(work.resolve("grading")), null,
-                    new Grading.Limits(width, height, Duration.ofSeconds(60), memoryMegabytes,
+                    new Grading.Limits(width, height, Duration.ofSeconds(60), DEFAULT_MEMORY_MEGABYTES,
                             ReferenceChoice.either));
             CohortGrade.Done done = new CohortGrade(grading, sandbox, jobs, new ResultStore(report.resolve("state")),
                     new PrintWriter(Writer.nullWriter()), false).run(submissions, work);
             double wall = (System.nanoTime() - start) / 1e9;
             List<SubmissionGrader.Phases> phases = done.phases();
             return new Measured(count, jobs, (int) done.results().stream().filter(r -> r.passed()).count(), wall,
-                    median(phases.stream().mapToLong(SubmissionGrader.Phases::compileNanos).toArray()),
-                    median(phases.stream().mapToLong(SubmissionGrader.Phases::renderNanos).toArray()),
-                    median(phases.stream().mapToLong(SubmissionGrader.Phases::compareNanos).toArray()),
-                    median(done.results().stream().mapToLong(r -> r.time().toNanos()).toArray()),
-                    RUNS_PER_SUBMISSION * sandbox.cgroupSeconds(CGROUP_PROBES),
-                    RUNS_PER_SUBMISSION * sandbox.outputDiskSeconds(CGROUP_PROBES));
+                    new Medians(median(phases.stream().mapToLong(SubmissionGrader.Phases::compileNanos).toArray()),
+                            median(phases.stream().mapToLong(SubmissionGrader.Phases::renderNanos).toArray()),
+                            median(phases.stream().mapToLong(SubmissionGrader.Phases::compareNanos).toArray()),
+                            median(done.results().stream().mapToLong(r -> r.time().toNanos()).toArray())),
+                    new Overheads(RUNS_PER_SUBMISSION * sandbox.cgroupSeconds(CGROUP_PROBES),
+                            RUNS_PER_SUBMISSION * sandbox.outputDiskSeconds(CGROUP_PROBES)));
         } finally {
             WorkFolder.delete(work);
             WorkFolder.delete(report);

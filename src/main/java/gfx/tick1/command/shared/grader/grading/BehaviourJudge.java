@@ -69,7 +69,7 @@ final class BehaviourJudge {
 
     static Behaviour judge(ProbeAnswers answers) {
         if (!answers.any()) {
-            MethodBehaviour none = new MethodBehaviour("", 0, List.of(), List.of(), null, List.of(), List.of());
+            MethodBehaviour none = new MethodBehaviour("", 0, MethodBehaviour.Difference.NONE, List.of());
             return new Behaviour(false, none, none);
         }
         List<RayCase> rays = new ArrayList<>();
@@ -85,9 +85,8 @@ final class BehaviourJudge {
                 answers.phongSet())));
         MethodBehaviour intersection = judge("intersectionWith", rays, Variant.Method.INTERSECTION_WITH,
                 AnswerFacts.ofHits(rays));
-        intersection = new MethodBehaviour(intersection.method(), intersection.inputs(), intersection.differing(),
-                intersection.mistake(), intersection.counterexample(), intersection.properties(),
-                untested(answers, rays, intersection.mistake()));
+        intersection = new MethodBehaviour(intersection.method(), intersection.inputs(), intersection.difference(),
+                untested(answers, rays, intersection.difference().mistake()));
         MethodBehaviour illumination = judge("illuminate", shadings, Variant.Method.ILLUMINATE,
                 AnswerFacts.ofColours(shadings));
         return new Behaviour(true, intersection, illumination);
@@ -98,7 +97,7 @@ final class BehaviourJudge {
         List<Integer> differing = IntStream.range(0, cases.size()).filter(i -> !cases.get(i).isOurs()).boxed()
                 .toList();
         if (differing.isEmpty()) {
-            return new MethodBehaviour(method, cases.size(), differing, List.of(), null, List.of(), List.of());
+            return new MethodBehaviour(method, cases.size(), MethodBehaviour.Difference.NONE, List.of());
         }
         // The differing inputs first: a model that is not the student's fails on one of them at once.
         List<Case> order = new ArrayList<>();
@@ -106,8 +105,8 @@ final class BehaviourJudge {
         IntStream.range(0, cases.size()).filter(i -> !differing.contains(i)).forEach(i -> order.add(cases.get(i)));
         Case simplest = differing.stream().map(cases::get).min(Comparator.comparingDouble(Case::roughness))
                 .orElseThrow();
-        return new MethodBehaviour(method, cases.size(), differing, reproducing(order, which),
-                simplest.counterexample(), properties, List.of());
+        return new MethodBehaviour(method, cases.size(), new MethodBehaviour.Difference(differing,
+                reproducing(order, which), simplest.counterexample(), properties), List.of());
     }
 
     /** The catalogue's entries whose model gives every answer: one, or two together, or none. */
@@ -247,10 +246,12 @@ final class BehaviourJudge {
 
         Vector3 model(Set<Variant> variants) {
             boolean set = phongSet;
+            ProbeCalls.Light light = call.light();
+            ProbeCalls.Material material = call.sphere().material();
             return MethodModels.illuminate(new MethodModels.Shading(v(call.ambient()),
-                    new PointLight(v(call.light()), v(call.lightColour()), call.intensity()), v(call.colour()),
-                    set ? call.kD() : ProbeCalls.COURSE_KD, set ? call.kS() : ProbeCalls.COURSE_KS,
-                    set ? call.n() : ProbeCalls.COURSE_N, v(call.point()), v(call.normal())), variants);
+                    new PointLight(v(light.position()), v(light.colour()), light.intensity()), v(material.colour()),
+                    set ? material.kD() : ProbeCalls.COURSE_KD, set ? material.kS() : ProbeCalls.COURSE_KS,
+                    set ? material.n() : ProbeCalls.COURSE_N, v(call.point()), v(call.normal())), variants);
         }
 
         @Override

@@ -83,8 +83,9 @@ public final class CodeProbe {
         sandbox.share(work, false);
         Path output = Files.createDirectory(work.resolve("output"));
         sandbox.share(output, true);
-        StudentProcess.CompiledAndRendered run = process.compileAndRender(sources, scenes, List.of(), output,
-                "Sphere.java", "Renderer.java", 1, 1, TIME_LIMIT, true);
+        StudentProcess.CompiledAndRendered run = process.compileAndRender(sources,
+                new StudentProcess.Batch(scenes, List.of(), 1, 1, true), output, "Sphere.java", "Renderer.java",
+                TIME_LIMIT);
         if (!run.compiled().compiled()) {
             return Hints.none("behaviour could not be checked: it comes from running your "
                     + "methods, and the files do not compile with the starter code"

@@ -26,14 +26,16 @@ final class InputWords {
     }
 
     static String shading(ProbeCalls.Illumination call, boolean phongSet) {
-        boolean course = !phongSet || call.kD() == ProbeCalls.COURSE_KD && call.kS() == ProbeCalls.COURSE_KS
-                && call.n() == ProbeCalls.COURSE_N;
-        String coefficients = course ? "" : ", k_d = " + number(call.kD()) + ", k_s = " + number(call.kS())
-                + ", n = " + number(call.n());
+        ProbeCalls.Light light = call.light();
+        ProbeCalls.Material material = call.sphere().material();
+        boolean course = !phongSet || material.kD() == ProbeCalls.COURSE_KD && material.kS() == ProbeCalls.COURSE_KS
+                && material.n() == ProbeCalls.COURSE_N;
+        String coefficients = course ? "" : ", k_d = " + number(material.kD()) + ", k_s = " + number(material.kS())
+                + ", n = " + number(material.n());
         return "P = " + vector(call.point()) + ", N = " + vector(call.normal()) + " on a sphere of colour C_diff = "
-                + vector(call.colour()) + coefficients + ", ambient light I_a = " + vector(call.ambient())
-                + " and a point light at " + vector(call.light()) + " of colour " + vector(call.lightColour())
-                + " and intensity " + intensity(call.intensity());
+                + vector(material.colour()) + coefficients + ", ambient light I_a = " + vector(call.ambient())
+                + " and a point light at " + vector(light.position()) + " of colour " + vector(light.colour())
+                + " and intensity " + intensity(light.intensity());
     }
 
     /** A hit, no hit, or how the call gave no answer. */
@@ -143,9 +145,11 @@ final class InputWords {
     }
 
     static double roughness(ProbeCalls.Illumination call) {
-        return roughness(concat(call.point(), call.normal(), call.colour(), call.ambient(), call.light(),
-                call.lightColour(), new double[] {call.kD(), call.kS(), call.n() / 10,
-                    call.intensity() / (4 * Math.PI)}));
+        ProbeCalls.Light light = call.light();
+        ProbeCalls.Material material = call.sphere().material();
+        return roughness(concat(call.point(), call.normal(), material.colour(), call.ambient(), light.position(),
+                light.colour(), new double[] {material.kD(), material.kS(), material.n() / 10,
+                    light.intensity() / (4 * Math.PI)}));
     }
 
     private static double[] concat(double[]... parts) {

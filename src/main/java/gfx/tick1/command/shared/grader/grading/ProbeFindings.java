@@ -45,17 +45,18 @@ final class ProbeFindings {
     private static Finding finding(MethodBehaviour b) {
         String inputs = SubmissionGrader.count(b.inputs(), "input");
         boolean sphere = b.method().equals("intersectionWith");
-        if (!b.mistake().isEmpty()) {
-            List<String> explained = b.mistake().stream().map(Variant::explanation).toList();
+        MethodBehaviour.Difference d = b.difference();
+        if (!d.mistake().isEmpty()) {
+            List<String> explained = d.mistake().stream().map(Variant::explanation).toList();
             return new Finding(b.method(), "your " + b.method() + " gives the answers of \""
-                    + BehaviourJudge.titles(b.mistake()) + "\" on all " + inputs + ": "
+                    + BehaviourJudge.titles(d.mistake()) + "\" on all " + inputs + ": "
                     + String.join("; and ", explained)
-                    + "; for example, " + b.counterexample(), b.mistake().get(0).reread(),
-                    String.join(" + ", b.mistake().stream().map(Variant::title).toList()));
+                    + "; for example, " + d.counterexample(), d.mistake().get(0).reread(),
+                    String.join(" + ", d.mistake().stream().map(Variant::title).toList()));
         }
-        StringBuilder fact = new StringBuilder("your " + b.method() + " differs from ours on " + b.differing().size()
-                + " of " + inputs + "; the simplest: " + b.counterexample());
-        b.properties().forEach(p -> fact.append("; ").append(p));
+        StringBuilder fact = new StringBuilder("your " + b.method() + " differs from ours on " + d.differing().size()
+                + " of " + inputs + "; the simplest: " + d.counterexample());
+        d.properties().forEach(p -> fact.append("; ").append(p));
         fact.append("; tick1 does not recognise this mistake");
         return new Finding(b.method(), fact.toString(), sphere ? INTERSECTION_SECTION : ILLUMINATE_SECTION,
                 b.method() + ": differs from ours");

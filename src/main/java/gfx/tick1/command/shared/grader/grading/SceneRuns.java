@@ -58,10 +58,10 @@ final class SceneRuns {
                 batch.forEach(scene -> traces.add(null));
                 continue;
             }
-            StudentProcess.Result result = process.render(started.classes(), Grading.batchScenes(scenes, hidden),
-                    sceneFiles(batch.size()), CompileStep.childFolder(sandbox, work,
-                            (hidden ? "hidden" : "public") + "-run"),
-                    limits.width(), limits.height(), left, limits.timeLimit(), !hidden);
+            StudentProcess.Result result = process.render(started.classes(), new StudentProcess.Batch(
+                    Grading.batchScenes(scenes, hidden), sceneFiles(batch.size()), limits.width(), limits.height(),
+                    !hidden), CompileStep.childFolder(sandbox, work, (hidden ? "hidden" : "public") + "-run"), left,
+                    limits.timeLimit());
             outcomes.addAll(result.outcomes());
             traces.addAll(result.traces());
             if (!hidden) {

@@ -26,18 +26,27 @@ public final class ProbeCalls {
     }
 
     /**
-     * A scene (ambient light, one point light of a colour and intensity), a sphere (centre, radius,
-     * colour C_diff), and the point P and unit normal N to shade on it, for illuminate.
+     * A scene (ambient light, one point light), a sphere, and the point P and unit normal N to shade
+     * on it, for illuminate.
      */
-    public record Illumination(String name, double[] ambient, double[] light, double[] lightColour,
-            double intensity, double[] centre, double radius, double[] colour, double[] point, double[] normal,
-            double kD, double kS, double n) {
+    public record Illumination(String name, double[] ambient, Light light, Sphere sphere, double[] point,
+            double[] normal) {
+    }
 
-        /** With the course's coefficients k_d = k_s = 0.8 and n = 10. */
-        Illumination(String name, double[] ambient, double[] light, double[] lightColour, double intensity,
-                double[] centre, double radius, double[] colour, double[] point, double[] normal) {
-            this(name, ambient, light, lightColour, intensity, centre, radius, colour, point, normal, COURSE_KD,
-                    COURSE_KS, COURSE_N);
+    /** A point light: where it is, its colour, and its intensity. */
+    public record Light(double[] position, double[] colour, double intensity) {
+    }
+
+    /** A sphere: its centre, its radius and its material. */
+    public record Sphere(double[] centre, double radius, Material material) {
+    }
+
+    /** A sphere's material: its colour C_diff and its Phong coefficients k_d, k_s and n. */
+    public record Material(double[] colour, double kD, double kS, double n) {
+
+        /** Of {@code colour}, with the course's coefficients k_d = k_s = 0.8 and n = 10. */
+        static Material course(double[] colour) {
+            return new Material(colour, COURSE_KD, COURSE_KS, COURSE_N);
         }
     }
 
@@ -52,6 +61,8 @@ public final class ProbeCalls {
     private static final double[] NEAR_POINT = {0, 0, 1}, TOWARDS_CAMERA = {0, 0, -1}, NEAR_CENTRE = {0, 0, 2};
     /** A colour with no green: green is then the specular term alone, red minus green the diffuse. */
     private static final double[] NO_GREEN = {0.5, 0, 0.25};
+    /** A light of intensity 0: the ambient term alone. */
+    private static final Light DARK = new Light(new double[] {0, 0, 5}, WHITE, 0);
 
     /** Rays and spheres: a hit, a miss, a graze, a ray pointing away, a sphere behind, inside, on the surface. */
     public static final List<Intersection> INTERSECTIONS = List.of(
@@ -75,29 +86,37 @@ public final class ProbeCalls {
      * away from the camera (R.V = -1); at an angle; and with the camera at distance 2.
      */
     public static final List<Illumination> ILLUMINATIONS = List.of(
-            new Illumination("ambient", new double[] {0.5, 0.75, 0.25}, new double[] {0, 0, 5}, WHITE, 0,
-                    NEAR_CENTRE, 1, new double[] {0.2, 0.4, 0.6}, NEAR_POINT, TOWARDS_CAMERA),
-            new Illumination("red", WHITE, new double[] {0, 0, 5}, WHITE, 0, NEAR_CENTRE, 1,
-                    new double[] {1, 0, 0}, NEAR_POINT, TOWARDS_CAMERA),
-            new Illumination("green", WHITE, new double[] {0, 0, 5}, WHITE, 0, NEAR_CENTRE, 1,
-                    new double[] {0, 1, 0}, NEAR_POINT, TOWARDS_CAMERA),
-            new Illumination("blue", WHITE, new double[] {0, 0, 5}, WHITE, 0, NEAR_CENTRE, 1,
-                    new double[] {0, 0, 1}, NEAR_POINT, TOWARDS_CAMERA),
-            new Illumination("near", BLACK, ORIGIN, WHITE, FOUR_PI, NEAR_CENTRE, 1, NO_GREEN, NEAR_POINT,
+            new Illumination("ambient", new double[] {0.5, 0.75, 0.25}, DARK, near(new double[] {0.2, 0.4, 0.6}),
+                    NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("red", WHITE, DARK, near(new double[] {1, 0, 0}), NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("green", WHITE, DARK, near(new double[] {0, 1, 0}), NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("blue", WHITE, DARK, near(new double[] {0, 0, 1}), NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("near", BLACK, white(ORIGIN), near(NO_GREEN), NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("far", BLACK, white(new double[] {0, 0, -1}), near(NO_GREEN), NEAR_POINT,
                     TOWARDS_CAMERA),
-            new Illumination("far", BLACK, new double[] {0, 0, -1}, WHITE, FOUR_PI, NEAR_CENTRE, 1, NO_GREEN,
-                    NEAR_POINT, TOWARDS_CAMERA),
-            new Illumination("light-behind", BLACK, new double[] {0, 0, 3}, WHITE, FOUR_PI, NEAR_CENTRE, 1, NO_GREEN,
-                    NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("light-behind", BLACK, white(new double[] {0, 0, 3}), near(NO_GREEN), NEAR_POINT,
+                    TOWARDS_CAMERA),
             // P = (0.6, 0, 0.8) at distance 1 from the camera, N = (1, 0, 0), L = (0.6, 0, -0.8): R = -V
-            new Illumination("side", BLACK, new double[] {1.2, 0, 0}, WHITE, FOUR_PI, new double[] {-0.4, 0, 0.8}, 1,
-                    NO_GREEN, new double[] {0.6, 0, 0.8}, new double[] {1, 0, 0}),
+            new Illumination("side", BLACK, white(new double[] {1.2, 0, 0}),
+                    new Sphere(new double[] {-0.4, 0, 0.8}, 1, Material.course(NO_GREEN)), new double[] {0.6, 0, 0.8},
+                    new double[] {1, 0, 0}),
             // L = (0.6, 0, -0.8): N.L = R.V = 0.8
-            new Illumination("oblique", BLACK, new double[] {0.6, 0, 0.2}, WHITE, FOUR_PI, NEAR_CENTRE, 1, NO_GREEN,
-                    NEAR_POINT, TOWARDS_CAMERA),
+            new Illumination("oblique", BLACK, white(new double[] {0.6, 0, 0.2}), near(NO_GREEN), NEAR_POINT,
+                    TOWARDS_CAMERA),
             // the camera at distance 2 from P, the light at distance 1 along the normal
-            new Illumination("camera-far", BLACK, new double[] {0, 0, 1}, WHITE, FOUR_PI, new double[] {0, 0, 3}, 1,
-                    NO_GREEN, new double[] {0, 0, 2}, TOWARDS_CAMERA));
+            new Illumination("camera-far", BLACK, white(new double[] {0, 0, 1}),
+                    new Sphere(new double[] {0, 0, 3}, 1, Material.course(NO_GREEN)), new double[] {0, 0, 2},
+                    TOWARDS_CAMERA));
+
+    /** A white light at {@code position} of intensity 4 pi: I = 1 at distance 1. */
+    private static Light white(double[] position) {
+        return new Light(position, WHITE, FOUR_PI);
+    }
+
+    /** The sphere of centre (0, 0, 2) and radius 1, of {@code colour} and the course's coefficients. */
+    private static Sphere near(double[] colour) {
+        return new Sphere(NEAR_CENTRE, 1, Material.course(colour));
+    }
 
     /** The unit vectors of round components (0, 1), (0.6, 0.8) and (0.48, 0.6, 0.64), any order and signs. */
     private static final double[][] ROUND_UNITS = {{1, 0, 0}, {0.6, 0.8, 0}, {0.48, 0.6, 0.64}};
@@ -155,9 +174,13 @@ public final class ProbeCalls {
             }
             double[] light = {point[0] + offset[0], point[1] + offset[1], point[2] + offset[2]};
             double[] centre = {point[0] - normal[0], point[1] - normal[1], point[2] - normal[2]};
-            calls.add(new Illumination("shade" + calls.size(), tenths(random, 0, 5), light, tenths(random, 2, 10),
-                    4 * Math.PI * random.nextInt(1, 5), centre, 1, tenths(random, 0, 10), point, normal,
-                    random.nextInt(1, 11) / 10.0, random.nextInt(1, 11) / 10.0, random.nextInt(1, 31)));
+            // In the order the random numbers were always drawn: ambient, light, material.
+            double[] ambient = tenths(random, 0, 5);
+            Light shining = new Light(light, tenths(random, 2, 10), 4 * Math.PI * random.nextInt(1, 5));
+            Material material = new Material(tenths(random, 0, 10), random.nextInt(1, 11) / 10.0,
+                    random.nextInt(1, 11) / 10.0, random.nextInt(1, 31));
+            calls.add(new Illumination("shade" + calls.size(), ambient, shining, new Sphere(centre, 1, material), point,
+                    normal));
         }
         return List.copyOf(calls);
     }

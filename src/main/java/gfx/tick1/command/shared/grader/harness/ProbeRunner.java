@@ -139,10 +139,12 @@ public final class ProbeRunner {
     }
 
     private String illuminate(ProbeCalls.Illumination call, boolean setPhong) throws ReflectiveOperationException {
-        Object scene = api.scene(call.ambient(), call.light(), call.lightColour(), call.intensity());
-        Object sphere = api.sphere(call.centre(), call.radius(), call.colour());
+        ProbeCalls.Light light = call.light();
+        ProbeCalls.Material material = call.sphere().material();
+        Object scene = api.scene(call.ambient(), light.position(), light.colour(), light.intensity());
+        Object sphere = api.sphere(call.sphere().centre(), call.sphere().radius(), material.colour());
         if (setPhong) {
-            api.setPhong(sphere, call.kD(), call.kS(), call.n());
+            api.setPhong(sphere, material.kD(), material.kS(), material.n());
         }
         Object colour = api.illuminate(api.renderer(1, 1), scene, sphere, api.vector(call.point()),
                 api.vector(call.normal()));

@@ -136,16 +136,15 @@ final class CodeReader {
                 }
             }
         }
-        tokens = Arrays.copyOf(tokens, count);
+        ComparedCode.Tokens read = new ComparedCode.Tokens(Arrays.copyOf(tokens, count),
+                Arrays.copyOf(memberOf, count), Arrays.copyOf(starts, count), Arrays.copyOf(ends, count));
         boolean[] setAside = new boolean[count];
         if (base != null) {
-            ComparedCode unmarked = new ComparedCode(members, allNotes, tokens, memberOf, starts, ends, setAside,
-                    minimum);
+            ComparedCode unmarked = new ComparedCode(members, allNotes, read, setAside, minimum);
             for (GreedyStringTiling.Tile tile : GreedyStringTiling.tiles(unmarked.sequence, base.sequence)) {
                 Arrays.fill(setAside, tile.a(), tile.a() + tile.length(), true);
             }
         }
-        return new ComparedCode(members, allNotes, tokens, Arrays.copyOf(memberOf, count),
-                Arrays.copyOf(starts, count), Arrays.copyOf(ends, count), setAside, minimum);
+        return new ComparedCode(members, allNotes, read, setAside, minimum);
     }
 }

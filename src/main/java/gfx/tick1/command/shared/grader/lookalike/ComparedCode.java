@@ -32,6 +32,13 @@ public final class ComparedCode {
     public record Span(int start, int end, Kind kind) {
     }
 
+    /**
+     * The tokens of a side, each at the same index of the four: its word (an index into the
+     * vocabulary), the member it is in, and where it starts and ends in that member's text.
+     */
+    record Tokens(int[] words, int[] memberOf, int[] starts, int[] ends) {
+    }
+
     private final List<Member> members;
     private final List<String> notes;
     /** Each token's index into the vocabulary, the member it is in, and its span in that member's text. */
@@ -41,15 +48,15 @@ public final class ComparedCode {
     private final int[] ends;
     final GreedyStringTiling.Sequence sequence;
 
-    ComparedCode(List<Member> members, List<String> notes, int[] tokens, int[] memberOf, int[] starts, int[] ends,
-            boolean[] base, int minimum) {
+    /** The side of {@code members} and {@code tokens}; {@code base} marks the tokens set aside. */
+    ComparedCode(List<Member> members, List<String> notes, Tokens tokens, boolean[] base, int minimum) {
         this.members = List.copyOf(members);
         this.notes = List.copyOf(notes);
-        this.tokens = tokens;
-        this.memberOf = memberOf;
-        this.starts = starts;
-        this.ends = ends;
-        this.sequence = new GreedyStringTiling.Sequence(tokens, base, minimum);
+        this.tokens = tokens.words();
+        this.memberOf = tokens.memberOf();
+        this.starts = tokens.starts();
+        this.ends = tokens.ends();
+        this.sequence = new GreedyStringTiling.Sequence(this.tokens, base, minimum);
     }
 
     public List<Member> members() {

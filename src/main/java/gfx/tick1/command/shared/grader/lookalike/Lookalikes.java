@@ -58,20 +58,19 @@ public final class Lookalikes {
         List<Lookalike> found = Collections.synchronizedList(new ArrayList<>());
         IntStream.range(0, codes.size()).parallel().forEach(i -> {
             for (int j = i + 1; j < codes.size(); j++) {
-                List<Tile> tiles = GreedyStringTiling.tiles(codes.get(i).sequence, codes.get(j).sequence);
-                double similarity = similarity(codes.get(i), codes.get(j), tiles);
+                Comparison pair = Comparison.of(codes.get(i), codes.get(j));
+                double similarity = pair.similarity();
                 if (similarity >= TOKEN_THRESHOLD) {
-                    found.add(new Lookalike(compared.get(i).submission(), compared.get(j).submission(), similarity,
-                            Reason.TOKENS, "same tokens after renaming (" + percent(similarity) + ")", codes.get(i),
-                            codes.get(j), tiles));
+                    found.add(new Lookalike(compared.get(i).submission(), compared.get(j).submission(),
+                            Reason.TOKENS, "same tokens after renaming (" + percent(similarity) + ")", pair));
                 }
             }
-            List<Tile> tiles = GreedyStringTiling.tiles(codes.get(i).sequence, reader.reference().sequence);
-            double similarity = similarity(codes.get(i), reader.reference(), tiles);
+            Comparison withReference = Comparison.of(codes.get(i), reader.reference());
+            double similarity = withReference.similarity();
             if (similarity >= TOKEN_THRESHOLD) {
-                found.add(new Lookalike(compared.get(i).submission(), null, similarity, Reason.REFERENCE,
+                found.add(new Lookalike(compared.get(i).submission(), null, Reason.REFERENCE,
                         "like tick1's reference: same tokens after renaming (" + percent(similarity) + ")",
-                        codes.get(i), reader.reference(), tiles));
+                        withReference));
             }
         });
         found.addAll(sameWrongAnswers(compared, codes, results.size()));
@@ -123,11 +122,9 @@ public final class Lookalikes {
                 for (int y = x + 1; y < students.size(); y++) {
                     int i = students.get(x);
                     int j = students.get(y);
-                    List<Tile> tiles = GreedyStringTiling.tiles(codes.get(i).sequence, codes.get(j).sequence);
                     pairs.add(new Lookalike(compared.get(i).submission(), compared.get(j).submission(),
-                            similarity(codes.get(i), codes.get(j), tiles), fingerprint.isNamed()
-                            ? Reason.SAME_WRONG_ANSWERS : Reason.SAME_UNCATALOGUED_ANSWERS,
-                            fingerprint.why(), codes.get(i), codes.get(j), tiles));
+                            fingerprint.isNamed() ? Reason.SAME_WRONG_ANSWERS : Reason.SAME_UNCATALOGUED_ANSWERS,
+                            fingerprint.why(), Comparison.of(codes.get(i), codes.get(j))));
                 }
             }
         });

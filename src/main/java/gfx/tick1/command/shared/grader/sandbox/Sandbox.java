@@ -67,6 +67,7 @@ public final class Sandbox {
     /** The size of each empty folder that hides tick1's own code under /usr. */
     private static final long HIDING_BYTES = 64L << 10;
 
+    /** The bwrap that makes the sandbox; null for {@link #unconfined()}. */
     private final Path bwrap;
     private final boolean confined;
     /** Where each run's control group is made, or null: totals are then not enforced. */
@@ -82,16 +83,27 @@ public final class Sandbox {
     /** Whether each run's output folder is a file system of its own ({@link OutputDisk}). */
     private final boolean ownDisks;
 
-    private Sandbox(Path bwrap, boolean confined, int uid, int job, Cgroup.Place cgroups, Path spaceFilter,
-            List<Path> secrets, boolean ownDisks) {
-        this.bwrap = bwrap;
-        this.confined = confined;
-        this.cgroups = cgroups;
+    private Sandbox(Host host, int uid, int job, List<Path> secrets) {
+        this.bwrap = host.bwrap();
+        this.confined = bwrap != null;
+        this.cgroups = host.cgroups();
         this.uid = uid;
         this.job = job;
-        this.spaceFilter = spaceFilter;
+        this.spaceFilter = host.spaceFilter();
         this.secrets = List.copyOf(secrets);
-        this.ownDisks = ownDisks;
+        this.ownDisks = host.ownDisks();
+    }
+
+    /**
+     * What this machine gives every sandbox made here: the bwrap (null for none), where control
+     * groups are made (or null), the seccomp filter's file (or null), and whether each run's output
+     * folder can be a file system of its own.
+     */
+    private record Host(Path bwrap, Cgroup.Place cgroups, Path spaceFilter, boolean ownDisks) {
+    }
+
+    private Host host() {
+        return new Host(bwrap, cgroups, spaceFilter, ownDisks);
     }
 
     /**
@@ -106,7 +118,7 @@ public final class Sandbox {
         List<Path> all = new ArrayList<>(secrets);
         all.addAll(paths);
         secretsShown(shown(), all);
-        return new Sandbox(bwrap, confined, uid, job, cgroups, spaceFilter, all, ownDisks);
+        return new Sandbox(host(), uid, job, all);
     }
 
     /**
@@ -118,8 +130,7 @@ public final class Sandbox {
         if (job < 0 || job >= MOST_JOBS) {
             throw new IllegalArgumentException("job " + job + ": must be from 0 to " + (MOST_JOBS - 1));
         }
-        return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + job * JOB_UID_STEP, job, cgroups, spaceFilter,
-                secrets, ownDisks);
+        return new Sandbox(host(), uid < 0 ? uid : uid + job * JOB_UID_STEP, job, secrets);
     }
 
     /**
@@ -128,13 +139,12 @@ public final class Sandbox {
      * process limit nor can signal each other. Only for a sandbox {@link #forJob} made.
      */
     public Sandbox forCompiler() {
-        return new Sandbox(bwrap, confined, uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job, cgroups,
-                spaceFilter, secrets, ownDisks);
+        return new Sandbox(host(), uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job, secrets);
     }
 
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
     public static Sandbox unconfined() {
-        return new Sandbox(null, false, -1, 0, null, null, List.of(), false);
+        return new Sandbox(new Host(null, null, null, false), -1, 0, List.of());
     }
 
     /**
@@ -162,9 +172,8 @@ public final class Sandbox {
         } catch (IOException e) {
             throw new Unavailable("cannot write the sandbox's seccomp filter (" + e.getMessage() + ")");
         }
-        Sandbox sandbox = new Sandbox(bwrap, true,
-                root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0, Cgroup.find(),
-                spaceFilter, List.of(), root && canMountOutputDisks());
+        Sandbox sandbox = new Sandbox(new Host(bwrap, Cgroup.find(), spaceFilter, root && canMountOutputDisks()),
+                root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0, List.of());
         sandbox.selfTest();
         return sandbox;
     }
@@ -295,24 +304,7 @@ public final class Sandbox {
             return command;
         }
         List<String> wrapped = new ArrayList<>(startCommand(cgroup));
-        String core = oneCore ? oneAllowedCore(job) : null;
-        if (core != null) {
-            wrapped.addAll(List.of(TASKSET.toString(), "--cpu-list", core));
-        }
-        if (uid >= 0) {
-            wrapped.addAll(List.of(SETPRIV.toString(), "--reuid=" + uid, "--regid=" + uid, "--clear-groups",
-                    "--inh-caps=-all", "--bounding-set=-all", "--no-new-privs"));
-        }
-        wrapped.addAll(List.of(PRLIMIT.toString(),
-                "--cpu=" + cpuSeconds,
-                "--as=" + (addressSpaceMiB << 20),
-                "--fsize=" + FILE_SIZE_LIMIT,
-                "--nofile=" + OPEN_FILES_LIMIT,
-                "--core=0"));
-        if (uid >= 0) {
-            // RLIMIT_NPROC counts every process of the user: only meaningful for a user of its own.
-            wrapped.add("--nproc=" + PROCESSES_LIMIT);
-        }
+        wrapped.addAll(limits(cpuSeconds, addressSpaceMiB, oneCore));
         wrapped.addAll(List.of("--", bwrap.toString(),
                 "--unshare-all", "--unshare-user", "--disable-userns",
                 "--die-with-parent", "--new-session", "--cap-drop", "ALL",
@@ -364,6 +356,34 @@ public final class Sandbox {
         wrapped.addAll(List.of("--remount-ro", "/", "--chdir", "/", "--"));
         wrapped.addAll(command);
         return wrapped;
+    }
+
+    /**
+     * The programs that hold the sandbox to its limits before bwrap starts: its core ({@code taskset},
+     * if {@code oneCore}), its user ({@code setpriv}, when the grader is root) and the limits per
+     * process ({@code prlimit}).
+     */
+    private List<String> limits(int cpuSeconds, long addressSpaceMiB, boolean oneCore) {
+        List<String> limits = new ArrayList<>();
+        String core = oneCore ? oneAllowedCore(job) : null;
+        if (core != null) {
+            limits.addAll(List.of(TASKSET.toString(), "--cpu-list", core));
+        }
+        if (uid >= 0) {
+            limits.addAll(List.of(SETPRIV.toString(), "--reuid=" + uid, "--regid=" + uid, "--clear-groups",
+                    "--inh-caps=-all", "--bounding-set=-all", "--no-new-privs"));
+        }
+        limits.addAll(List.of(PRLIMIT.toString(),
+                "--cpu=" + cpuSeconds,
+                "--as=" + (addressSpaceMiB << 20),
+                "--fsize=" + FILE_SIZE_LIMIT,
+                "--nofile=" + OPEN_FILES_LIMIT,
+                "--core=0"));
+        if (uid >= 0) {
+            // RLIMIT_NPROC counts every process of the user: only meaningful for a user of its own.
+            limits.add("--nproc=" + PROCESSES_LIMIT);
+        }
+        return limits;
     }
 
     /**

@@ -32,13 +32,61 @@ final class SandboxedProcess {
     static final int TOTAL_BEYOND_HEAP_MEGABYTES = 512;
 
     /**
-     * What to run: the harness's arguments, the folders bound in, the time limit (until the
-     * harness logs "compiled" in {@code progress} when that is given, and {@code thenLimit} from
-     * then on), the heap, whether it runs the student's code (on one core), the JVM's options, and
-     * the file system of the one folder it may write, whose caps the run is held to (or null).
+     * What to run: the harness's arguments; the folders bound in; the file system of the output
+     * folder among them, whose caps the run is held to (or null: none is); the time limit, which for
+     * a run that compiles first starts again when the harness logs "compiled" in {@code progress}
+     * (null for any other run); and its JVM.
+     * Made by {@link #of} and the methods that return a changed copy, in the order the folders are bound.
      */
-    record Request(List<String> harnessArguments, List<Bind> binds, Duration timeLimit, Path progress,
-            Duration thenLimit, int heapMegabytes, boolean studentCode, List<String> javaOptions, OutputDisk output) {
+    record Request(List<String> harnessArguments, List<Bind> binds, OutputDisk output, Duration timeLimit,
+            Path progress,
+            Jvm jvm) {
+
+        /** The harness run with {@code harnessArguments} in {@code jvm} within {@code timeLimit}, nothing bound in. */
+        static Request of(List<String> harnessArguments, Duration timeLimit, Jvm jvm) {
+            return new Request(List.copyOf(harnessArguments), List.of(), null, timeLimit, null, jvm);
+        }
+
+        /** The same run with {@code folder} bound in, read-only, at {@code inside}. */
+        Request reading(Path folder, String inside) {
+            return withBinds(plus(new Bind(folder, inside, false)));
+        }
+
+        /** The same run with {@code folder} bound in, writable, at {@code inside}. */
+        Request writing(Path folder, String inside) {
+            return withBinds(plus(new Bind(folder, inside, true)));
+        }
+
+        /** The same run with {@code disk}'s folder bound in, writable, at {@code inside}, as its output folder. */
+        Request output(OutputDisk disk, String inside) {
+            return new Request(harnessArguments, plus(new Bind(disk.folder(), inside, true)), disk, timeLimit,
+                    progress, jvm);
+        }
+
+        /** The same run compiling first: its time limit starts again when {@code progress} says it compiled. */
+        Request compilingFirst(Path progress) {
+            return new Request(harnessArguments, binds, output, timeLimit, progress, jvm);
+        }
+
+        /** The same run with {@code all} bound in instead. */
+        Request withBinds(List<Bind> all) {
+            return new Request(harnessArguments, List.copyOf(all), output, timeLimit, progress, jvm);
+        }
+
+        /** How long the run may go on once the harness logs that it compiled: none for a run that does not compile. */
+        Duration thenLimit() {
+            return progress == null ? Duration.ZERO : timeLimit;
+        }
+
+        private List<Bind> plus(Bind bind) {
+            List<Bind> all = new ArrayList<>(binds);
+            all.add(bind);
+            return all;
+        }
+    }
+
+    /** The harness's JVM: its heap, whether it is held to one core (as the student's code is), its options. */
+    record Jvm(int heapMegabytes, boolean oneCore, List<String> options) {
     }
 
     /**
@@ -73,8 +121,7 @@ final class SandboxedProcess {
             throw new InterruptedException("the grade was stopped");
         }
         int cpuSeconds = (int) Math.ceil(request.timeLimit().plus(request.thenLimit()).toMillis() / 1000.0) + 1;
-        try (Started started = start(sandbox, command, request.binds(), cpuSeconds, request.heapMegabytes(),
-                request.studentCode())) {
+        try (Started started = start(sandbox, command, request.binds(), cpuSeconds, request.jvm())) {
             Process process = started.process();
             running = process;
             try {
@@ -126,11 +173,13 @@ final class SandboxedProcess {
 
     /**
      * Starts {@code command} in {@code sandbox} with {@code binds}, at most {@code cpuSeconds} of
-     * processor time, a heap of {@code heapMegabytes} and the address space and totals that go
-     * with it; on one core when {@code oneCore}. Its standard streams are the caller's to use.
+     * processor time, the heap of {@code jvm} and the address space and totals that go with it; on
+     * one core when it says so. Its standard streams are the caller's to use.
      */
-    static Started start(Sandbox sandbox, List<String> command, List<Bind> binds, int cpuSeconds, int heapMegabytes,
-            boolean oneCore) throws IOException {
+    static Started start(Sandbox sandbox, List<String> command, List<Bind> binds, int cpuSeconds, Jvm jvm)
+            throws IOException {
+        int heapMegabytes = jvm.heapMegabytes();
+        boolean oneCore = jvm.oneCore();
         Cgroup cgroup = sandbox.cgroupFor(new Cgroup.Totals(
                 (long) (heapMegabytes + TOTAL_BEYOND_HEAP_MEGABYTES) << 20, Sandbox.PROCESSES_LIMIT, oneCore));
         try {

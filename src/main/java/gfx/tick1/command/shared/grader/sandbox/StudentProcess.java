@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.grader.sandbox;
 import gfx.tick1.command.shared.grader.harness.StudentCompiler;
 import gfx.tick1.command.shared.grader.harness.StudentHarness;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox.Bind;
+import gfx.tick1.command.shared.grader.sandbox.SandboxedProcess.Jvm;
 import gfx.tick1.command.shared.grader.sandbox.SandboxedProcess.Request;
 import gfx.tick1.command.shared.grader.sandbox.SandboxedProcess.Run;
 import gfx.tick1.command.shared.kit.StarterKit;
@@ -91,6 +92,13 @@ public final class StudentProcess implements AutoCloseable {
     public record CompiledAndRendered(Compiled compiled, Result rendered, long compileNanos) {
     }
 
+    /**
+     * The scenes one run renders: the files {@code sceneFiles} in the folder {@code scenes}, at
+     * {@code width} x {@code height}; with {@code probes}, the harness also runs the probes.
+     */
+    public record Batch(Path scenes, List<String> sceneFiles, int width, int height, boolean probes) {
+    }
+
     private final Sandbox sandbox;
     private final Path harness;
     private final int memoryMegabytes;
@@ -145,9 +153,8 @@ public final class StudentProcess implements AutoCloseable {
         Path written = Files.createDirectory(output.resolve("written"));
         sandbox.share(written, true);
         try (OutputDisk disk = sandbox.outputDisk(written)) {
-            Run run = run(new Request(List.of("compile", SOURCES, OUTPUT, sphereName, rendererName),
-                    List.of(new Bind(sources, SOURCES, false), new Bind(written, OUTPUT, true)),
-                    timeLimit, null, Duration.ZERO, compilerHeap(), false, archiveOption(), disk));
+            Run run = run(Request.of(List.of("compile", SOURCES, OUTPUT, sphereName, rendererName), timeLimit,
+                    compilerJvm(false)).reading(sources, SOURCES).output(disk, OUTPUT));
             Compiled compiled = compiled(run, written, timeLimit);
             if (compiled.compiled()) {
                 copyClasses(written.resolve(StudentHarness.CLASSES_FOLDER),
@@ -214,19 +221,27 @@ public final class StudentProcess implements AutoCloseable {
     /** The compiler's JVM, for {@link CompileServer}: on the job's core, under the compiler's user, with its heap. */
     private SandboxedProcess.Started startCompiler(Sandbox compilerSandbox, Path folder, Duration timeLimit)
             throws IOException {
-        Request request = new Request(List.of(StudentHarness.COMPILE_SERVER, COMPILER),
-                List.of(new Bind(folder, COMPILER, true)), timeLimit, null, Duration.ZERO, compilerHeap(),
-                true, archiveOption(), null);
+        Request request = Request.of(List.of(StudentHarness.COMPILE_SERVER, COMPILER), timeLimit, compilerJvm(true))
+                .writing(folder, COMPILER);
         // Its processor time is bounded as that of the compiles one start serves, with a second each for
         // the JIT's and the collector's work between them.
         int cpuSeconds = ((int) Math.ceil(timeLimit.toMillis() / 1000.0) + 1) * CompileServer.COMPILES_PER_START;
         Launch launch = launch(request);
-        return SandboxedProcess.start(compilerSandbox, launch.command(), launch.binds(), cpuSeconds,
-                compilerHeap(), true);
+        return SandboxedProcess.start(compilerSandbox, launch.command(), launch.binds(), cpuSeconds, request.jvm());
     }
 
     private int compilerHeap() {
         return Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES);
+    }
+
+    /** The JVM that compiles: with the compiler's heap, on one core or not, mapping the shared archive. */
+    private Jvm compilerJvm(boolean oneCore) {
+        return new Jvm(compilerHeap(), oneCore, archiveOption());
+    }
+
+    /** The JVM that runs the student's code: with its heap, on one core, mapping the shared archive. */
+    private Jvm studentJvm() {
+        return new Jvm(memoryMegabytes, true, archiveOption());
     }
 
     /**
@@ -236,29 +251,38 @@ public final class StudentProcess implements AutoCloseable {
      * student's has run, so that line can be trusted. Only for scenes that are not hidden, as the
      * compiled classes stay in the output folder the code can write.
      */
-    public CompiledAndRendered compileAndRender(Path sources, Path scenes, List<String> sceneFiles, Path output,
-            String sphereName, String rendererName, int width, int height, Duration timeLimit, boolean probes)
-            throws IOException, InterruptedException {
-        List<String> arguments = new ArrayList<>(List.of("render", StudentHarness.COMPILE_FIRST, SOURCES,
-                sphereName, rendererName, OUTPUT, Integer.toString(width), Integer.toString(height)));
-        if (probes) {
-            arguments.add(1, StudentHarness.PROBES);
-        }
-        sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
+    public CompiledAndRendered compileAndRender(Path sources, Batch batch, Path output, String sphereName,
+            String rendererName, Duration timeLimit) throws IOException, InterruptedException {
         try (OutputDisk disk = sandbox.outputDisk(output)) {
-            Run run = run(new Request(arguments, List.of(new Bind(sources, SOURCES, false),
-                    new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), timeLimit,
-                    output.resolve(StudentHarness.PROGRESS_FILE), timeLimit, memoryMegabytes, true, archiveOption(),
-                    disk));
+            Run run = run(Request.of(renderArguments(batch, List.of(StudentHarness.COMPILE_FIRST, SOURCES,
+                    sphereName, rendererName)), timeLimit, studentJvm()).reading(sources, SOURCES)
+                    .reading(batch.scenes(), SCENES).output(disk, OUTPUT)
+                    .compilingFirst(output.resolve(StudentHarness.PROGRESS_FILE)));
             if (!run.compiledSeen()) {
                 Compiled compiled = compiled(run, output, timeLimit);
                 return new CompiledAndRendered(compiled.compiled()
                         ? new Compiled(List.of(), "the compiler stopped without logging that it had finished")
                         : compiled, null, run.compileNanos());
             }
-            return new CompiledAndRendered(new Compiled(List.of(), null),
-                    rendered(run, output, sceneFiles, width, height, timeLimit), run.compileNanos());
+            return new CompiledAndRendered(new Compiled(List.of(), null), rendered(run, output, batch, timeLimit),
+                    run.compileNanos());
         }
+    }
+
+    /**
+     * The harness's arguments for rendering {@code batch}: "render", the probes if asked, {@code code}
+     * (the classes, or the sources and the student's files' names), then the output folder, the size
+     * and the scenes.
+     */
+    private static List<String> renderArguments(Batch batch, List<String> code) {
+        List<String> arguments = new ArrayList<>(List.of("render"));
+        if (batch.probes()) {
+            arguments.add(StudentHarness.PROBES);
+        }
+        arguments.addAll(code);
+        arguments.addAll(List.of(OUTPUT, Integer.toString(batch.width()), Integer.toString(batch.height())));
+        batch.sceneFiles().forEach(name -> arguments.add(SCENES + "/" + name));
+        return arguments;
     }
 
     /** What a run that compiled (or tried to) says about compiling. */
@@ -294,28 +318,21 @@ public final class StudentProcess implements AutoCloseable {
     }
 
     /**
-     * Renders each scene with the compiled classes in {@code classes}; {@code output} is an empty
-     * folder for the child's images and logs. The run may take {@code timeLeft}, what is left of
-     * the grade's {@code timeLimit}. With {@code probes}, the harness also runs the probes.
+     * Renders each scene of {@code batch} with the compiled classes in {@code classes}; {@code output}
+     * is an empty folder for the child's images and logs. The run may take {@code timeLeft}, what is
+     * left of the grade's {@code timeLimit}.
      */
-    public Result render(Path classes, Path scenes, List<String> sceneFiles, Path output, int width, int height,
-            Duration timeLeft, Duration timeLimit, boolean probes) throws IOException, InterruptedException {
-        List<String> arguments = new ArrayList<>(List.of("render", CLASSES, OUTPUT,
-                Integer.toString(width), Integer.toString(height)));
-        if (probes) {
-            arguments.add(1, StudentHarness.PROBES);
-        }
-        sceneFiles.forEach(name -> arguments.add(SCENES + "/" + name));
+    public Result render(Path classes, Batch batch, Path output, Duration timeLeft, Duration timeLimit)
+            throws IOException, InterruptedException {
         try (OutputDisk disk = sandbox.outputDisk(output)) {
-            Run run = run(new Request(arguments, List.of(new Bind(classes, CLASSES, false),
-                    new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), timeLeft, null, Duration.ZERO,
-                    memoryMegabytes, true, archiveOption(), disk));
-            return rendered(run, output, sceneFiles, width, height, timeLimit);
+            Run run = run(Request.of(renderArguments(batch, List.of(CLASSES)), timeLeft, studentJvm())
+                    .reading(classes, CLASSES).reading(batch.scenes(), SCENES).output(disk, OUTPUT));
+            return rendered(run, output, batch, timeLimit);
         }
     }
 
-    private Result rendered(Run run, Path output, List<String> sceneFiles, int width, int height, Duration timeLimit)
-            throws IOException {
+    private Result rendered(Run run, Path output, Batch batch, Duration timeLimit) throws IOException {
+        List<String> sceneFiles = batch.sceneFiles();
         String progressText = ChildOutput.readText(output.resolve(StudentHarness.PROGRESS_FILE));
         List<Outcome> outcomes = new ArrayList<>();
         for (int i = 0; i < sceneFiles.size(); i++) {
@@ -323,7 +340,7 @@ public final class StudentProcess implements AutoCloseable {
                     ? new Outcome.Failed(NoImage.ENDED, "no image: the log of the run's progress is missing, "
                             + "unreadable or not a regular file (did the code remove, replace or chmod it?)")
                     : outcome(output, i, progressText == null ? List.of() : progressText.lines().toList(), run,
-                            width, height, timeLimit));
+                            batch, timeLimit));
         }
         List<String> traces = new ArrayList<>();
         for (int i = 0; i < sceneFiles.size(); i++) {
@@ -399,12 +416,11 @@ public final class StudentProcess implements AutoCloseable {
         sandbox.share(output, true);
         try (OutputDisk disk = sandbox.outputDisk(output)) {
             // With the probes, so that the classes they load are in the archive too.
-            Run run = run(new Request(List.of("render", StudentHarness.PROBES, StudentHarness.COMPILE_FIRST,
-                    SOURCES, "Sphere.java", "Renderer.java", OUTPUT, "8", "6", SCENES + "/0.xml"),
-                    List.of(new Bind(sources, SOURCES, false),
-                    new Bind(scenes, SCENES, false), new Bind(output, OUTPUT, true)), ARCHIVE_TIME_LIMIT, null,
-                    Duration.ZERO, Math.max(memoryMegabytes, COMPILER_HEAP_MEGABYTES), false,
-                    List.of("-XX:ArchiveClassesAtExit=" + inside(output, OUTPUT) + "/" + SHARED_ARCHIVE), disk));
+            List<String> code = List.of(StudentHarness.COMPILE_FIRST, SOURCES, "Sphere.java", "Renderer.java");
+            Run run = run(Request.of(renderArguments(new Batch(scenes, List.of("0.xml"), 8, 6, true), code),
+                    ARCHIVE_TIME_LIMIT, new Jvm(compilerHeap(), false,
+                            List.of("-XX:ArchiveClassesAtExit=" + inside(output, OUTPUT) + "/" + SHARED_ARCHIVE)))
+                    .reading(sources, SOURCES).reading(scenes, SCENES).output(disk, OUTPUT));
             Path archive = output.resolve(SHARED_ARCHIVE);
             // Without the image the run never reached ImageIO and the render: the archive would miss them.
             if (!run.finished() || !ChildOutput.isRegularFile(archive)
@@ -456,18 +472,16 @@ public final class StudentProcess implements AutoCloseable {
     /** Runs the harness as {@code request} says, in the sandbox, with the harness's jar and archive bound in. */
     private Run run(Request request) throws IOException, InterruptedException {
         Launch launch = launch(request);
-        return sandboxed.run(launch.command(), new Request(request.harnessArguments(), launch.binds(),
-                request.timeLimit(), request.progress(), request.thenLimit(), request.heapMegabytes(),
-                request.studentCode(), request.javaOptions(), request.output()));
+        return sandboxed.run(launch.command(), request.withBinds(launch.binds()));
     }
 
     private Launch launch(Request request) {
         List<String> command = new ArrayList<>(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx" + request.heapMegabytes() + "m",
+                "-Xmx" + request.jvm().heapMegabytes() + "m",
                 // A small first heap: the default (a 64th of the machine's memory) is fresh pages that fault in
                 // as the render allocates; its 640 x 480 render took 0.34 CPU seconds against 0.28 with this.
-                "-Xms" + Math.min(FIRST_HEAP_MEGABYTES, request.heapMegabytes()) + "m",
+                "-Xms" + Math.min(FIRST_HEAP_MEGABYTES, request.jvm().heapMegabytes()) + "m",
                 "-XX:MaxDirectMemorySize=32m",
                 "-XX:CompressedClassSpaceSize=64m",
                 "-XX:ReservedCodeCacheSize=64m",
@@ -478,7 +492,7 @@ public final class StudentProcess implements AutoCloseable {
                 "-Djava.awt.headless=true",
                 "-Djava.io.tmpdir=" + (sandbox.isConfined() ? OUTPUT : System.getProperty("java.io.tmpdir")),
                 "-cp", inside(harness, HARNESS) + "/" + HARNESS_JAR));
-        command.addAll(request.javaOptions());
+        command.addAll(request.jvm().options());
         command.add(StudentHarness.class.getName());
         command.addAll(sandbox.isConfined() ? request.harnessArguments()
                 : SandboxedProcess.unconfinedArguments(request.harnessArguments(), request.binds()));
@@ -490,7 +504,7 @@ public final class StudentProcess implements AutoCloseable {
         return new Launch(command, binds);
     }
 
-    private static Outcome outcome(Path output, int index, List<String> progress, Run run, int width, int height,
+    private static Outcome outcome(Path output, int index, List<String> progress, Run run, Batch batch,
             Duration timeLimit) throws IOException {
         Path image = output.resolve(index + ".png");
         String error = ChildOutput.readText(output.resolve(index + ".error"));
@@ -499,7 +513,7 @@ public final class StudentProcess implements AutoCloseable {
         }
         if (progress.contains("end " + index) && ChildOutput.isRegularFile(image)) {
             try {
-                return new Outcome.Rendered(ChildOutput.readPng(image, width, height));
+                return new Outcome.Rendered(ChildOutput.readPng(image, batch.width(), batch.height()));
             } catch (ChildOutput.Unusable e) {
                 return new Outcome.Failed(NoImage.ENDED,
                         "the image written for this scene is unusable: " + e.getMessage());

@@ -133,7 +133,7 @@ class BehaviourCatalogueTest {
         assertThat(findings.tested()).as("the tested findings of %s", variant).hasSize(1);
         MethodBehaviour method = variant.method() == Variant.Method.INTERSECTION_WITH
                 ? findings.behaviour().intersectionWith() : findings.behaviour().illuminate();
-        assertThat(method.mistake()).as("the entries whose models give every answer of %s", variant)
+        assertThat(method.difference().mistake()).as("the entries whose models give every answer of %s", variant)
                 .containsExactly(variant);
         assertThat(findings.untested()).as("the untested notes of %s", variant).isEmpty();
     }
@@ -167,7 +167,7 @@ class BehaviourCatalogueTest {
                 "Vector3 specular = C_spec.scale(new Vector3(I.x, I.y, I.y)).scale(k_s * Math.pow(Math.max(0, RdotV), "
                         + "n));").findings(folder);
         MethodBehaviour illuminate = findings.behaviour().illuminate();
-        assertThat(illuminate.mistake()).as("the entries named").isEmpty();
+        assertThat(illuminate.difference().mistake()).as("the entries named").isEmpty();
         assertThat(findings.facts()).as("the findings").singleElement().asString()
                 .startsWith("your illuminate differs from ours on ").contains("; the simplest: for ")
                 .endsWith("; tick1 does not recognise this mistake");
