@@ -27,7 +27,7 @@ final class Hints {
     static Said of(Map<String, String> theirs, Map<String, String> starter) throws InterruptedException {
         String sphere = theirs.getOrDefault("Sphere", starter.get("Sphere"));
         String renderer = theirs.getOrDefault("Renderer", starter.get("Renderer"));
-        CodeProbe.Hints hints = CodeProbe.probe(sphere, renderer, List.copyOf(theirs.keySet()));
+        CodeProbe.Lines hints = CodeProbe.probe(sphere, renderer, List.copyOf(theirs.keySet()));
         List<String> first = new ArrayList<>(hints.behaviour());
         if (hints.whyNone() != null) {
             first.add(hints.whyNone());

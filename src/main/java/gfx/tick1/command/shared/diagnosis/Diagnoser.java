@@ -144,9 +144,9 @@ public final class Diagnoser {
         checkBorder(image);
         BufferedImage inside = inner(image);
         VariantRenderer renderer = new VariantRenderer(image.getWidth(), image.getHeight());
-        PixelProbe probe = new PixelProbe(image.getWidth(), image.getHeight());
+        PixelSampler sampler = new PixelSampler(image.getWidth(), image.getHeight());
         return SceneChange.around(scene, example).stream()
-                .filter(change -> probe.mayBe(image, change.scene(), border))
+                .filter(change -> sampler.mayBe(image, change.scene(), border))
                 .filter(change -> samePixels(inner(renderer.render(change.scene(), Variant.CORRECT)), inside))
                 .toList();
     }

@@ -81,7 +81,7 @@ public final class ResultStore {
         add(sha, "Java " + System.getProperty("java.version"));
         add(sha, limits.width() + "x" + limits.height() + " " + limits.timeLimit().toMillis() + " ms "
                 + limits.memoryMegabytes() + " MiB reference " + limits.referenceChoice());
-        for (Grading.GradingScene scene : grading.scenes()) {
+        for (Grading.CourseScene scene : grading.scenes()) {
             add(sha, scene.name() + (scene.hidden() ? " hidden" : " public"));
             add(sha, Files.readAllBytes(scene.file()));
         }

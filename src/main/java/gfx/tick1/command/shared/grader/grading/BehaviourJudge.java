@@ -73,7 +73,7 @@ final class BehaviourJudge {
             return new Behaviour(false, none, none);
         }
         List<RayCase> rays = new ArrayList<>();
-        for (ProbeCalls.Intersection call : ProbeCalls.INTERSECTIONS) {
+        for (ProbeCalls.IntersectionCall call : ProbeCalls.INTERSECTIONS) {
             if (!UNTESTED_EDGES.contains(call.name())) {
                 rays.add(new RayCase(call, answers.get(call.name())));
             }
@@ -146,7 +146,7 @@ final class BehaviourJudge {
         List<String> notes = new ArrayList<>();
         List<RayCase> every = new ArrayList<>(tested);
         List<RayCase> edges = new ArrayList<>();
-        for (ProbeCalls.Intersection call : ProbeCalls.INTERSECTIONS) {
+        for (ProbeCalls.IntersectionCall call : ProbeCalls.INTERSECTIONS) {
             if (UNTESTED_EDGES.contains(call.name())) {
                 edges.add(new RayCase(call, answers.get(call.name())));
             }
@@ -183,7 +183,7 @@ final class BehaviourJudge {
     }
 
     /** A ray, a sphere and what intersectionWith gave. */
-    record RayCase(ProbeCalls.Intersection call, Answer answer) implements Case {
+    record RayCase(ProbeCalls.IntersectionCall call, Answer answer) implements Case {
 
         MethodModels.Hit model(Set<Variant> variants) {
             return MethodModels.intersect(v(call.origin()), v(call.direction()), v(call.centre()), call.radius(),
@@ -242,11 +242,11 @@ final class BehaviourJudge {
     }
 
     /** A point to shade and what illuminate gave. */
-    record ShadeCase(ProbeCalls.Illumination call, Answer answer, boolean phongSet) implements Case {
+    record ShadeCase(ProbeCalls.IlluminationCall call, Answer answer, boolean phongSet) implements Case {
 
         Vector3 model(Set<Variant> variants) {
             boolean set = phongSet;
-            ProbeCalls.Light light = call.light();
+            ProbeCalls.LightInput light = call.light();
             ProbeCalls.Material material = call.sphere().material();
             return MethodModels.illuminate(new MethodModels.Shading(v(call.ambient()),
                     new PointLight(v(light.position()), v(light.colour()), light.intensity()), v(material.colour()),

@@ -26,10 +26,10 @@ public final class CodeProbe {
      * What the methods asked about did: one line each, first; then "note: ..." and "hint: ..."
      * lines; or, when they could not be run, none and why.
      */
-    public record Hints(List<String> behaviour, List<String> hints, String whyNone, boolean behavesAsOurs) {
+    public record Lines(List<String> behaviour, List<String> hints, String whyNone, boolean behavesAsOurs) {
 
-        static Hints none(String why) {
-            return new Hints(List.of(), List.of(), why, false);
+        static Lines none(String why) {
+            return new Lines(List.of(), List.of(), why, false);
         }
     }
 
@@ -46,12 +46,12 @@ public final class CodeProbe {
      * Probes {@code sphere} and {@code renderer} (sources of package gfx.tick1); hints only of the
      * methods of the files named in {@code asked} ("Sphere", "Renderer").
      */
-    public static Hints probe(String sphere, String renderer, List<String> asked) throws InterruptedException {
+    public static Lines probe(String sphere, String renderer, List<String> asked) throws InterruptedException {
         Sandbox sandbox;
         try {
             sandbox = Sandbox.confined();
         } catch (Sandbox.Unavailable e) {
-            return Hints.none("behaviour could not be checked: it comes from running your methods in "
+            return Lines.none("behaviour could not be checked: it comes from running your methods in "
                     + "the sandbox, and " + e.getMessage() + " (install " + Sandbox.PACKAGE + ")");
         }
         Path work = null;
@@ -59,7 +59,7 @@ public final class CodeProbe {
             work = Files.createTempDirectory("tick1-diff");
             return probe(sandbox, work, sphere, renderer, asked);
         } catch (IOException e) {
-            return Hints.none("behaviour could not be checked: your methods could not be run ("
+            return Lines.none("behaviour could not be checked: your methods could not be run ("
                     + e.getMessage() + ")");
         } finally {
             if (work != null) {
@@ -68,7 +68,7 @@ public final class CodeProbe {
         }
     }
 
-    private static Hints probe(Sandbox sandbox, Path work, String sphere, String renderer, List<String> asked)
+    private static Lines probe(Sandbox sandbox, Path work, String sphere, String renderer, List<String> asked)
             throws IOException, InterruptedException {
         Path harness = Files.createDirectory(work.resolve("harness"));
         StudentProcess.writeHarness(harness);
@@ -87,20 +87,20 @@ public final class CodeProbe {
                 new StudentProcess.Batch(scenes, List.of(), 1, 1, true), output, "Sphere.java", "Renderer.java",
                 TIME_LIMIT);
         if (!run.compiled().compiled()) {
-            return Hints.none("behaviour could not be checked: it comes from running your "
+            return Lines.none("behaviour could not be checked: it comes from running your "
                     + "methods, and the files do not compile with the starter code"
                     + (run.compiled().failure() == null ? ""
                     : " (" + run.compiled().failure() + ")"));
         }
         ProbeFindings findings = ProbeFindings.of(run.rendered().probes());
         if (!findings.ran()) {
-            return Hints.none("behaviour could not be checked: your methods gave no answer");
+            return Lines.none("behaviour could not be checked: your methods gave no answer");
         }
         return hints(findings, asked);
     }
 
     /** The lines of the methods of the files named in {@code asked}. */
-    static Hints hints(ProbeFindings findings, List<String> asked) {
+    static Lines hints(ProbeFindings findings, List<String> asked) {
         List<String> behaviour = new ArrayList<>(), hints = new ArrayList<>();
         boolean ours = true;
         Behaviour b = findings.behaviour();
@@ -120,6 +120,6 @@ public final class CodeProbe {
             }
             method.untested().forEach(note -> hints.add("note: " + note));
         }
-        return new Hints(behaviour, hints, null, ours);
+        return new Lines(behaviour, hints, null, ours);
     }
 }

@@ -1,6 +1,6 @@
 package gfx.tick1.command.shared.grader.grading;
 
-import gfx.tick1.command.shared.grader.grading.Grading.GradingScene;
+import gfx.tick1.command.shared.grader.grading.Grading.CourseScene;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.image.PngOutput;
 import gfx.tick1.engine.io.IoErrors;
@@ -33,7 +33,7 @@ final class FeedbackImages {
     }
 
     /** The names of the three images written for scene {@code number}, or empty when they could not be. */
-    Optional<Written> write(int number, GradingScene scene, BufferedImage image, ImageDifference difference,
+    Optional<Written> write(int number, CourseScene scene, BufferedImage image, ImageDifference difference,
             BufferedImage expected) {
         String stem = number + "-" + scene.name().replaceAll("[^A-Za-z0-9._-]", "_").replaceAll("\\.xml$", "");
         Written names = new Written(stem + "-diff.png", stem + "-yours.png", stem + "-expected.png");

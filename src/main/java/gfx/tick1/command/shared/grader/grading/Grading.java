@@ -33,7 +33,7 @@ public final class Grading {
      * and whether it is hidden (its content must not reach the student: no expected image, no
      * message text of the student's code).
      */
-    public record GradingScene(String name, Path file, Scene scene, boolean hidden) {
+    public record CourseScene(String name, Path file, Scene scene, boolean hidden) {
     }
 
     /** The limits and sizes that change a grade. */
@@ -41,11 +41,11 @@ public final class Grading {
             ReferenceChoice referenceChoice) {
     }
 
-    private final List<GradingScene> scenes;
+    private final List<CourseScene> scenes;
     private final Limits limits;
     private final Map<String, CompletableFuture<BufferedImage>> references = new ConcurrentHashMap<>();
 
-    private Grading(List<GradingScene> scenes, Limits limits) {
+    private Grading(List<CourseScene> scenes, Limits limits) {
         this.scenes = List.copyOf(scenes);
         this.limits = limits;
     }
@@ -60,7 +60,7 @@ public final class Grading {
      */
     public static Grading prepare(Path work, Path extraScenes, Limits limits) throws IOException {
         Path bundled = Files.createDirectory(work.resolve("bundled"));
-        List<GradingScene> scenes = new ArrayList<>();
+        List<CourseScene> scenes = new ArrayList<>();
         scenes.add(load(BundledScenes.TICK1, BundledScenes.extract(BundledScenes.TICK1, bundled), false));
         if (extraScenes == null) {
             scenes.add(load(BundledScenes.HIDDEN, BundledScenes.extract(BundledScenes.HIDDEN, bundled), true));
@@ -90,7 +90,7 @@ public final class Grading {
         for (boolean hidden : new boolean[] {false, true}) {
             Path batch = Files.createDirectory(folder.resolve(batchFolder(hidden)));
             int index = 0;
-            for (GradingScene scene : scenes) {
+            for (CourseScene scene : scenes) {
                 if (scene.hidden() == hidden) {
                     Files.copy(scene.file(), batch.resolve(index++ + ".xml"));
                 }
@@ -98,25 +98,25 @@ public final class Grading {
         }
     }
 
-    private static GradingScene load(String name, Path file, boolean hidden) {
+    private static CourseScene load(String name, Path file, boolean hidden) {
         Scene scene = new SceneLoader(file, false).getScene();
         if (scene.getPointLight() == null) {
             // The handout's illuminate() starts with scene.getPointLight().getPosition().
             throw new SceneException(file + ": no <point-light>: the starter code needs one to grade with");
         }
-        return new GradingScene(name, file, scene, hidden);
+        return new CourseScene(name, file, scene, hidden);
     }
 
     private static String batchFolder(boolean hidden) {
         return (hidden ? "hidden" : "public") + "-scenes";
     }
 
-    public List<GradingScene> scenes() {
+    public List<CourseScene> scenes() {
         return scenes;
     }
 
     /** The scenes of one batch (public or hidden), in grading order. */
-    List<GradingScene> batch(boolean hidden) {
+    List<CourseScene> batch(boolean hidden) {
         return scenes.stream().filter(scene -> scene.hidden() == hidden).toList();
     }
 
@@ -136,7 +136,7 @@ public final class Grading {
      */
     public void renderReferencesAhead() {
         Thread ahead = new Thread(() -> {
-            for (GradingScene scene : scenes) {
+            for (CourseScene scene : scenes) {
                 for (Intersection intersection : limits.referenceChoice().intersections()) {
                     try {
                         reference(scene, intersection);
@@ -154,7 +154,7 @@ public final class Grading {
      * The reference image of {@code scene} with {@code intersection}: rendered by the first thread
      * that asks, and waited for by any other that asks meanwhile.
      */
-    BufferedImage reference(GradingScene scene, Intersection intersection) {
+    BufferedImage reference(CourseScene scene, Intersection intersection) {
         String key = scenes.indexOf(scene) + "/" + intersection;
         CompletableFuture<BufferedImage> mine = new CompletableFuture<>();
         CompletableFuture<BufferedImage> existing = references.putIfAbsent(key, mine);

@@ -20,13 +20,13 @@ final class InputWords {
     private InputWords() {
     }
 
-    static String ray(ProbeCalls.Intersection call) {
+    static String ray(ProbeCalls.IntersectionCall call) {
         return "the ray from O = " + vector(call.origin()) + " along D = " + vector(call.direction())
                 + " and the sphere of centre C = " + vector(call.centre()) + " and radius r = " + number(call.radius());
     }
 
-    static String shading(ProbeCalls.Illumination call, boolean phongSet) {
-        ProbeCalls.Light light = call.light();
+    static String shading(ProbeCalls.IlluminationCall call, boolean phongSet) {
+        ProbeCalls.LightInput light = call.light();
         ProbeCalls.Material material = call.sphere().material();
         boolean course = !phongSet || material.kD() == ProbeCalls.COURSE_KD && material.kS() == ProbeCalls.COURSE_KS
                 && material.n() == ProbeCalls.COURSE_N;
@@ -140,12 +140,12 @@ final class InputWords {
         return rough;
     }
 
-    static double roughness(ProbeCalls.Intersection call) {
+    static double roughness(ProbeCalls.IntersectionCall call) {
         return roughness(concat(call.origin(), call.direction(), call.centre(), new double[] {call.radius()}));
     }
 
-    static double roughness(ProbeCalls.Illumination call) {
-        ProbeCalls.Light light = call.light();
+    static double roughness(ProbeCalls.IlluminationCall call) {
+        ProbeCalls.LightInput light = call.light();
         ProbeCalls.Material material = call.sphere().material();
         return roughness(concat(call.point(), call.normal(), material.colour(), call.ambient(), light.position(),
                 light.colour(), new double[] {material.kD(), material.kS(), material.n() / 10,

@@ -2,7 +2,7 @@ package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.diagnosis.Diagnoser;
 import gfx.tick1.command.shared.diagnosis.Diagnosis;
-import gfx.tick1.command.shared.grader.grading.Grading.GradingScene;
+import gfx.tick1.command.shared.grader.grading.Grading.CourseScene;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.sandbox.NoImage;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess.Outcome;
@@ -59,7 +59,7 @@ final class SceneJudge {
 
     /** Every scene judged, in grading order: the public ones, then the hidden ones. */
     List<Judged> judgeAll(SceneRuns.Rendered rendered) {
-        List<GradingScene> ordered = new ArrayList<>(grading.batch(false));
+        List<CourseScene> ordered = new ArrayList<>(grading.batch(false));
         ordered.addAll(grading.batch(true));
         List<Judged> judged = new ArrayList<>();
         boolean probesShown = false;
@@ -73,7 +73,7 @@ final class SceneJudge {
     }
 
     /** Scene {@code number} judged; {@code probesShown}: an earlier scene's explanation has the findings. */
-    private Judged judge(int number, GradingScene scene, Outcome outcome, String trace, boolean probesShown) {
+    private Judged judge(int number, CourseScene scene, Outcome outcome, String trace, boolean probesShown) {
         if (outcome instanceof Outcome.Failed failed) {
             return notRendered(scene, failed);
         }
@@ -95,7 +95,7 @@ final class SceneJudge {
     }
 
     /** A scene the code gave no image for: why; for a hidden scene, a {@link HiddenVerdict}'s fixed words. */
-    private Judged notRendered(GradingScene scene, Outcome.Failed failed) {
+    private Judged notRendered(CourseScene scene, Outcome.Failed failed) {
         HiddenVerdict hidden = HiddenVerdict.ofNoImage(failed);
         String reason = scene.hidden() ? hidden.words() : failed.reason();
         out.println(scene.name() + ": FAIL: " + reason.replace("\n", "\n    "));
@@ -105,7 +105,7 @@ final class SceneJudge {
                 null, null, null), new SceneVerdict.Missing(why), false, false);
     }
 
-    private Judged passed(GradingScene scene, BufferedImage image, References references, boolean handoutMatched) {
+    private Judged passed(CourseScene scene, BufferedImage image, References references, boolean handoutMatched) {
         if (scene.hidden()) {
             // Which reference it matched is the code's to choose, on a scene where the two differ.
             out.println(scene.name() + ": " + HiddenVerdict.PASS.words());
@@ -124,7 +124,7 @@ final class SceneJudge {
     }
 
     /** Why a matching image fails: their own methods give other colours, or could not be asked. */
-    private Judged notFromTheCode(GradingScene scene, SampleCheck.Result check) {
+    private Judged notFromTheCode(CourseScene scene, SampleCheck.Result check) {
         String reason = check == SampleCheck.Result.DISAGREES ? Explainer.NOT_FROM_THE_CODE + ": traced through "
                 + "your own intersectionWith and illuminate, its sampled pixels have other colours"
                 : Explainer.NOT_FROM_THE_CODE + "? Its sampled pixels could not be traced through your "
@@ -143,7 +143,7 @@ final class SceneJudge {
      * never had a hidden one, so they carry nothing of it. The chart's category is the first tested
      * finding's, or that the mistake is not recognised.
      */
-    private Judged wrongHiddenImage(GradingScene scene, boolean probesShown) {
+    private Judged wrongHiddenImage(CourseScene scene, boolean probesShown) {
         List<String> lines = new ArrayList<>(List.of(HiddenVerdict.WRONG.words()));
         boolean shows = !probesShown && (probes.anyFailed() || !probes.untested().isEmpty());
         if (shows) {
@@ -156,7 +156,7 @@ final class SceneJudge {
     }
 
     /** A wrong image of a scene that is not hidden: explained against the closer reference, its images written. */
-    private Judged wrongImage(int number, GradingScene scene, BufferedImage image, References references,
+    private Judged wrongImage(int number, CourseScene scene, BufferedImage image, References references,
             boolean probesShown) {
         ImageDifference toHandout = references.handout() == null ? null
                 : ImageDifference.between(references.handout(), image);
@@ -185,7 +185,7 @@ final class SceneJudge {
      * The figures and the diagnosis of a wrong image, then the failed probes (the first wrong image
      * only) and what to reread, added to {@code lines}; its verdict.
      */
-    private Explained explain(GradingScene scene, BufferedImage image, ImageDifference difference,
+    private Explained explain(CourseScene scene, BufferedImage image, ImageDifference difference,
             List<String> lines, boolean probesShown) {
         double[] mean = difference.meanPerChannel();
         lines.add(String.format("mean difference R %.3f, G %.3f, B %.3f levels; PSNR %.2f dB", mean[0], mean[1],
@@ -209,7 +209,7 @@ final class SceneJudge {
         return new Explained(new SceneVerdict.WrongPixels(category, exactly), shows);
     }
 
-    private void print(GradingScene scene, List<String> lines) {
+    private void print(CourseScene scene, List<String> lines) {
         out.println(scene.name() + ": FAIL: " + lines.get(0));
         lines.subList(1, lines.size()).forEach(line -> out.println("  " + line));
     }

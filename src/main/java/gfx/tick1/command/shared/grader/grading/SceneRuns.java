@@ -1,6 +1,6 @@
 package gfx.tick1.command.shared.grader.grading;
 
-import gfx.tick1.command.shared.grader.grading.Grading.GradingScene;
+import gfx.tick1.command.shared.grader.grading.Grading.CourseScene;
 import gfx.tick1.command.shared.grader.sandbox.NoImage;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
@@ -47,7 +47,7 @@ final class SceneRuns {
         CompletableFuture<ProbeFindings> probes = null;
         String publicPrinted = "";
         for (boolean hidden : new boolean[] {false, true}) {
-            List<GradingScene> batch = grading.batch(hidden);
+            List<CourseScene> batch = grading.batch(hidden);
             if (batch.isEmpty()) {
                 continue;
             }

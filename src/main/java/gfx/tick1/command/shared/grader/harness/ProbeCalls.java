@@ -22,23 +22,23 @@ public final class ProbeCalls {
     }
 
     /** A ray (origin O, direction D) and a sphere (centre C, radius r) for intersectionWith. */
-    public record Intersection(String name, double[] origin, double[] direction, double[] centre, double radius) {
+    public record IntersectionCall(String name, double[] origin, double[] direction, double[] centre, double radius) {
     }
 
     /**
      * A scene (ambient light, one point light), a sphere, and the point P and unit normal N to shade
      * on it, for illuminate.
      */
-    public record Illumination(String name, double[] ambient, Light light, Sphere sphere, double[] point,
+    public record IlluminationCall(String name, double[] ambient, LightInput light, SphereInput sphere, double[] point,
             double[] normal) {
     }
 
     /** A point light: where it is, its colour, and its intensity. */
-    public record Light(double[] position, double[] colour, double intensity) {
+    public record LightInput(double[] position, double[] colour, double intensity) {
     }
 
     /** A sphere: its centre, its radius and its material. */
-    public record Sphere(double[] centre, double radius, Material material) {
+    public record SphereInput(double[] centre, double radius, Material material) {
     }
 
     /** A sphere's material: its colour C_diff and its Phong coefficients k_d, k_s and n. */
@@ -62,60 +62,60 @@ public final class ProbeCalls {
     /** A colour with no green: green is then the specular term alone, red minus green the diffuse. */
     private static final double[] NO_GREEN = {0.5, 0, 0.25};
     /** A light of intensity 0: the ambient term alone. */
-    private static final Light DARK = new Light(new double[] {0, 0, 5}, WHITE, 0);
+    private static final LightInput DARK = new LightInput(new double[] {0, 0, 5}, WHITE, 0);
 
     /** Rays and spheres: a hit, a miss, a graze, a ray pointing away, a sphere behind, inside, on the surface. */
-    public static final List<Intersection> INTERSECTIONS = List.of(
+    public static final List<IntersectionCall> INTERSECTIONS = List.of(
             // C = O + 5 D: roots s = 4 and s = 6
-            new Intersection("outside", OFF_ORIGIN, SLANT, new double[] {4, -1, 4.5}, 1),
+            new IntersectionCall("outside", OFF_ORIGIN, SLANT, new double[] {4, -1, 4.5}, 1),
             // the line passes at distance 3 from the centre
-            new Intersection("miss", OFF_ORIGIN, SLANT, new double[] {4, 2, 4.5}, 1),
+            new IntersectionCall("miss", OFF_ORIGIN, SLANT, new double[] {4, 2, 4.5}, 1),
             // roots s = -4 and s = -6
-            new Intersection("away", OFF_ORIGIN, new double[] {-0.6, 0, -0.8}, new double[] {4, -1, 4.5}, 1),
-            new Intersection("behind", ORIGIN, ALONG_Z, new double[] {0, 0, -5}, 1),
+            new IntersectionCall("away", OFF_ORIGIN, new double[] {-0.6, 0, -0.8}, new double[] {4, -1, 4.5}, 1),
+            new IntersectionCall("behind", ORIGIN, ALONG_Z, new double[] {0, 0, -5}, 1),
             // b^2 - 4ac = 100 - 100 = 0 exactly: one root, s = 5
-            new Intersection("graze", ORIGIN, ALONG_Z, new double[] {0, 1, 5}, 1),
+            new IntersectionCall("graze", ORIGIN, ALONG_Z, new double[] {0, 1, 5}, 1),
             // roots s = -1.5 and s = 2.5
-            new Intersection("inside", ORIGIN, ALONG_Z, new double[] {0, 0, 0.5}, 2),
+            new IntersectionCall("inside", ORIGIN, ALONG_Z, new double[] {0, 0, 0.5}, 2),
             // roots s = 0 and s = 2
-            new Intersection("surface", ORIGIN, ALONG_Z, new double[] {0, 0, 1}, 1));
+            new IntersectionCall("surface", ORIGIN, ALONG_Z, new double[] {0, 0, 1}, 1));
 
     /**
      * Shadings: the ambient term alone (intensity 0) with each channel on its own; the light along
      * the normal at distance 1 and 2; behind the surface (N.L &lt; 0); to the side, so that R points
      * away from the camera (R.V = -1); at an angle; and with the camera at distance 2.
      */
-    public static final List<Illumination> ILLUMINATIONS = List.of(
-            new Illumination("ambient", new double[] {0.5, 0.75, 0.25}, DARK, near(new double[] {0.2, 0.4, 0.6}),
+    public static final List<IlluminationCall> ILLUMINATIONS = List.of(
+            new IlluminationCall("ambient", new double[] {0.5, 0.75, 0.25}, DARK, near(new double[] {0.2, 0.4, 0.6}),
                     NEAR_POINT, TOWARDS_CAMERA),
-            new Illumination("red", WHITE, DARK, near(new double[] {1, 0, 0}), NEAR_POINT, TOWARDS_CAMERA),
-            new Illumination("green", WHITE, DARK, near(new double[] {0, 1, 0}), NEAR_POINT, TOWARDS_CAMERA),
-            new Illumination("blue", WHITE, DARK, near(new double[] {0, 0, 1}), NEAR_POINT, TOWARDS_CAMERA),
-            new Illumination("near", BLACK, white(ORIGIN), near(NO_GREEN), NEAR_POINT, TOWARDS_CAMERA),
-            new Illumination("far", BLACK, white(new double[] {0, 0, -1}), near(NO_GREEN), NEAR_POINT,
+            new IlluminationCall("red", WHITE, DARK, near(new double[] {1, 0, 0}), NEAR_POINT, TOWARDS_CAMERA),
+            new IlluminationCall("green", WHITE, DARK, near(new double[] {0, 1, 0}), NEAR_POINT, TOWARDS_CAMERA),
+            new IlluminationCall("blue", WHITE, DARK, near(new double[] {0, 0, 1}), NEAR_POINT, TOWARDS_CAMERA),
+            new IlluminationCall("near", BLACK, white(ORIGIN), near(NO_GREEN), NEAR_POINT, TOWARDS_CAMERA),
+            new IlluminationCall("far", BLACK, white(new double[] {0, 0, -1}), near(NO_GREEN), NEAR_POINT,
                     TOWARDS_CAMERA),
-            new Illumination("light-behind", BLACK, white(new double[] {0, 0, 3}), near(NO_GREEN), NEAR_POINT,
+            new IlluminationCall("light-behind", BLACK, white(new double[] {0, 0, 3}), near(NO_GREEN), NEAR_POINT,
                     TOWARDS_CAMERA),
             // P = (0.6, 0, 0.8) at distance 1 from the camera, N = (1, 0, 0), L = (0.6, 0, -0.8): R = -V
-            new Illumination("side", BLACK, white(new double[] {1.2, 0, 0}),
-                    new Sphere(new double[] {-0.4, 0, 0.8}, 1, Material.course(NO_GREEN)), new double[] {0.6, 0, 0.8},
-                    new double[] {1, 0, 0}),
+            new IlluminationCall("side", BLACK, white(new double[] {1.2, 0, 0}),
+                    new SphereInput(new double[] {-0.4, 0, 0.8}, 1, Material.course(NO_GREEN)),
+                    new double[] {0.6, 0, 0.8}, new double[] {1, 0, 0}),
             // L = (0.6, 0, -0.8): N.L = R.V = 0.8
-            new Illumination("oblique", BLACK, white(new double[] {0.6, 0, 0.2}), near(NO_GREEN), NEAR_POINT,
+            new IlluminationCall("oblique", BLACK, white(new double[] {0.6, 0, 0.2}), near(NO_GREEN), NEAR_POINT,
                     TOWARDS_CAMERA),
             // the camera at distance 2 from P, the light at distance 1 along the normal
-            new Illumination("camera-far", BLACK, white(new double[] {0, 0, 1}),
-                    new Sphere(new double[] {0, 0, 3}, 1, Material.course(NO_GREEN)), new double[] {0, 0, 2},
+            new IlluminationCall("camera-far", BLACK, white(new double[] {0, 0, 1}),
+                    new SphereInput(new double[] {0, 0, 3}, 1, Material.course(NO_GREEN)), new double[] {0, 0, 2},
                     TOWARDS_CAMERA));
 
     /** A white light at {@code position} of intensity 4 pi: I = 1 at distance 1. */
-    private static Light white(double[] position) {
-        return new Light(position, WHITE, FOUR_PI);
+    private static LightInput white(double[] position) {
+        return new LightInput(position, WHITE, FOUR_PI);
     }
 
     /** The sphere of centre (0, 0, 2) and radius 1, of {@code colour} and the course's coefficients. */
-    private static Sphere near(double[] colour) {
-        return new Sphere(NEAR_CENTRE, 1, Material.course(colour));
+    private static SphereInput near(double[] colour) {
+        return new SphereInput(NEAR_CENTRE, 1, Material.course(colour));
     }
 
     /** The unit vectors of round components (0, 1), (0.6, 0.8) and (0.48, 0.6, 0.64), any order and signs. */
@@ -133,18 +133,18 @@ public final class ProbeCalls {
      * is at least a thousandth of b^2 from 0): those cases are among the edge cases above, and the
      * course's scenes cannot show them.
      */
-    public static final List<Intersection> RANDOM_INTERSECTIONS = randomIntersections();
+    public static final List<IntersectionCall> RANDOM_INTERSECTIONS = randomIntersections();
 
     /**
      * Random shadings in round numbers: coloured ambient and point lights, a coloured sphere, k_d
      * and k_s in tenths, n a whole number, P of whole coordinates (never the camera's origin), N a
      * unit vector, and a light whole steps away from P with intensity a whole multiple of 4 pi.
      */
-    public static final List<Illumination> RANDOM_ILLUMINATIONS = randomIlluminations();
+    public static final List<IlluminationCall> RANDOM_ILLUMINATIONS = randomIlluminations();
 
-    private static List<Intersection> randomIntersections() {
+    private static List<IntersectionCall> randomIntersections() {
         SplittableRandom random = new SplittableRandom(SEED);
-        List<Intersection> calls = new ArrayList<>();
+        List<IntersectionCall> calls = new ArrayList<>();
         while (calls.size() < RANDOM_COUNT) {
             double[] origin = whole(random, 4), direction = whole(random, 3);
             double t = random.nextInt(-3, 7), radius = random.nextInt(1, 7) / 2.0;
@@ -157,15 +157,15 @@ public final class ProbeCalls {
             double b = 2 * dot(direction, oc), c = dot(oc, oc) - radius * radius;
             double discriminant = b * b - 4 * a * c;
             if (a > 0 && c >= 0.25 && Math.abs(discriminant) >= 1e-3 * b * b) {
-                calls.add(new Intersection("ray" + calls.size(), origin, direction, centre, radius));
+                calls.add(new IntersectionCall("ray" + calls.size(), origin, direction, centre, radius));
             }
         }
         return List.copyOf(calls);
     }
 
-    private static List<Illumination> randomIlluminations() {
+    private static List<IlluminationCall> randomIlluminations() {
         SplittableRandom random = new SplittableRandom(SEED + 1);
-        List<Illumination> calls = new ArrayList<>();
+        List<IlluminationCall> calls = new ArrayList<>();
         while (calls.size() < RANDOM_COUNT) {
             double[] point = whole(random, 4), offset = whole(random, 2);
             double[] normal = unit(random);
@@ -176,11 +176,11 @@ public final class ProbeCalls {
             double[] centre = {point[0] - normal[0], point[1] - normal[1], point[2] - normal[2]};
             // In the order the random numbers were always drawn: ambient, light, material.
             double[] ambient = tenths(random, 0, 5);
-            Light shining = new Light(light, tenths(random, 2, 10), 4 * Math.PI * random.nextInt(1, 5));
+            LightInput shining = new LightInput(light, tenths(random, 2, 10), 4 * Math.PI * random.nextInt(1, 5));
             Material material = new Material(tenths(random, 0, 10), random.nextInt(1, 11) / 10.0,
                     random.nextInt(1, 11) / 10.0, random.nextInt(1, 31));
-            calls.add(new Illumination("shade" + calls.size(), ambient, shining, new Sphere(centre, 1, material), point,
-                    normal));
+            calls.add(new IlluminationCall("shade" + calls.size(), ambient, shining,
+                    new SphereInput(centre, 1, material), point, normal));
         }
         return List.copyOf(calls);
     }

@@ -59,10 +59,10 @@ public final class ProbeRunner {
     void run(Path log) throws IOException {
         try (OutputStream out = Files.newOutputStream(log, StandardOpenOption.CREATE, StandardOpenOption.APPEND)) {
             Lines lines = new Lines(out);
-            for (ProbeCalls.Intersection call : ProbeCalls.INTERSECTIONS) {
+            for (ProbeCalls.IntersectionCall call : ProbeCalls.INTERSECTIONS) {
                 lines.write(call.name(), Bounded.call(() -> intersect(call), CALL_MILLIS));
             }
-            for (ProbeCalls.Illumination call : ProbeCalls.ILLUMINATIONS) {
+            for (ProbeCalls.IlluminationCall call : ProbeCalls.ILLUMINATIONS) {
                 lines.write(call.name(), api.hasIlluminate() ? Bounded.call(() -> illuminate(call, false), CALL_MILLIS)
                         : new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
             }
@@ -72,7 +72,7 @@ public final class ProbeRunner {
             if (api.hasIlluminate()) {
                 batch(lines, ProbeCalls.RANDOM_ILLUMINATIONS, call -> illuminate(call, phong));
             } else {
-                for (ProbeCalls.Illumination call : ProbeCalls.RANDOM_ILLUMINATIONS) {
+                for (ProbeCalls.IlluminationCall call : ProbeCalls.RANDOM_ILLUMINATIONS) {
                     lines.write(call.name(), new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
                 }
             }
@@ -114,10 +114,10 @@ public final class ProbeRunner {
     }
 
     private static String name(Record call) {
-        return call instanceof ProbeCalls.Intersection i ? i.name() : ((ProbeCalls.Illumination) call).name();
+        return call instanceof ProbeCalls.IntersectionCall i ? i.name() : ((ProbeCalls.IlluminationCall) call).name();
     }
 
-    private String intersect(ProbeCalls.Intersection call) throws ReflectiveOperationException {
+    private String intersect(ProbeCalls.IntersectionCall call) throws ReflectiveOperationException {
         Object sphere = api.sphere(call.centre(), call.radius(), new double[] {1, 1, 1});
         Object hit = api.intersectionWith(sphere, api.ray(call.origin(), call.direction()));
         if (hit == null) {
@@ -138,8 +138,8 @@ public final class ProbeRunner {
         return line.toString();
     }
 
-    private String illuminate(ProbeCalls.Illumination call, boolean setPhong) throws ReflectiveOperationException {
-        ProbeCalls.Light light = call.light();
+    private String illuminate(ProbeCalls.IlluminationCall call, boolean setPhong) throws ReflectiveOperationException {
+        ProbeCalls.LightInput light = call.light();
         ProbeCalls.Material material = call.sphere().material();
         Object scene = api.scene(call.ambient(), light.position(), light.colour(), light.intensity());
         Object sphere = api.sphere(call.sphere().centre(), call.sphere().radius(), material.colour());

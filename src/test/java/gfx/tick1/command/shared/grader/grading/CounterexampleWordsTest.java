@@ -15,7 +15,7 @@ class CounterexampleWordsTest {
 
     @Test
     void answersApartOnlyBeyondTheSeventhDigitArePrintedWithEveryDigit() {
-        ProbeCalls.Illumination call = ProbeCalls.ILLUMINATIONS.stream()
+        ProbeCalls.IlluminationCall call = ProbeCalls.ILLUMINATIONS.stream()
                 .filter(each -> new BehaviourJudge.ShadeCase(each, null, false).model(BehaviourJudge.OURS).x > 0.1)
                 .findFirst().orElseThrow();
         Vector3 reference = new BehaviourJudge.ShadeCase(call, null, false).model(BehaviourJudge.OURS);

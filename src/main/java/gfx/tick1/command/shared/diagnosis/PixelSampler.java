@@ -9,7 +9,7 @@ import java.awt.image.BufferedImage;
  * The correct colour of single pixels of a scene, traced as the reference renderer traces them:
  * enough of them, spread over the frame, rule a scene out without rendering it whole.
  */
-final class PixelProbe extends ReferenceRenderer {
+final class PixelSampler extends ReferenceRenderer {
 
     /** About how many pixels {@link #mayBe} traces: a grid over the frame. */
     private static final int SAMPLES = 5000;
@@ -17,7 +17,7 @@ final class PixelProbe extends ReferenceRenderer {
     private final Camera camera;
     private final int width, height;
 
-    PixelProbe(int width, int height) {
+    PixelSampler(int width, int height) {
         super(width, height);
         this.camera = new Camera(width, height);
         this.width = width;
