@@ -1,8 +1,10 @@
 package gfx.tick1.command.shared.grader.grading;
 
+import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader.Graded;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader.Phases;
+import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -10,7 +12,9 @@ import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import java.io.PrintWriter;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Set;
 
 /**
  * The grade's last step: the verdict line the tester prints, the gradebook row's reason and the
@@ -93,8 +97,9 @@ final class Explainer {
                     + " wrong.";
             out.println(verdict);
             return new Graded(result(scenes, false, judged.size() - failures.size(),
-                    failures.get(0).verdict().category(), verdict + reasons(judged, probes), List.of()),
-                    judged.stream().anyMatch(Judged::imagesUnwritable), phases, probes.behaviour());
+                    failures.get(0).verdict().category(), verdict + reasons(judged, probes), List.of())
+                    .withFindings(found(judged)), judged.stream().anyMatch(Judged::imagesUnwritable), phases,
+                    probes.behaviour());
         }
         out.println(SubmissionGrader.CONGRATULATIONS);
         List<String> notes = probes.notes();
@@ -107,8 +112,32 @@ final class Explainer {
         }
         String reason = notes.isEmpty() ? SubmissionGrader.CONGRATULATIONS
                 : SubmissionGrader.CONGRATULATIONS + " Note: " + String.join("; ", notes) + ".";
-        return new Graded(result(scenes, true, judged.size(), PASSED, reason, List.of()), false, phases,
+        return new Graded(result(scenes, true, judged.size(), PASSED, reason, List.of())
+                .withFindings(new Findings(null, List.of(), notesOfAPass(probes), List.of())), false, phases,
                 probes.behaviour());
+    }
+
+    /** The notes of a pass as the cohort tallies them: each tested fact and untested note, without words around it. */
+    private static List<String> notesOfAPass(ProbeFindings probes) {
+        List<String> notes = new ArrayList<>(probes.facts());
+        notes.addAll(probes.untested());
+        return List.copyOf(new LinkedHashSet<>(notes));
+    }
+
+    /** What a failure's scenes found, together: the first catalogue entry, each fact and note once, each figure. */
+    private static Findings found(List<Judged> judged) {
+        Variant catalogued = null;
+        Set<String> failed = new LinkedHashSet<>();
+        Set<String> notes = new LinkedHashSet<>();
+        List<String> figures = new ArrayList<>();
+        for (Judged scene : judged) {
+            Findings found = scene.found();
+            catalogued = catalogued == null ? found.catalogued() : catalogued;
+            failed.addAll(found.failed());
+            notes.addAll(found.notes());
+            figures.addAll(found.figures());
+        }
+        return new Findings(catalogued, List.copyOf(failed), List.copyOf(notes), figures);
     }
 
     /**

@@ -19,9 +19,16 @@ import java.util.stream.Stream;
  *                     javac's source line and the caret under it, which the feedback pages keep as they are
  * @param scenes       each grading scene's result, in grading order (empty when nothing ran)
  * @param time         the wall time the submission took to grade
+ * @param findings     what the grade found, for the cohort's tallies and look-alikes
  */
 public record StudentResult(Submission submission, boolean passed, int scenesPassed, int scenesTotal,
-        String diagnosis, String reason, List<SceneResult> scenes, Duration time) {
+        String diagnosis, String reason, List<SceneResult> scenes, Duration time, Findings findings) {
+
+    /** A result with nothing found beyond its words. */
+    public StudentResult(Submission submission, boolean passed, int scenesPassed, int scenesTotal,
+            String diagnosis, String reason, List<SceneResult> scenes, Duration time) {
+        this(submission, passed, scenesPassed, scenesTotal, diagnosis, reason, scenes, time, Findings.NONE);
+    }
 
     /** The diagnosis of a submission tick1 could not grade (its grader failed, not its code). */
     public static final String NOT_GRADED = "not graded";
@@ -33,6 +40,11 @@ public record StudentResult(Submission submission, boolean passed, int scenesPas
     public static StudentResult notGraded(Submission submission, String why) {
         return new StudentResult(submission, false, 0, 0, NOT_GRADED,
                 "Not graded: " + why + "; the course staff must grade it again", List.of(), Duration.ZERO);
+    }
+
+    /** This result with {@code found} as what its grade found. */
+    public StudentResult withFindings(Findings found) {
+        return new StudentResult(submission, passed, scenesPassed, scenesTotal, diagnosis, reason, scenes, time, found);
     }
 
     /** Whether tick1 graded the submission's code (false when its grader failed). */

@@ -126,7 +126,7 @@ public final class CohortOutputs {
                     CellText.bounded(submission.fullName(), MAX_NAME), submission.sphere(), submission.renderer(),
                     submission.problem()), result.passed(), result.scenesPassed(), result.scenesTotal(),
                     CellText.bounded(result.diagnosis(), MAX_NAME), CellText.bounded(result.reason(), MAX_REASON),
-                    scenes, result.time()));
+                    scenes, result.time(), result.findings().mapText(text -> CellText.bounded(text, MAX_LINE))));
         }
         return plain;
     }
