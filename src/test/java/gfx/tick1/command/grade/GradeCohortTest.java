@@ -318,6 +318,17 @@ class GradeCohortTest {
         }
     }
 
+    /** A mistake of render's sends its student, at the top of the feedback, to its catalogue entry's section. */
+    @Test
+    void theFeedbackSaysToRereadTheSectionOfTheCataloguedMistake() throws IOException {
+        for (Variant mistake : Mistakes.RENDER_ONLY) {
+            List<String> feedback = feedback(mistakesName(mistake));
+            assertThat(feedback).as(String.join("\n", feedback))
+                    .containsSubsequence("What to reread", "  - Handout " + mistake.reread() + ".",
+                            "tick1.xml: failed");
+        }
+    }
+
     @Test
     void aFailingStudentsFeedbackFolderHoldsThePageAndTheHeatMap() {
         Student student = student(mistakesName(Variant.UNCLAMPED_N_DOT_L));

@@ -180,6 +180,7 @@ public final class ResultStore {
         setList(p, "findings.failed", found.failed());
         setList(p, "findings.notes", found.notes());
         setList(p, "findings.figures", found.figures());
+        setList(p, "findings.reread", found.reread());
         try (Writer out = Files.newBufferedWriter(entry.resolve(RESULT_FILE), StandardCharsets.UTF_8)) {
             p.store(out, null);
         }
@@ -208,7 +209,7 @@ public final class ResultStore {
     private static Findings findings(Properties p) {
         String catalogued = p.getProperty("findings.catalogued");
         return new Findings(catalogued.isEmpty() ? null : Variant.valueOf(catalogued), list(p, "findings.failed"),
-                list(p, "findings.notes"), list(p, "findings.figures"));
+                list(p, "findings.notes"), list(p, "findings.figures"), list(p, "findings.reread"));
     }
 
     private static void setList(Properties p, String name, List<String> values) {

@@ -113,7 +113,7 @@ final class Explainer {
         String reason = notes.isEmpty() ? SubmissionGrader.CONGRATULATIONS
                 : SubmissionGrader.CONGRATULATIONS + " Note: " + String.join("; ", notes) + ".";
         return new Graded(result(scenes, true, judged.size(), PASSED, reason, List.of())
-                .withFindings(new Findings(null, List.of(), notesOfAPass(probes), List.of())), false, phases,
+                .withFindings(new Findings(null, List.of(), notesOfAPass(probes), List.of(), List.of())), false, phases,
                 probes.behaviour());
     }
 
@@ -124,20 +124,22 @@ final class Explainer {
         return List.copyOf(new LinkedHashSet<>(notes));
     }
 
-    /** What a failure's scenes found, together: the first catalogue entry, each fact and note once, each figure. */
+    /** What a failure's scenes found, together: the first catalogue entry, each figure, the rest each once. */
     private static Findings found(List<Judged> judged) {
         Variant catalogued = null;
         Set<String> failed = new LinkedHashSet<>();
         Set<String> notes = new LinkedHashSet<>();
         List<String> figures = new ArrayList<>();
+        Set<String> reread = new LinkedHashSet<>();
         for (Judged scene : judged) {
             Findings found = scene.found();
             catalogued = catalogued == null ? found.catalogued() : catalogued;
             failed.addAll(found.failed());
             notes.addAll(found.notes());
             figures.addAll(found.figures());
+            reread.addAll(found.reread());
         }
-        return new Findings(catalogued, List.copyOf(failed), List.copyOf(notes), figures);
+        return new Findings(catalogued, List.copyOf(failed), List.copyOf(notes), figures, List.copyOf(reread));
     }
 
     /**

@@ -102,7 +102,7 @@ final class ProbeFindings {
         List<String> lines = new ArrayList<>();
         tested.forEach(f -> lines.add("behaviour: " + f.fact()));
         untested().forEach(note -> lines.add("note: " + note));
-        sections().forEach(section -> lines.add("reread: handout " + section));
+        toReread().forEach(section -> lines.add("reread: " + section));
         return lines;
     }
 
@@ -119,9 +119,14 @@ final class ProbeFindings {
                 : "your intersectionWith and illuminate could not be checked: the harness logged no answer";
     }
 
-    /** The findings {@link #failureLines} words: the tested facts and the untested notes. */
+    /** The findings {@link #failureLines} words: the tested facts, the untested notes and what to reread. */
     Findings found() {
-        return new Findings(null, facts(), untested(), List.of());
+        return new Findings(null, facts(), untested(), List.of(), toReread());
+    }
+
+    /** The sections to reread as a failure's explanation names them: "handout section 4, ...". */
+    List<String> toReread() {
+        return sections().stream().map(section -> "handout " + section).toList();
     }
 
     /**

@@ -192,7 +192,8 @@ final class SceneJudge {
         Findings found = explained.found();
         return new Judged(result, explained.verdict(), explained.showedProbes(), written.isEmpty(),
                 new Findings(found.catalogued(), found.failed(), found.notes(),
-                        found.figures().stream().map(figures -> "scene " + number + ": " + figures).toList()));
+                        found.figures().stream().map(figures -> "scene " + number + ": " + figures).toList(),
+                        found.reread()));
     }
 
     /**
@@ -209,15 +210,18 @@ final class SceneJudge {
         boolean exact = diagnosis.verdict() == Diagnosis.Verdict.EXPLAINED;
         boolean behaviourSays = probes.anyFailed();
         // What to reread comes from the tested findings; the image's own entry only when it matches exactly.
-        lines.addAll(diagnosis.report(exact && !behaviourSays));
+        boolean imageSaysReread = exact && !behaviourSays;
+        lines.addAll(diagnosis.report(imageSaysReread));
+        List<String> reread = new ArrayList<>(imageSaysReread ? diagnosis.toReread().stream().toList() : List.of());
         boolean shows = !probesShown && (behaviourSays || !probes.untested().isEmpty());
         Findings found = shows ? probes.found() : Findings.NONE;
         if (shows) {
             lines.addAll(probes.failureLines());
         } else if (!behaviourSays && !exact) {
             lines.add(probes.noFindingLine());
-            found = new Findings(null, List.of(probes.noFinding()), List.of(), List.of());
+            found = new Findings(null, List.of(probes.noFinding()), List.of(), List.of(), List.of());
         }
+        reread.addAll(found.reread());
         Variant catalogued = exact ? diagnosis.explaining().get(0).variant() : null;
         String title = exact ? catalogued.title() : null;
         String exactly = exact ? (scene.hidden() ? "A hidden scene" : scene.name()) + " is exactly the image of \""
@@ -225,7 +229,7 @@ final class SceneJudge {
         // The chart counts exact matches first, then tested findings; never what the scenes cannot show.
         String category = exact ? title : behaviourSays ? probes.label() : Explainer.UNRECOGNISED;
         return new Explained(new SceneVerdict.WrongPixels(category, exactly), shows,
-                new Findings(catalogued, found.failed(), found.notes(), List.of(figures)));
+                new Findings(catalogued, found.failed(), found.notes(), List.of(figures), reread));
     }
 
     private void print(GradingScene scene, List<String> lines) {

@@ -166,7 +166,7 @@ class LookalikesTest {
         for (int i = 0; i < HONEST.size(); i++) {
             StudentResult result = result(i + 1, HONEST.get(i), i < 2 ? answer : List.of());
             results.add(i < 2 ? result.withFindings(new Findings(null, List.of(), List.of(),
-                    List.of("scene 1: " + figures))) : result);
+                    List.of("scene 1: " + figures), List.of())) : result);
         }
         List<Lookalike> found = Lookalikes.find(results);
         assertThat(found).as("the pairs listed").singleElement().satisfies(pair -> {

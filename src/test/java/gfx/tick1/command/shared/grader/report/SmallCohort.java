@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.grader.report;
 
+import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -107,7 +108,8 @@ final class SmallCohort {
                 : scene(HIDDEN_NAME, true, true, List.of(), null, null, null));
         int passed = hiddenFails ? 0 : 1;
         return new StudentResult(new Submission(folder, id, name, null, null, null), false, passed, 2, diagnosis,
-                reason, scenes, Duration.ofMillis(millis));
+                reason, scenes, Duration.ofMillis(millis), new Findings(null, List.of(), List.of(), List.of(),
+                        List.of("handout section 3.2, \"Diffuse reflection\".")));
     }
 
     private static SceneResult scene(String name, boolean hidden, boolean passed, List<String> explanation,

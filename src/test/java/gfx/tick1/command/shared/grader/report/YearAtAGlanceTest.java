@@ -25,13 +25,15 @@ class YearAtAGlanceTest {
 
     private static final List<StudentResult> COHORT = List.of(
             result("1", false, List.of("behaviour: " + FACT, "reread: handout section 5, Figure 6(b)."),
-                    new Findings(null, List.of(FACT), List.of(), List.of()), 800),
+                    new Findings(null, List.of(FACT), List.of(), List.of(),
+                            List.of("handout section 5, Figure 6(b).")), 800),
             result("2", false, List.of("verdict: far root: every pixel matches its render of tick1.xml exactly.",
                     "reread: handout section 4, steps 4 and 5."),
-                    new Findings(Variant.FAR_ROOT, List.of(), List.of(), List.of()), 2_000),
+                    new Findings(Variant.FAR_ROOT, List.of(), List.of(), List.of(),
+                            List.of("handout section 4, steps 4 and 5.")), 2_000),
             result("3", true, List.of("note: " + FACT
                     + " (tick1.xml and the hidden scene do not show this; handout section 5)"),
-                    new Findings(null, List.of(), List.of(FACT), List.of()), 70_000));
+                    new Findings(null, List.of(), List.of(FACT), List.of(), List.of()), 70_000));
 
     @Test
     void aFindingIsCountedAmongTheFailedAndANoteAtAPassAmongThePassed() {
