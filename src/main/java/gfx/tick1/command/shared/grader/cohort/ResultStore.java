@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.cohort;
 
 import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.Grading;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.StudentResult;
@@ -139,7 +140,7 @@ public final class ResultStore {
             }
             return new StudentResult(submission, Boolean.parseBoolean(p.getProperty("passed")),
                     Integer.parseInt(p.getProperty("scenesPassed")), Integer.parseInt(p.getProperty("scenesTotal")),
-                    p.getProperty("diagnosis"), p.getProperty("reason"), scenes,
+                    category(p), p.getProperty("reason"), scenes,
                     Duration.ofNanos(Long.parseLong(p.getProperty("timeNanos"))), findings(p));
         } catch (RuntimeException e) {
             return null;   // not a result this program wrote: grade again
@@ -160,7 +161,8 @@ public final class ResultStore {
         p.setProperty("passed", Boolean.toString(result.passed()));
         p.setProperty("scenesPassed", Integer.toString(result.scenesPassed()));
         p.setProperty("scenesTotal", Integer.toString(result.scenesTotal()));
-        p.setProperty("diagnosis", result.diagnosis());
+        p.setProperty("diagnosis", result.diagnosis().label());
+        p.setProperty("outcome", result.diagnosis() instanceof Category.Outcome outcome ? outcome.name() : "");
         p.setProperty("reason", result.reason());
         p.setProperty("timeNanos", Long.toString(result.time().toNanos()));
         p.setProperty("scenes", Integer.toString(result.scenes().size()));
@@ -203,6 +205,13 @@ public final class ResultStore {
             WorkFolder.delete(entry);
         }
         force(folder);
+    }
+
+    /** A stored result's category: an outcome by its name, else a mistake by its label. */
+    private static Category category(Properties p) {
+        String outcome = p.getProperty("outcome");
+        return outcome.isEmpty() ? new Category.Mistake(Objects.requireNonNull(p.getProperty("diagnosis")))
+                : Category.Outcome.valueOf(outcome);
     }
 
     /** What a stored result's grade found; an unknown catalogue entry throws, and the result is graded again. */

@@ -4,6 +4,7 @@ import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader.Graded;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader.Phases;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
@@ -22,11 +23,6 @@ import java.util.Set;
  */
 final class Explainer {
 
-    /** The cohort report's category for a pass, and for each kind of failure that is not a wrong image. */
-    static final String PASSED = "passed", SUBMISSION_PROBLEM = "submission problem", NOT_UTF8 = "not UTF-8",
-            WRONG_PACKAGE = "wrong package", DOES_NOT_COMPILE = "does not compile", TIME_LIMIT = "time limit",
-            EXCEPTION = "exception", CRASHED = "crashed or exited", UNRECOGNISED = "unrecognised mistake",
-            NOT_FROM_CODE_LABEL = "image not from the code";
     /** The words of a matching image that their methods do not give. */
     static final String NOT_FROM_THE_CODE = SubmissionGrader.NOT_FROM_THE_CODE;
 
@@ -53,7 +49,7 @@ final class Explainer {
     }
 
     /** A submission that fails before any scene is run: one line saying why. */
-    Graded failed(String category, String reason, Phases phases) {
+    Graded failed(Category category, String reason, Phases phases) {
         out.println("FAILED: " + reason);
         return new Graded(result(List.of(), false, 0, category, "FAILED: " + reason, List.of()), false, phases,
                 ProbeFindings.of(null).behaviour());
@@ -62,7 +58,8 @@ final class Explainer {
     /** Code that did not compile: the compiler's errors, or why the compiler did not finish. */
     Graded didNotCompile(StudentProcess.Compiled compiled, Phases phases) {
         if (compiled.failure() != null) {
-            return failed(DOES_NOT_COMPILE, "the code could not be compiled: " + compiled.failure(), phases);
+            return failed(Category.Outcome.DOES_NOT_COMPILE, "the code could not be compiled: " + compiled.failure(),
+                    phases);
         }
         String heading = "the code does not compile (" + SubmissionGrader.count(compiled.errors().size(), "error")
                 + ")";
@@ -73,7 +70,7 @@ final class Explainer {
         List<String> error = compiled.errors().get(0).lines().toList();
         int quoted = error.size() >= 3 && error.get(error.size() - 1).strip().equals("^") ? error.size() - 2
                 : error.size();
-        return new Graded(result(List.of(), false, 0, DOES_NOT_COMPILE,
+        return new Graded(result(List.of(), false, 0, Category.Outcome.DOES_NOT_COMPILE,
                 "FAILED: " + heading + ": " + String.join("\n", error.subList(0, quoted)),
                 error.subList(quoted, error.size())), false, phases, ProbeFindings.of(null).behaviour(),
                 List.copyOf(compiled.errors()));
@@ -112,7 +109,7 @@ final class Explainer {
         }
         String reason = notes.isEmpty() ? SubmissionGrader.CONGRATULATIONS
                 : SubmissionGrader.CONGRATULATIONS + " Note: " + String.join("; ", notes) + ".";
-        return new Graded(result(scenes, true, judged.size(), PASSED, reason, List.of())
+        return new Graded(result(scenes, true, judged.size(), Category.Outcome.PASSED, reason, List.of())
                 .withFindings(new Findings(null, List.of(), notesOfAPass(probes), List.of(), List.of())), false, phases,
                 probes.behaviour());
     }
@@ -174,7 +171,7 @@ final class Explainer {
     }
 
     /** The result, whose reason is {@code reason} as one line, then the {@code quoted} lines as they are. */
-    private StudentResult result(List<SceneResult> scenes, boolean passed, int scenesPassed, String category,
+    private StudentResult result(List<SceneResult> scenes, boolean passed, int scenesPassed, Category category,
             String reason, List<String> quoted) {
         StringBuilder text = new StringBuilder(oneLine(reason));
         quoted.forEach(line -> text.append('\n').append(line));

@@ -4,6 +4,7 @@ import gfx.tick1.command.shared.diagnosis.Diagnoser;
 import gfx.tick1.command.shared.diagnosis.Diagnosis;
 import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.Grading.GradingScene;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.sandbox.NoImage;
@@ -162,7 +163,8 @@ final class SceneJudge {
         }
         print(scene, lines);
         return new Judged(new SceneResult(scene.name(), true, false, lines, null, null, null),
-                new SceneVerdict.WrongPixels(probes.anyFailed() ? probes.label() : Explainer.UNRECOGNISED, null),
+                new SceneVerdict.WrongPixels(probes.anyFailed() ? new Category.Mistake(probes.label())
+                        : Category.Outcome.UNRECOGNISED, null),
                 shows, false, shows ? probes.found() : Findings.NONE);
     }
 
@@ -227,7 +229,8 @@ final class SceneJudge {
         String exactly = exact ? (scene.hidden() ? "A hidden scene" : scene.name()) + " is exactly the image of \""
                 + title + "\"." : null;
         // The chart counts exact matches first, then tested findings; never what the scenes cannot show.
-        String category = exact ? title : behaviourSays ? probes.label() : Explainer.UNRECOGNISED;
+        Category category = exact ? new Category.Mistake(title) : behaviourSays ? new Category.Mistake(probes.label())
+                : Category.Outcome.UNRECOGNISED;
         return new Explained(new SceneVerdict.WrongPixels(category, exactly), shows,
                 new Findings(catalogued, found.failed(), found.notes(), List.of(figures), reread));
     }

@@ -33,7 +33,7 @@ public record WrongAnswers(List<String> answers, String catalogued, String named
         answers.addAll(findings.figures());
         return answers.isEmpty() ? null : new WrongAnswers(answers,
                 findings.catalogued() == null ? null : findings.catalogued().title(),
-                findings.failed().isEmpty() ? null : result.diagnosis());
+                findings.failed().isEmpty() ? null : result.diagnosis().label());
     }
 
     /** Whether a catalogue entry or a probe names the mistake. */

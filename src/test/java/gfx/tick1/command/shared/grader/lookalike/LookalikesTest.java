@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.command.diff.CorrectStyles;
 import gfx.tick1.command.shared.grader.lookalike.Handwritten.Solution;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
@@ -188,7 +189,8 @@ class LookalikesTest {
                 new Submission.SourceFile("Renderer.java", solution.renderer().getBytes(StandardCharsets.UTF_8)),
                 null);
         boolean passed = explanation.isEmpty();
-        return new StudentResult(submission, passed, passed ? 1 : 0, 1, passed ? "passed" : "unrecognised", "",
+        return new StudentResult(submission, passed, passed ? 1 : 0, 1,
+                passed ? Category.Outcome.PASSED : Category.Outcome.UNRECOGNISED, "",
                 List.of(new SceneResult("tick1.xml", false, passed, explanation, null, null, null)), Duration.ZERO);
     }
 

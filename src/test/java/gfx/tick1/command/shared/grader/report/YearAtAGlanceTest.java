@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.grader.report;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
@@ -18,7 +19,8 @@ class YearAtAGlanceTest {
 
     private static StudentResult result(String id, boolean passed, List<String> lines, Findings found, long millis) {
         return new StudentResult(new Submission("S" + id + "_" + id + "_assignsubmission_file_", id, "S" + id, null,
-                null, null), passed, passed ? 1 : 0, 1, passed ? "passed" : "illuminate: N.L not clamped", "",
+                null, null), passed, passed ? 1 : 0, 1, passed ? Category.Outcome.PASSED
+                : new Category.Mistake("illuminate: N.L not clamped"), "",
                 List.of(new SceneResult("tick1.xml", false, passed, lines, null, null, null)),
                 Duration.ofMillis(millis), found);
     }
