@@ -302,6 +302,33 @@ class GradeCohortTest {
         assertThat(reasons.values()).allMatch(reason -> !reason.contains("\n"));
     }
 
+    /**
+     * The year at a glance counts, under each catalogued mistake, the students whose wrong image that entry
+     * reproduces exactly: a mistake of render's, which no probe of intersectionWith and illuminate names, is
+     * found by its image alone.
+     */
+    @Test
+    void theYearAtAGlanceCountsEachCataloguedMistakeAStudentsImageIsExactly() throws IOException {
+        String page = Files.readString(shared.resolve("report").resolve("index.html"));
+        int start = page.indexOf("<h3>Catalogued mistakes");
+        String catalogued = page.substring(start, page.indexOf("<h3>", start + 1));
+        for (Variant mistake : Mistakes.RENDER_ONLY) {
+            assertThat(catalogued).as("the year at a glance's catalogued mistakes").contains("<tr><td>"
+                    + mistake.title() + "</td><td>1</td><td>0</td></tr>");
+        }
+    }
+
+    /** A mistake of render's sends its student, at the top of the feedback, to its catalogue entry's section. */
+    @Test
+    void theFeedbackSaysToRereadTheSectionOfTheCataloguedMistake() throws IOException {
+        for (Variant mistake : Mistakes.RENDER_ONLY) {
+            List<String> feedback = feedback(mistakesName(mistake));
+            assertThat(feedback).as(String.join("\n", feedback))
+                    .containsSubsequence("What to reread", "  - Handout " + mistake.reread() + ".",
+                            "tick1.xml: failed");
+        }
+    }
+
     @Test
     void aFailingStudentsFeedbackFolderHoldsThePageAndTheHeatMap() {
         Student student = student(mistakesName(Variant.UNCLAMPED_N_DOT_L));

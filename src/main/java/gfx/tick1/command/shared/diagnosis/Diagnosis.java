@@ -4,6 +4,7 @@ import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.io.Counted;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 
 /**
  * Every catalogue entry's distance from an image, closest first, and what can be said for
@@ -148,6 +149,20 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
     }
 
     /**
+     * What the report's "reread:" line names, when it has one ("handout section 5 ..."): the section of
+     * the one entry that explains the image, or the arithmetic of an image one level off the correct one.
+     */
+    public Optional<String> toReread() {
+        return switch (verdict()) {
+            case LEVEL_OFF_CORRECT -> Optional.of(
+                    "handout section 5 (compute each term in double, in the order the handout writes it).");
+            case EXPLAINED -> explaining().size() == 1
+                    ? Optional.of("handout " + explaining().get(0).variant().reread() + ".") : Optional.empty();
+            default -> Optional.empty();
+        };
+    }
+
+    /**
      * The diagnosis for a person, as {@link #report()} gives it, with its "reread:" line only when
      * {@code reread}: a grade leaves it out where the tested findings, not the image, say what to reread.
      */
@@ -217,7 +232,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         lines.add("possible cause: the same formulas computed in float rather than double, or in another order "
                 + "than the handout's, round some colours to the next level.");
         if (reread) {
-            lines.add("reread: handout section 5 (compute each term in double, in the order the handout writes it).");
+            lines.add("reread: " + toReread().orElseThrow());
         }
     }
 
@@ -231,7 +246,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
                             + " 1 level off, as the same formulas in float or in another order give)."));
             lines.add("likely cause: " + only.variant().explanation() + ".");
             if (reread) {
-                lines.add("reread: handout " + only.variant().reread() + ".");
+                lines.add("reread: " + toReread().orElseThrow());
             }
             return;
         }

@@ -1,6 +1,9 @@
 package gfx.tick1.command.shared.grader.cohort;
 
+import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.Grading;
+import gfx.tick1.command.shared.grader.model.Category;
+import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -24,6 +27,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HexFormat;
 import java.util.List;
+import java.util.Objects;
 import java.util.Properties;
 import java.util.UUID;
 
@@ -42,8 +46,11 @@ public final class ResultStore {
     private static final String RESULT_FILE = "result.properties";
     /** The prefix of folders being written: never read, deleted at the next start. */
     private static final String WRITING = ".writing-";
-    /** Changes when the way a result is stored or keyed changes, so that older results are graded again. */
-    private static final String FORMAT = "tick1 grade result 1";
+    /**
+     * Changes when the way a result is stored or keyed changes, so that older results are graded again
+     * (2: what the grade found is stored beside its words).
+     */
+    private static final String FORMAT = "tick1 grade result 2";
 
     private final Path folder;
 
@@ -133,8 +140,8 @@ public final class ResultStore {
             }
             return new StudentResult(submission, Boolean.parseBoolean(p.getProperty("passed")),
                     Integer.parseInt(p.getProperty("scenesPassed")), Integer.parseInt(p.getProperty("scenesTotal")),
-                    p.getProperty("diagnosis"), p.getProperty("reason"), scenes,
-                    Duration.ofNanos(Long.parseLong(p.getProperty("timeNanos"))));
+                    category(p), p.getProperty("reason"), scenes,
+                    Duration.ofNanos(Long.parseLong(p.getProperty("timeNanos"))), findings(p));
         } catch (RuntimeException e) {
             return null;   // not a result this program wrote: grade again
         }
@@ -154,7 +161,8 @@ public final class ResultStore {
         p.setProperty("passed", Boolean.toString(result.passed()));
         p.setProperty("scenesPassed", Integer.toString(result.scenesPassed()));
         p.setProperty("scenesTotal", Integer.toString(result.scenesTotal()));
-        p.setProperty("diagnosis", result.diagnosis());
+        p.setProperty("diagnosis", result.diagnosis().label());
+        p.setProperty("outcome", result.diagnosis() instanceof Category.Outcome outcome ? outcome.name() : "");
         p.setProperty("reason", result.reason());
         p.setProperty("timeNanos", Long.toString(result.time().toNanos()));
         p.setProperty("scenes", Integer.toString(result.scenes().size()));
@@ -169,6 +177,12 @@ public final class ResultStore {
             p.setProperty(at + "yours", orEmpty(scene.yours()));
             p.setProperty(at + "expected", orEmpty(scene.expected()));
         }
+        Findings found = result.findings();
+        p.setProperty("findings.catalogued", found.catalogued() == null ? "" : found.catalogued().name());
+        setList(p, "findings.failed", found.failed());
+        setList(p, "findings.notes", found.notes());
+        setList(p, "findings.figures", found.figures());
+        setList(p, "findings.reread", found.reread());
         try (Writer out = Files.newBufferedWriter(entry.resolve(RESULT_FILE), StandardCharsets.UTF_8)) {
             p.store(out, null);
         }
@@ -191,6 +205,36 @@ public final class ResultStore {
             WorkFolder.delete(entry);
         }
         force(folder);
+    }
+
+    /** A stored result's category: an outcome by its name, else a mistake by its label. */
+    private static Category category(Properties p) {
+        String outcome = p.getProperty("outcome");
+        return outcome.isEmpty() ? new Category.Mistake(Objects.requireNonNull(p.getProperty("diagnosis")))
+                : Category.Outcome.valueOf(outcome);
+    }
+
+    /** What a stored result's grade found; an unknown catalogue entry throws, and the result is graded again. */
+    private static Findings findings(Properties p) {
+        String catalogued = p.getProperty("findings.catalogued");
+        return new Findings(catalogued.isEmpty() ? null : Variant.valueOf(catalogued), list(p, "findings.failed"),
+                list(p, "findings.notes"), list(p, "findings.figures"), list(p, "findings.reread"));
+    }
+
+    private static void setList(Properties p, String name, List<String> values) {
+        p.setProperty(name, Integer.toString(values.size()));
+        for (int i = 0; i < values.size(); i++) {
+            p.setProperty(name + "." + i, values.get(i));
+        }
+    }
+
+    private static List<String> list(Properties p, String name) {
+        List<String> values = new ArrayList<>();
+        int count = Integer.parseInt(p.getProperty(name));
+        for (int i = 0; i < count; i++) {
+            values.add(Objects.requireNonNull(p.getProperty(name + "." + i)));
+        }
+        return values;
     }
 
     /** Flushes a file or folder to the disk, so that a power cut after the rename finds it whole. */

@@ -1,8 +1,11 @@
 package gfx.tick1.command.shared.grader.grading;
 
+import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader.Graded;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader.Phases;
+import gfx.tick1.command.shared.grader.model.Category;
+import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -10,7 +13,9 @@ import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import java.io.PrintWriter;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Set;
 
 /**
  * The grade's last step: the verdict line the tester prints, the gradebook row's reason and the
@@ -18,11 +23,6 @@ import java.util.List;
  */
 final class Explainer {
 
-    /** The cohort report's category for a pass, and for each kind of failure that is not a wrong image. */
-    static final String PASSED = "passed", SUBMISSION_PROBLEM = "submission problem", NOT_UTF8 = "not UTF-8",
-            WRONG_PACKAGE = "wrong package", DOES_NOT_COMPILE = "does not compile", TIME_LIMIT = "time limit",
-            EXCEPTION = "exception", CRASHED = "crashed or exited", UNRECOGNISED = "unrecognised mistake",
-            NOT_FROM_CODE_LABEL = "image not from the code";
     /** The words of a matching image that their methods do not give. */
     static final String NOT_FROM_THE_CODE = SubmissionGrader.NOT_FROM_THE_CODE;
 
@@ -49,7 +49,7 @@ final class Explainer {
     }
 
     /** A submission that fails before any scene is run: one line saying why. */
-    Graded failed(String category, String reason, Phases phases) {
+    Graded failed(Category category, String reason, Phases phases) {
         out.println("FAILED: " + reason);
         return new Graded(result(List.of(), false, 0, category, "FAILED: " + reason, List.of()), false, phases,
                 ProbeFindings.of(null).behaviour());
@@ -58,7 +58,8 @@ final class Explainer {
     /** Code that did not compile: the compiler's errors, or why the compiler did not finish. */
     Graded didNotCompile(StudentProcess.Compiled compiled, Phases phases) {
         if (compiled.failure() != null) {
-            return failed(DOES_NOT_COMPILE, "the code could not be compiled: " + compiled.failure(), phases);
+            return failed(Category.Outcome.DOES_NOT_COMPILE, "the code could not be compiled: " + compiled.failure(),
+                    phases);
         }
         String heading = "the code does not compile (" + SubmissionGrader.count(compiled.errors().size(), "error")
                 + ")";
@@ -69,7 +70,7 @@ final class Explainer {
         List<String> error = compiled.errors().get(0).lines().toList();
         int quoted = error.size() >= 3 && error.get(error.size() - 1).strip().equals("^") ? error.size() - 2
                 : error.size();
-        return new Graded(result(List.of(), false, 0, DOES_NOT_COMPILE,
+        return new Graded(result(List.of(), false, 0, Category.Outcome.DOES_NOT_COMPILE,
                 "FAILED: " + heading + ": " + String.join("\n", error.subList(0, quoted)),
                 error.subList(quoted, error.size())), false, phases, ProbeFindings.of(null).behaviour(),
                 List.copyOf(compiled.errors()));
@@ -93,8 +94,9 @@ final class Explainer {
                     + " wrong.";
             out.println(verdict);
             return new Graded(result(scenes, false, judged.size() - failures.size(),
-                    failures.get(0).verdict().category(), verdict + reasons(judged, probes), List.of()),
-                    judged.stream().anyMatch(Judged::imagesUnwritable), phases, probes.behaviour());
+                    failures.get(0).verdict().category(), verdict + reasons(judged, probes), List.of())
+                    .withFindings(found(judged)), judged.stream().anyMatch(Judged::imagesUnwritable), phases,
+                    probes.behaviour());
         }
         out.println(SubmissionGrader.CONGRATULATIONS);
         List<String> notes = probes.notes();
@@ -107,8 +109,34 @@ final class Explainer {
         }
         String reason = notes.isEmpty() ? SubmissionGrader.CONGRATULATIONS
                 : SubmissionGrader.CONGRATULATIONS + " Note: " + String.join("; ", notes) + ".";
-        return new Graded(result(scenes, true, judged.size(), PASSED, reason, List.of()), false, phases,
+        return new Graded(result(scenes, true, judged.size(), Category.Outcome.PASSED, reason, List.of())
+                .withFindings(new Findings(null, List.of(), notesOfAPass(probes), List.of(), List.of())), false, phases,
                 probes.behaviour());
+    }
+
+    /** The notes of a pass as the cohort tallies them: each tested fact and untested note, without words around it. */
+    private static List<String> notesOfAPass(ProbeFindings probes) {
+        List<String> notes = new ArrayList<>(probes.facts());
+        notes.addAll(probes.untested());
+        return List.copyOf(new LinkedHashSet<>(notes));
+    }
+
+    /** What a failure's scenes found, together: the first catalogue entry, each figure, the rest each once. */
+    private static Findings found(List<Judged> judged) {
+        Variant catalogued = null;
+        Set<String> failed = new LinkedHashSet<>();
+        Set<String> notes = new LinkedHashSet<>();
+        List<String> figures = new ArrayList<>();
+        Set<String> reread = new LinkedHashSet<>();
+        for (Judged scene : judged) {
+            Findings found = scene.found();
+            catalogued = catalogued == null ? found.catalogued() : catalogued;
+            failed.addAll(found.failed());
+            notes.addAll(found.notes());
+            figures.addAll(found.figures());
+            reread.addAll(found.reread());
+        }
+        return new Findings(catalogued, List.copyOf(failed), List.copyOf(notes), figures, List.copyOf(reread));
     }
 
     /**
@@ -143,7 +171,7 @@ final class Explainer {
     }
 
     /** The result, whose reason is {@code reason} as one line, then the {@code quoted} lines as they are. */
-    private StudentResult result(List<SceneResult> scenes, boolean passed, int scenesPassed, String category,
+    private StudentResult result(List<SceneResult> scenes, boolean passed, int scenesPassed, Category category,
             String reason, List<String> quoted) {
         StringBuilder text = new StringBuilder(oneLine(reason));
         quoted.forEach(line -> text.append('\n').append(line));

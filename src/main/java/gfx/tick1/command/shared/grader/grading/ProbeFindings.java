@@ -1,6 +1,7 @@
 package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.grader.model.Findings;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -102,16 +103,31 @@ final class ProbeFindings {
         List<String> lines = new ArrayList<>();
         tested.forEach(f -> lines.add("behaviour: " + f.fact()));
         untested().forEach(note -> lines.add("note: " + note));
-        sections().forEach(section -> lines.add("reread: handout " + section));
+        toReread().forEach(section -> lines.add("reread: " + section));
         return lines;
     }
 
     /** The line for a wrong image when no method differs: what the comparison did find. */
     String noFindingLine() {
-        return behaviour.ran() ? "behaviour: your intersectionWith and illuminate behave as ours on "
+        return "behaviour: " + noFinding();
+    }
+
+    /** What the comparison did find when no method differs, as {@link #noFindingLine} words it. */
+    String noFinding() {
+        return behaviour.ran() ? "your intersectionWith and illuminate behave as ours on "
                 + SubmissionGrader.count(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(),
                         "input")
-                : "behaviour: your intersectionWith and illuminate could not be checked: the harness logged no answer";
+                : "your intersectionWith and illuminate could not be checked: the harness logged no answer";
+    }
+
+    /** The findings {@link #failureLines} words: the tested facts, the untested notes and what to reread. */
+    Findings found() {
+        return new Findings(null, facts(), untested(), List.of(), toReread());
+    }
+
+    /** The sections to reread as a failure's explanation names them: "handout section 4, ...". */
+    List<String> toReread() {
+        return sections().stream().map(section -> "handout " + section).toList();
     }
 
     /**

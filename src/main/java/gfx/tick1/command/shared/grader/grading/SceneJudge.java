@@ -2,7 +2,10 @@ package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.diagnosis.Diagnoser;
 import gfx.tick1.command.shared.diagnosis.Diagnosis;
+import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.Grading.CourseScene;
+import gfx.tick1.command.shared.grader.model.Category;
+import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.sandbox.NoImage;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess.Outcome;
@@ -24,13 +27,22 @@ final class SceneJudge {
 
     /**
      * One scene judged: its result, its verdict, whether its explanation now holds the behaviour
-     * comparison's findings, and whether its images could not be written.
+     * comparison's findings, whether its images could not be written, and what its explanation found.
      */
-    record Judged(SceneResult result, SceneVerdict verdict, boolean showedProbes, boolean imagesUnwritable) {
+    record Judged(SceneResult result, SceneVerdict verdict, boolean showedProbes, boolean imagesUnwritable,
+            Findings found) {
+
+        /** A scene whose explanation found nothing to tally. */
+        Judged(SceneResult result, SceneVerdict verdict, boolean showedProbes, boolean imagesUnwritable) {
+            this(result, verdict, showedProbes, imagesUnwritable, Findings.NONE);
+        }
     }
 
-    /** The figures, diagnosis and findings of a wrong image: its verdict, and whether the findings are in it. */
-    private record Explained(SceneVerdict.WrongPixels verdict, boolean showedProbes) {
+    /**
+     * The figures, diagnosis and findings of a wrong image: its verdict, whether the findings are in
+     * it, and what it found.
+     */
+    private record Explained(SceneVerdict.WrongPixels verdict, boolean showedProbes, Findings found) {
     }
 
     /** The two references --reference allows for one scene (either may be null: not compared with). */
@@ -151,8 +163,9 @@ final class SceneJudge {
         }
         print(scene, lines);
         return new Judged(new SceneResult(scene.name(), true, false, lines, null, null, null),
-                new SceneVerdict.WrongPixels(probes.anyFailed() ? probes.label() : Explainer.UNRECOGNISED, null),
-                shows, false);
+                new SceneVerdict.WrongPixels(probes.anyFailed() ? new Category.Mistake(probes.label())
+                        : Category.Outcome.UNRECOGNISED, null),
+                shows, false, shows ? probes.found() : Findings.NONE);
     }
 
     /** A wrong image of a scene that is not hidden: explained against the closer reference, its images written. */
@@ -178,7 +191,11 @@ final class SceneJudge {
         SceneResult result = written.map(names -> new SceneResult(scene.name(), false, false, lines,
                 names.heatMap(), names.yours(), names.expected()))
                 .orElseGet(() -> new SceneResult(scene.name(), false, false, lines, null, null, null));
-        return new Judged(result, explained.verdict(), explained.showedProbes(), written.isEmpty());
+        Findings found = explained.found();
+        return new Judged(result, explained.verdict(), explained.showedProbes(), written.isEmpty(),
+                new Findings(found.catalogued(), found.failed(), found.notes(),
+                        found.figures().stream().map(figures -> "scene " + number + ": " + figures).toList(),
+                        found.reread()));
     }
 
     /**
@@ -188,25 +205,34 @@ final class SceneJudge {
     private Explained explain(CourseScene scene, BufferedImage image, ImageDifference difference,
             List<String> lines, boolean probesShown) {
         double[] mean = difference.meanPerChannel();
-        lines.add(String.format("mean difference R %.3f, G %.3f, B %.3f levels; PSNR %.2f dB", mean[0], mean[1],
-                mean[2], difference.psnr()));
+        String figures = String.format("mean difference R %.3f, G %.3f, B %.3f levels; PSNR %.2f dB", mean[0],
+                mean[1], mean[2], difference.psnr());
+        lines.add(figures);
         Diagnosis diagnosis = new Diagnoser().diagnose(image, scene.scene());
         boolean exact = diagnosis.verdict() == Diagnosis.Verdict.EXPLAINED;
         boolean behaviourSays = probes.anyFailed();
         // What to reread comes from the tested findings; the image's own entry only when it matches exactly.
-        lines.addAll(diagnosis.report(exact && !behaviourSays));
+        boolean imageSaysReread = exact && !behaviourSays;
+        lines.addAll(diagnosis.report(imageSaysReread));
+        List<String> reread = new ArrayList<>(imageSaysReread ? diagnosis.toReread().stream().toList() : List.of());
         boolean shows = !probesShown && (behaviourSays || !probes.untested().isEmpty());
+        Findings found = shows ? probes.found() : Findings.NONE;
         if (shows) {
             lines.addAll(probes.failureLines());
         } else if (!behaviourSays && !exact) {
             lines.add(probes.noFindingLine());
+            found = new Findings(null, List.of(probes.noFinding()), List.of(), List.of(), List.of());
         }
-        String title = exact ? diagnosis.explaining().get(0).variant().title() : null;
+        reread.addAll(found.reread());
+        Variant catalogued = exact ? diagnosis.explaining().get(0).variant() : null;
+        String title = exact ? catalogued.title() : null;
         String exactly = exact ? (scene.hidden() ? "A hidden scene" : scene.name()) + " is exactly the image of \""
                 + title + "\"." : null;
         // The chart counts exact matches first, then tested findings; never what the scenes cannot show.
-        String category = exact ? title : behaviourSays ? probes.label() : Explainer.UNRECOGNISED;
-        return new Explained(new SceneVerdict.WrongPixels(category, exactly), shows);
+        Category category = exact ? new Category.Mistake(title) : behaviourSays ? new Category.Mistake(probes.label())
+                : Category.Outcome.UNRECOGNISED;
+        return new Explained(new SceneVerdict.WrongPixels(category, exactly), shows,
+                new Findings(catalogued, found.failed(), found.notes(), List.of(figures), reread));
     }
 
     private void print(CourseScene scene, List<String> lines) {

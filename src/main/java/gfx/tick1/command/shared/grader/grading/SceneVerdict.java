@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.grader.grading;
 
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.sandbox.NoImage;
 
 /**
@@ -10,13 +11,13 @@ import gfx.tick1.command.shared.grader.sandbox.NoImage;
 sealed interface SceneVerdict {
 
     /** The chart's category of a failure (a pass has none to show). */
-    String category();
+    Category category();
 
     /** The image is the reference's, and their own methods give its sampled pixels. */
     record Passed() implements SceneVerdict {
         @Override
-        public String category() {
-            return Explainer.PASSED;
+        public Category category() {
+            return Category.Outcome.PASSED;
         }
     }
 
@@ -25,25 +26,25 @@ sealed interface SceneVerdict {
      * else the first tested finding's, else that tick1 does not recognise it), and the row's sentence
      * naming the exact catalogue match, or null when none matches.
      */
-    record WrongPixels(String category, String exactly) implements SceneVerdict {
+    record WrongPixels(Category category, String exactly) implements SceneVerdict {
     }
 
     /** The reference's image, but their own methods give other colours, or could not be asked. */
     record NotFromTheCode() implements SceneVerdict {
         @Override
-        public String category() {
-            return Explainer.NOT_FROM_CODE_LABEL;
+        public Category category() {
+            return Category.Outcome.NOT_FROM_THE_CODE;
         }
     }
 
     /** No image, and why. */
     record Missing(NoImage why) implements SceneVerdict {
         @Override
-        public String category() {
+        public Category category() {
             return switch (why) {
-                case TIME_LIMIT -> Explainer.TIME_LIMIT;
-                case THREW -> Explainer.EXCEPTION;
-                default -> Explainer.CRASHED;
+                case TIME_LIMIT -> Category.Outcome.TIME_LIMIT;
+                case THREW -> Category.Outcome.EXCEPTION;
+                default -> Category.Outcome.CRASHED;
             };
         }
     }

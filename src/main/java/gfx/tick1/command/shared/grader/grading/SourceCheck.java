@@ -1,6 +1,7 @@
 package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.grader.intake.StudentFile;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Submission;
 
 /**
@@ -18,7 +19,7 @@ final class SourceCheck {
     }
 
     /** Why the submission cannot be compiled, and its category for the cohort's chart. */
-    record Problem(String category, String reason) implements Checked {
+    record Problem(Category category, String reason) implements Checked {
     }
 
     private SourceCheck() {
@@ -26,18 +27,18 @@ final class SourceCheck {
 
     static Checked check(Submission submission) {
         if (submission.problem() != null) {
-            return new Problem(Explainer.SUBMISSION_PROBLEM, submission.problem());
+            return new Problem(Category.Outcome.SUBMISSION_PROBLEM, submission.problem());
         }
         Sources code;
         try {
             code = new Sources(StudentFile.decode(submission.sphere().path(), submission.sphere().content()),
                     StudentFile.decode(submission.renderer().path(), submission.renderer().content()));
         } catch (StudentFile.NotUtf8Exception e) {
-            return new Problem(Explainer.NOT_UTF8, e.getMessage());
+            return new Problem(Category.Outcome.NOT_UTF8, e.getMessage());
         }
         return StudentFile.packageProblem(submission.sphere().path(), code.sphere())
                 .or(() -> StudentFile.packageProblem(submission.renderer().path(), code.renderer()))
-                .<Checked>map(problem -> new Problem(Explainer.WRONG_PACKAGE, problem))
+                .<Checked>map(problem -> new Problem(Category.Outcome.WRONG_PACKAGE, problem))
                 .orElse(code);
     }
 }

@@ -7,8 +7,8 @@ import java.util.List;
 
 /**
  * What a failed submission's methods got wrong, as a fingerprint: two submissions with equal
- * answers gave the same wrong answers on the same inputs. Made today from a result's
- * {@link Findings}: the failed probes' facts (what the methods returned on tick1's inputs) and each
+ * answers gave the same wrong answers on the same inputs. Made today from the {@link Findings} a
+ * result's grade made: the failed probes' facts (what the methods returned on tick1's inputs) and each
  * wrong scene's difference figures (equal figures on every scene: the same wrong image). A
  * comparison of the methods' answers on inputs of its own can make one through the constructor.
  *
@@ -28,11 +28,12 @@ public record WrongAnswers(List<String> answers, String catalogued, String named
         if (result.passed()) {
             return null;
         }
-        Findings findings = Findings.of(result);
+        Findings findings = result.findings();
         List<String> answers = new ArrayList<>(findings.failed());
         answers.addAll(findings.figures());
-        return answers.isEmpty() ? null : new WrongAnswers(answers, findings.catalogued(),
-                findings.failed().isEmpty() ? null : result.diagnosis());
+        return answers.isEmpty() ? null : new WrongAnswers(answers,
+                findings.catalogued() == null ? null : findings.catalogued().title(),
+                findings.failed().isEmpty() ? null : result.diagnosis().label());
     }
 
     /** Whether a catalogue entry or a probe names the mistake. */

@@ -12,32 +12,40 @@ import java.util.stream.Stream;
  * @param passed       every scene matched its reference
  * @param scenesPassed how many grading scenes matched
  * @param scenesTotal  how many grading scenes there were (0 when nothing could be run)
- * @param diagnosis    a short label that groups failures across the cohort, for the chart of
- *                     common mistakes: "passed", "missing file", "does not compile", "time limit",
- *                     or the name of the diagnose catalogue's closest entry
+ * @param diagnosis    the category that groups failures across the cohort, for the chart of
+ *                     common mistakes: an outcome ("does not compile", "time limit") or a named mistake
  * @param reason       the one-paragraph feedback for the gradebook's comment cell; a compile error's ends with
  *                     javac's source line and the caret under it, which the feedback pages keep as they are
  * @param scenes       each grading scene's result, in grading order (empty when nothing ran)
  * @param time         the wall time the submission took to grade
+ * @param findings     what the grade found, for the cohort's tallies and look-alikes
  */
 public record StudentResult(Submission submission, boolean passed, int scenesPassed, int scenesTotal,
-        String diagnosis, String reason, List<SceneResult> scenes, Duration time) {
+        Category diagnosis, String reason, List<SceneResult> scenes, Duration time, Findings findings) {
 
-    /** The diagnosis of a submission tick1 could not grade (its grader failed, not its code). */
-    public static final String NOT_GRADED = "not graded";
+    /** A result with nothing found beyond its words. */
+    public StudentResult(Submission submission, boolean passed, int scenesPassed, int scenesTotal,
+            Category diagnosis, String reason, List<SceneResult> scenes, Duration time) {
+        this(submission, passed, scenesPassed, scenesTotal, diagnosis, reason, scenes, time, Findings.NONE);
+    }
 
     /**
      * A submission tick1 could not grade: no verdict on its code, so no mark (its row's grade stays
      * blank), and the reason says why and that staff must grade it again.
      */
     public static StudentResult notGraded(Submission submission, String why) {
-        return new StudentResult(submission, false, 0, 0, NOT_GRADED,
+        return new StudentResult(submission, false, 0, 0, Category.Outcome.NOT_GRADED,
                 "Not graded: " + why + "; the course staff must grade it again", List.of(), Duration.ZERO);
+    }
+
+    /** This result with {@code found} as what its grade found. */
+    public StudentResult withFindings(Findings found) {
+        return new StudentResult(submission, passed, scenesPassed, scenesTotal, diagnosis, reason, scenes, time, found);
     }
 
     /** Whether tick1 graded the submission's code (false when its grader failed). */
     public boolean graded() {
-        return !NOT_GRADED.equals(diagnosis);
+        return diagnosis != Category.Outcome.NOT_GRADED;
     }
 
     /**

@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.grader.report;
 import static java.nio.file.LinkOption.NOFOLLOW_LINKS;
 
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.engine.io.IoErrors;
@@ -125,12 +126,18 @@ public final class CohortOutputs {
             plain.add(new StudentResult(new Submission(folder, CellText.bounded(submission.id(), MAX_NAME),
                     CellText.bounded(submission.fullName(), MAX_NAME), submission.sphere(), submission.renderer(),
                     submission.problem()), result.passed(), result.scenesPassed(), result.scenesTotal(),
-                    CellText.bounded(result.diagnosis(), MAX_NAME), CellText.bounded(result.reason(), MAX_REASON),
-                    scenes, result.time()));
+                    bounded(result.diagnosis()), CellText.bounded(result.reason(), MAX_REASON),
+                    scenes, result.time(), result.findings().mapText(text -> CellText.bounded(text, MAX_LINE))));
         }
         return plain;
     }
 
+
+    /** A named mistake's label bounded to {@link #MAX_NAME}; an outcome's is short already. */
+    private static Category bounded(Category category) {
+        return category instanceof Category.Mistake mistake
+                ? new Category.Mistake(CellText.bounded(mistake.label(), MAX_NAME)) : category;
+    }
 
     private static List<String> bounded(List<String> lines) {
         List<String> kept = new ArrayList<>();

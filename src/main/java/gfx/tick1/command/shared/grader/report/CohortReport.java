@@ -124,7 +124,7 @@ public final class CohortReport {
                 scene.hidden(), scene.passed(), scene.explanation(), onDisk(folder, scene.heatMap()),
                 onDisk(folder, scene.yours()), onDisk(folder, scene.expected()))).toList();
         return new StudentResult(result.submission(), result.passed(), result.scenesPassed(), result.scenesTotal(),
-                result.diagnosis(), result.reason(), scenes, result.time());
+                result.diagnosis(), result.reason(), scenes, result.time(), result.findings());
     }
 
     private static String onDisk(Path folder, String image) {

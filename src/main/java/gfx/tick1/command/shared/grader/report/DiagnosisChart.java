@@ -5,7 +5,6 @@ import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Objects;
 import java.util.TreeMap;
 
 /**
@@ -26,7 +25,7 @@ final class DiagnosisChart {
 
     /** A result's diagnosis, or words saying it has none. */
     static String label(StudentResult result) {
-        return Objects.requireNonNullElse(result.diagnosis(), "no diagnosis");
+        return result.diagnosis() == null ? "no diagnosis" : result.diagnosis().label();
     }
 
     /** How many failed submissions carry each diagnosis, most common first. */

@@ -23,9 +23,6 @@ final class FeedbackPage {
     static final String HTML = "feedback.html";
     static final String TEXT = "feedback.txt";
 
-    /** How an explanation line that names what to reread begins (gfx.tick1.command.shared.diagnosis's report). */
-    private static final String REREAD = "reread:";
-
     /** How a row's reason sends its reader to the feedback (grade's own words). */
     private static final String SEE_THE_FEEDBACK = " (see the feedback)";
 
@@ -62,21 +59,14 @@ final class FeedbackPage {
     }
 
     /**
-     * What the explanation lines say to reread, each once, in the order they come, at most
-     * {@value #MOST_TO_REREAD}: a line "reread: handout section 5." as "Handout section 5.". Only
-     * such lines count: the grader writes them for the properties its probes found wrong (or for
-     * an image a catalogue entry matches exactly), never for a candidate it is unsure of.
+     * What the grade found to reread, each once, in the order the explanations name it, at most
+     * {@value #MOST_TO_REREAD}: "handout section 5." as "Handout section 5.". The grader names a
+     * section for the properties its probes found wrong (or for an image a catalogue entry matches
+     * exactly), never for a candidate it is unsure of.
      */
     static List<String> rereading(StudentResult result) {
         Set<String> lines = new LinkedHashSet<>();
-        for (SceneResult scene : result.scenes()) {
-            for (String line : scene.explanation()) {
-                String item = line.strip();
-                if (item.startsWith(REREAD)) {
-                    lines.add(capitalised(item.substring(REREAD.length()).strip()));
-                }
-            }
-        }
+        result.findings().reread().forEach(section -> lines.add(capitalised(section.strip())));
         return lines.stream().limit(MOST_TO_REREAD).toList();
     }
 

@@ -37,9 +37,9 @@ final class YearAtAGlance {
         Map<String, Count> findings = new TreeMap<>();
         Map<String, Count> sections = new TreeMap<>();
         for (StudentResult result : results) {
-            Findings found = Findings.of(result);
+            Findings found = result.findings();
             if (found.catalogued() != null) {
-                add(mistakes, found.catalogued(), result.passed());
+                add(mistakes, found.catalogued().title(), result.passed());
             }
             found.failed().forEach(fact -> add(findings, fact, false));
             found.notes().forEach(fact -> add(findings, fact, true));

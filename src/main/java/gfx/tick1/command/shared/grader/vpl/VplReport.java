@@ -41,7 +41,8 @@ public final class VplReport {
         List<String> lines = new ArrayList<>();
         lines.add(BEGIN);
         boolean hiddenOnly = failedOnlyOnHiddenScenes(result.scenes());
-        lines.add(VplText.title(result.passed() ? PASSED : hiddenOnly ? FAILED : FAILED + ": " + result.diagnosis()));
+        lines.add(VplText.title(result.passed() ? PASSED
+                : hiddenOnly ? FAILED : FAILED + ": " + result.diagnosis().label()));
         if (!compileErrors.isEmpty()) {
             lines.addAll(VplText.quoted(result.reason().substring(0, reasonHead(result.reason())), MOST_LINES));
             compileErrors.stream().limit(MOST_ERRORS).forEach(error -> lines.addAll(VplText.quoted(error,

@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.cohort;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import java.io.IOException;
@@ -22,8 +23,8 @@ class ResultStoreLinksTest {
     private static final String KEY = "0123456789abcdef";
     private static final Submission SUBMISSION = new Submission("Ann_7_assignsubmission_file", "7", "Ann", null,
             null, null);
-    private static final StudentResult RESULT = new StudentResult(SUBMISSION, true, 1, 1, "passed", "fine",
-            List.of(), Duration.ofMillis(5));
+    private static final StudentResult RESULT = new StudentResult(SUBMISSION, true, 1, 1, Category.Outcome.PASSED,
+            "fine", List.of(), Duration.ofMillis(5));
 
     @TempDir
     Path temp;

@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.grader.grading;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -33,7 +34,7 @@ class SceneVerdictTest {
         "DISK_LIMIT | crashed or exited",
         "ENDED | crashed or exited"})
     void aSceneWithoutAnImageIsCountedByWhyItHasNone(NoImage why, String category) {
-        assertThat(new SceneVerdict.Missing(why).category()).as("the category of a scene that %s", why)
+        assertThat(new SceneVerdict.Missing(why).category().label()).as("the category of a scene that %s", why)
                 .isEqualTo(category);
     }
 
@@ -42,18 +43,19 @@ class SceneVerdictTest {
         Judged threw = new Judged(scene("the code threw java.lang.Error: no image within the time limit"),
                 new SceneVerdict.Missing(NoImage.THREW), false, false);
         Judged wrong = new Judged(scene("a line that does not give figures"),
-                new SceneVerdict.WrongPixels("illuminate: N.L not clamped", null), false, false);
+                new SceneVerdict.WrongPixels(new Category.Mistake("illuminate: N.L not clamped"), null), false, false);
 
         StudentResult result = explainer(work).verdict(List.of(threw, wrong), ProbeFindings.of(null),
                 new SubmissionGrader.Phases(0, 0, 0)).result();
 
-        assertThat(result.diagnosis()).as("the category of the first failing scene").isEqualTo("exception");
+        assertThat(result.diagnosis()).as("the category of the first failing scene")
+                .isEqualTo(Category.Outcome.EXCEPTION);
     }
 
     @Test
     void aWrongImageIsKnownByItsVerdictNotByItsFigures(@TempDir Path work) throws IOException {
         Judged wrong = new Judged(scene("an explanation that does not start with the figures"),
-                new SceneVerdict.WrongPixels(Explainer.UNRECOGNISED, null), false, false);
+                new SceneVerdict.WrongPixels(Category.Outcome.UNRECOGNISED, null), false, false);
 
         StudentResult result = explainer(work).verdict(List.of(wrong), ProbeFindings.of(null),
                 new SubmissionGrader.Phases(0, 0, 0)).result();

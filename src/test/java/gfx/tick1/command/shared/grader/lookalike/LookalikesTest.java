@@ -4,6 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.command.diff.CorrectStyles;
 import gfx.tick1.command.shared.grader.lookalike.Handwritten.Solution;
+import gfx.tick1.command.shared.grader.model.Category;
+import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -158,11 +160,14 @@ class LookalikesTest {
 
     @Test
     void failedSubmissionsWithTheSameRareWrongAnswersAreListedWhateverTheirTokens() throws InterruptedException {
-        List<String> answer = List.of("mean difference R 1.000, G 2.000, B 3.000 levels; PSNR 40.00 dB",
+        String figures = "mean difference R 1.000, G 2.000, B 3.000 levels; PSNR 40.00 dB";
+        List<String> answer = List.of(figures,
                 "verdict: unsure: no entry of the catalogue explains this image exactly");
         List<StudentResult> results = new ArrayList<>();
         for (int i = 0; i < HONEST.size(); i++) {
-            results.add(result(i + 1, HONEST.get(i), i < 2 ? answer : List.of()));
+            StudentResult result = result(i + 1, HONEST.get(i), i < 2 ? answer : List.of());
+            results.add(i < 2 ? result.withFindings(new Findings(null, List.of(), List.of(),
+                    List.of("scene 1: " + figures), List.of())) : result);
         }
         List<Lookalike> found = Lookalikes.find(results);
         assertThat(found).as("the pairs listed").singleElement().satisfies(pair -> {
@@ -184,7 +189,8 @@ class LookalikesTest {
                 new Submission.SourceFile("Renderer.java", solution.renderer().getBytes(StandardCharsets.UTF_8)),
                 null);
         boolean passed = explanation.isEmpty();
-        return new StudentResult(submission, passed, passed ? 1 : 0, 1, passed ? "passed" : "unrecognised", "",
+        return new StudentResult(submission, passed, passed ? 1 : 0, 1,
+                passed ? Category.Outcome.PASSED : Category.Outcome.UNRECOGNISED, "",
                 List.of(new SceneResult("tick1.xml", false, passed, explanation, null, null, null)), Duration.ZERO);
     }
 

@@ -88,7 +88,7 @@ class CohortPageBrowserTest {
     @Test
     void theChartDrawsABarOfVisibleSizeForEveryDiagnosisOfAFailure() {
         Map<String, Long> failures = results.stream().filter(result -> !result.passed())
-                .collect(Collectors.groupingBy(StudentResult::diagnosis, Collectors.counting()));
+                .collect(Collectors.groupingBy(result -> result.diagnosis().label(), Collectors.counting()));
         List<WebElement> bars = browser.driver.findElements(By.cssSelector("#diagnoses g.bar"));
         assertThat(bars).hasSize(failures.size());
         double widthOfOne = 0;

@@ -1,6 +1,7 @@
 package gfx.tick1.command.shared.grader.report;
 
 import gfx.tick1.command.grade.MoodleNaming;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import static org.assertj.core.api.Assertions.assertThat;
@@ -94,7 +95,8 @@ class CohortReportTest {
     @Test
     void theChartHasOneBarPerDiagnosisOfAFailureWithItsCountMostCommonFirst() throws IOException {
         Map<String, Long> expected = results.stream().filter(result -> !result.passed())
-                .collect(Collectors.groupingBy(StudentResult::diagnosis, TreeMap::new, Collectors.counting()));
+                .collect(Collectors.groupingBy(result -> result.diagnosis().label(), TreeMap::new,
+                        Collectors.counting()));
         Matcher bar = Pattern.compile("<g class=\"bar\" data-label=\"([^\"]*)\" data-count=\"(\\d+)\">")
                 .matcher(index());
         Map<String, Long> drawn = new TreeMap<>();
@@ -136,8 +138,8 @@ class CohortReportTest {
     void controlCharactersInANameNeverReachAPageOrTheTextFile() throws IOException {
         Submission bell = new Submission("Eve_1005_assignsubmission_file_", "1005", "Eve\u001b[2J\u0007\u202Eevil",
                 null, null, null);
-        StudentResult result = new StudentResult(bell, false, 0, 0, "missing file", "No Sphere.java.", List.of(),
-                Duration.ofMillis(10));
+        StudentResult result = new StudentResult(bell, false, 0, 0, Category.Outcome.SUBMISSION_PROBLEM,
+                "No Sphere.java.", List.of(), Duration.ofMillis(10));
         CohortReport.write(report, List.of(result), SmallCohort::grade);
         assertThat(index() + read(feedbackFolder(result).resolve("feedback.html"))
                 + read(feedbackFolder(result).resolve("feedback.txt"))).doesNotContain("\u001b", "\u0007");
@@ -280,7 +282,8 @@ class CohortReportTest {
         Path elsewhere = report.resolve("elsewhere");
         for (String folder : new String[] {"../escape", "..", ".", "", "a/b", "a\\b"}) {
             Submission sneaky = new Submission(folder, "1", "Sneaky", null, null, null);
-            StudentResult result = new StudentResult(sneaky, true, 1, 1, "passed", "fine", List.of(), Duration.ZERO);
+            StudentResult result = new StudentResult(sneaky, true, 1, 1, Category.Outcome.PASSED, "fine", List.of(),
+                    Duration.ZERO);
             assertThatThrownBy(() -> CohortReport.write(elsewhere, List.of(result), SmallCohort::grade))
                     .as(folder).isInstanceOf(IllegalArgumentException.class);
         }
@@ -327,7 +330,7 @@ class CohortReportTest {
     void theReasonColumnIsShortWithoutTheTerminalsPaddingAndTheWholeReasonInItsTitle() throws IOException {
         String reason = "FAILED: tick1.xml: ( 67.838% of pixels exact,  99.1% within 1 level) " + "word ".repeat(200);
         Submission wordy = new Submission("Lee_1006_assignsubmission_file_", "1006", "Lee", null, null, null);
-        StudentResult result = new StudentResult(wordy, false, 0, 1, "unrecognised", reason, List.of(),
+        StudentResult result = new StudentResult(wordy, false, 0, 1, Category.Outcome.UNRECOGNISED, reason, List.of(),
                 Duration.ofMillis(10));
         CohortReport.write(report, List.of(result), SmallCohort::grade);
 
@@ -349,15 +352,16 @@ class CohortReportTest {
     void everyTextOfAResultIsBoundedBeforeTheReportWritesIt() {
         String huge = "Sphere.java and ".repeat(1_000_000);
         Submission big = new Submission("x_1_assignsubmission_file_", huge, huge, null, null, huge);
-        StudentResult result = new StudentResult(big, false, 0, 1, huge, huge, List.of(new StudentResult.SceneResult(
-                huge, false, false, java.util.Collections.nCopies(20_000, huge), null, null, null)), Duration.ZERO);
+        StudentResult result = new StudentResult(big, false, 0, 1, new Category.Mistake(huge), huge,
+                List.of(new StudentResult.SceneResult(huge, false, false, java.util.Collections.nCopies(20_000, huge),
+                        null, null, null)), Duration.ZERO);
 
         StudentResult bounded = CohortOutputs.forReport(List.of(result)).get(0);
 
         assertThat(bounded.reason()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_REASON);
         assertThat(bounded.submission().fullName()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_NAME);
         assertThat(bounded.submission().id()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_NAME);
-        assertThat(bounded.diagnosis()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_NAME);
+        assertThat(bounded.diagnosis().label()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_NAME);
         assertThat(bounded.scenes().get(0).explanation()).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_LINES + 1)
                 .allSatisfy(line -> assertThat(line).hasSizeLessThanOrEqualTo(CohortOutputs.MAX_LINE));
     }
@@ -367,8 +371,8 @@ class CohortReportTest {
         // Moodle's clean_filename leaves both in a full name; an _ in their place would hide the id from its importer.
         Submission csi = new Submission("Eve\u009b2J\u202e_1007_assignsubmission_file_", "1007", "Eve", null, null,
                 "no Sphere.java in the submission");
-        StudentResult result = new StudentResult(csi, false, 0, 0, "missing file", "FAILED", List.of(),
-                Duration.ZERO);
+        StudentResult result = new StudentResult(csi, false, 0, 0, Category.Outcome.SUBMISSION_PROBLEM, "FAILED",
+                List.of(), Duration.ZERO);
 
         List<StudentResult> plain = CohortOutputs.forReport(List.of(result));
         CohortReport.write(report, plain, SmallCohort::grade);

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.command.shared.grader.lookalike.Lookalike;
 import gfx.tick1.command.shared.grader.lookalike.Lookalikes;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.kit.StarterKit;
@@ -38,7 +39,7 @@ class LookalikeReportTest {
                 new Submission.SourceFile("Sphere.java", sphere.getBytes(StandardCharsets.UTF_8)),
                 new Submission.SourceFile("Renderer.java",
                         StarterKit.source("Renderer").getBytes(StandardCharsets.UTF_8)), null);
-        return new StudentResult(submission, false, 0, 1, "unrecognised", "", List.of(), Duration.ZERO);
+        return new StudentResult(submission, false, 0, 1, Category.Outcome.UNRECOGNISED, "", List.of(), Duration.ZERO);
     }
 
     @Test

@@ -1,5 +1,7 @@
 package gfx.tick1.command.shared.grader.report;
 
+import gfx.tick1.command.shared.grader.model.Category;
+import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -43,12 +45,12 @@ final class SmallCohort {
         results.add(failedOnTick1(report, HOSTILE_FOLDER, "1002", HOSTILE_NAME, NOT_CLAMPED, 4200,
                 "1 of 2 scenes wrong: <b>tick1.xml</b> & \"friends\"", false));
         results.add(new StudentResult(new Submission("Bob Jones_1003_assignsubmission_file_", "1003", "Bob Jones",
-                null, null, null), false, 0, 0, "does not compile", "The code does not compile: "
+                null, null, null), false, 0, 0, Category.Outcome.DOES_NOT_COMPILE, "The code does not compile: "
                 + "Sphere.java:12:5: error: ';' expected", List.of(), Duration.ofMillis(2500)));
         results.add(failedOnTick1(report, "José Ñúñez 陈伟_1004_assignsubmission_file_", "1004",
                 "José Ñúñez 陈伟", NOT_CLAMPED, 61_000, "2 of 2 scenes wrong.", true));
         results.add(new StudentResult(new Submission("crsid42", "crsid42", "crsid42", null, null, null), false, 0,
-                2, "time limit", "The code ran out of time (60 s) before it finished tick1.xml.",
+                2, Category.Outcome.TIME_LIMIT, "The code ran out of time (60 s) before it finished tick1.xml.",
                 List.of(scene("tick1.xml", false, false, List.of("not rendered: the time limit"), null, null, null),
                         scene(HIDDEN_NAME, true, false, List.of("not rendered: the time limit"), null, null, null)),
                 Duration.ofSeconds(60)));
@@ -71,14 +73,16 @@ final class SmallCohort {
                 Files.copy(modelFolder.resolve(image), feedback.resolve(image));
             }
             results.add(new StudentResult(new Submission(folder, String.valueOf(5000 + i), "Student " + i, null, null,
-                    null), false, 1, 2, i % 3 == 0 ? "time limit" : NOT_CLAMPED, "1 of 2 scenes wrong.",
+                    null), false, 1, 2, i % 3 == 0 ? Category.Outcome.TIME_LIMIT : new Category.Mistake(NOT_CLAMPED),
+                    "1 of 2 scenes wrong.",
                     model.scenes(), Duration.ofMillis(i * 7919L % 60_000)));
         }
         return results;
     }
 
     private static StudentResult passed(String folder, String id, String name, long millis) {
-        return new StudentResult(new Submission(folder, id, name, null, null, null), true, 2, 2, "passed",
+        return new StudentResult(new Submission(folder, id, name, null, null, null), true, 2, 2,
+                Category.Outcome.PASSED,
                 "Congratulations! Your code passed the tester.",
                 List.of(scene("tick1.xml", false, true, List.of(), null, null, null),
                         scene(HIDDEN_NAME, true, true, List.of(), null, null, null)),
@@ -106,8 +110,9 @@ final class SmallCohort {
                 "reread: handout section 3.2, \"Diffuse reflection\"."), HIDDEN_HEAT_MAP, null, null)
                 : scene(HIDDEN_NAME, true, true, List.of(), null, null, null));
         int passed = hiddenFails ? 0 : 1;
-        return new StudentResult(new Submission(folder, id, name, null, null, null), false, passed, 2, diagnosis,
-                reason, scenes, Duration.ofMillis(millis));
+        return new StudentResult(new Submission(folder, id, name, null, null, null), false, passed, 2,
+                new Category.Mistake(diagnosis), reason, scenes, Duration.ofMillis(millis), new Findings(null,
+                        List.of(), List.of(), List.of(), List.of("handout section 3.2, \"Diffuse reflection\".")));
     }
 
     private static SceneResult scene(String name, boolean hidden, boolean passed, List<String> explanation,
@@ -129,7 +134,7 @@ final class SmallCohort {
     /** A student whose code did not compile, with no scene run: a result of the folder named. */
     static StudentResult notCompiled(String folder, String id, String name) {
         return new StudentResult(new Submission(folder, id, name, null, null, null), false, 0, 0,
-                "does not compile", "The code does not compile.", List.of(), Duration.ofMillis(10));
+                Category.Outcome.DOES_NOT_COMPILE, "The code does not compile.", List.of(), Duration.ofMillis(10));
     }
 
     /** The names of feedback.zip's entries in {@code report}, in order. */

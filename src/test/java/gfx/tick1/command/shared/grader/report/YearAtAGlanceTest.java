@@ -2,6 +2,9 @@ package gfx.tick1.command.shared.grader.report;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.grader.model.Category;
+import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -14,19 +17,25 @@ class YearAtAGlanceTest {
 
     private static final String FACT = "your illuminate gives negative diffuse light when N.L < 0";
 
-    private static StudentResult result(String id, boolean passed, List<String> lines, long millis) {
+    private static StudentResult result(String id, boolean passed, List<String> lines, Findings found, long millis) {
         return new StudentResult(new Submission("S" + id + "_" + id + "_assignsubmission_file_", id, "S" + id, null,
-                null, null), passed, passed ? 1 : 0, 1, passed ? "passed" : "illuminate: N.L not clamped", "",
+                null, null), passed, passed ? 1 : 0, 1, passed ? Category.Outcome.PASSED
+                : new Category.Mistake("illuminate: N.L not clamped"), "",
                 List.of(new SceneResult("tick1.xml", false, passed, lines, null, null, null)),
-                Duration.ofMillis(millis));
+                Duration.ofMillis(millis), found);
     }
 
     private static final List<StudentResult> COHORT = List.of(
-            result("1", false, List.of("behaviour: " + FACT, "reread: handout section 5, Figure 6(b)."), 800),
-            result("2", false, List.of("verdict: far root: every pixel matches it exactly.",
-                    "reread: handout section 4, steps 4 and 5."), 2_000),
+            result("1", false, List.of("behaviour: " + FACT, "reread: handout section 5, Figure 6(b)."),
+                    new Findings(null, List.of(FACT), List.of(), List.of(),
+                            List.of("handout section 5, Figure 6(b).")), 800),
+            result("2", false, List.of("verdict: far root: every pixel matches its render of tick1.xml exactly.",
+                    "reread: handout section 4, steps 4 and 5."),
+                    new Findings(Variant.FAR_ROOT, List.of(), List.of(), List.of(),
+                            List.of("handout section 4, steps 4 and 5.")), 2_000),
             result("3", true, List.of("note: " + FACT
-                    + " (tick1.xml and the hidden scene do not show this; handout section 5)"), 70_000));
+                    + " (tick1.xml and the hidden scene do not show this; handout section 5)"),
+                    new Findings(null, List.of(), List.of(FACT), List.of(), List.of()), 70_000));
 
     @Test
     void aFindingIsCountedAmongTheFailedAndANoteAtAPassAmongThePassed() {

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -29,7 +30,7 @@ class VplReportTest {
 
     private static StudentResult result(boolean passed, String diagnosis, String reason, SceneResult... scenes) {
         return new StudentResult(new Submission("", "", "", null, null, null), passed, passed ? scenes.length : 0,
-                scenes.length, diagnosis, reason, List.of(scenes), Duration.ZERO);
+                scenes.length, new Category.Mistake(diagnosis), reason, List.of(scenes), Duration.ZERO);
     }
 
     private static SceneResult failed(String name, boolean hidden, String... explanation) {
