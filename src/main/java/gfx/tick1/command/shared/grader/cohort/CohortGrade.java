@@ -143,8 +143,8 @@ public final class CohortGrade {
                 StudentResult original = results[firstWithKey.get(same.getValue())];
                 if (results[i] == null && original != null && !original.graded()) {
                     // The one graded for it could not be: it fares the same.
-                    results[i] = new StudentResult(submissions.get(i), false, 0, 0, original.diagnosis(),
-                            original.reason(), List.of(), Duration.ZERO);
+                    results[i] = new StudentResult(submissions.get(i), new StudentResult.Summary(false, 0, 0,
+                            original.diagnosis(), original.reason()), List.of(), Duration.ZERO);
                     ungraded.add(new Ungraded(submissions.get(i).folder(), "the same files as "
                             + submissions.get(firstWithKey.get(same.getValue())).folder() + ", which was not graded",
                             true));

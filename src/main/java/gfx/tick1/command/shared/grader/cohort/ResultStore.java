@@ -135,12 +135,13 @@ public final class ResultStore {
                         Boolean.parseBoolean(p.getProperty(at + "hidden")),
                         Boolean.parseBoolean(p.getProperty(at + "passed")),
                         explanation.isEmpty() ? List.of() : explanation.lines().toList(),
-                        orNull(p.getProperty(at + "heatMap")), orNull(p.getProperty(at + "yours")),
-                        orNull(p.getProperty(at + "expected"))));
+                        new SceneResult.Images(orNull(p.getProperty(at + "heatMap")),
+                        orNull(p.getProperty(at + "yours")), orNull(p.getProperty(at + "expected")))));
             }
-            return new StudentResult(submission, Boolean.parseBoolean(p.getProperty("passed")),
+            return new StudentResult(submission,
+                    new StudentResult.Summary(Boolean.parseBoolean(p.getProperty("passed")),
                     Integer.parseInt(p.getProperty("scenesPassed")), Integer.parseInt(p.getProperty("scenesTotal")),
-                    category(p), p.getProperty("reason"), scenes,
+                    category(p), p.getProperty("reason")), scenes,
                     Duration.ofNanos(Long.parseLong(p.getProperty("timeNanos"))), findings(p));
         } catch (RuntimeException e) {
             return null;   // not a result this program wrote: grade again

@@ -105,7 +105,7 @@ final class Explainer {
             // The notes live in the explanation of the first scene, whose run made them.
             SceneResult first = scenes.get(0);
             scenes.set(0, new SceneResult(first.name(), first.hidden(), true,
-                    notes.stream().map(note -> "note: " + note).toList(), null, null, null));
+                    notes.stream().map(note -> "note: " + note).toList(), SceneResult.Images.NONE));
         }
         String reason = notes.isEmpty() ? SubmissionGrader.CONGRATULATIONS
                 : SubmissionGrader.CONGRATULATIONS + " Note: " + String.join("; ", notes) + ".";
@@ -175,8 +175,9 @@ final class Explainer {
             String reason, List<String> quoted) {
         StringBuilder text = new StringBuilder(oneLine(reason));
         quoted.forEach(line -> text.append('\n').append(line));
-        return new StudentResult(submission, passed, scenesPassed, scenes.isEmpty() ? 0 : grading.scenes().size(),
-                category, text.toString(), List.copyOf(scenes), Duration.ofNanos(System.nanoTime() - start));
+        return new StudentResult(submission, new StudentResult.Summary(passed, scenesPassed,
+                scenes.isEmpty() ? 0 : grading.scenes().size(), category, text.toString()), List.copyOf(scenes),
+                Duration.ofNanos(System.nanoTime() - start));
     }
 
     /**

@@ -114,7 +114,7 @@ final class SceneJudge {
         // A hidden scene's category is its verdict's: the process total, not the failure beside it.
         NoImage why = scene.hidden() && hidden == HiddenVerdict.PROCESSES ? NoImage.PROCESS_LIMIT : failed.why();
         return new Judged(new SceneResult(scene.name(), scene.hidden(), false, reason.lines().toList(),
-                null, null, null), new SceneVerdict.Missing(why), false, false);
+                SceneResult.Images.NONE), new SceneVerdict.Missing(why), false, false);
     }
 
     private Judged passed(CourseScene scene, BufferedImage image, References references, boolean handoutMatched) {
@@ -131,7 +131,7 @@ final class SceneJudge {
             out.println(scene.name() + ": PASS (identical to " + which + ", "
                     + image.getWidth() * image.getHeight() + " pixels" + other + ")");
         }
-        return new Judged(new SceneResult(scene.name(), scene.hidden(), true, List.of(), null, null, null),
+        return new Judged(new SceneResult(scene.name(), scene.hidden(), true, List.of(), SceneResult.Images.NONE),
                 new SceneVerdict.Passed(), false, false);
     }
 
@@ -144,7 +144,7 @@ final class SceneJudge {
                 + "is missing)";
         String shown = scene.hidden() ? HiddenVerdict.NOT_FROM_THE_CODE.words() : reason;
         out.println(scene.name() + ": FAIL: " + shown);
-        return new Judged(new SceneResult(scene.name(), scene.hidden(), false, List.of(shown), null, null, null),
+        return new Judged(new SceneResult(scene.name(), scene.hidden(), false, List.of(shown), SceneResult.Images.NONE),
                 new SceneVerdict.NotFromTheCode(), false, false);
     }
 
@@ -162,7 +162,7 @@ final class SceneJudge {
             lines.addAll(probes.failureLines());
         }
         print(scene, lines);
-        return new Judged(new SceneResult(scene.name(), true, false, lines, null, null, null),
+        return new Judged(new SceneResult(scene.name(), true, false, lines, SceneResult.Images.NONE),
                 new SceneVerdict.WrongPixels(probes.anyFailed() ? new Category.Mistake(probes.label())
                         : Category.Outcome.UNRECOGNISED, null),
                 shows, false, shows ? probes.found() : Findings.NONE);
@@ -189,8 +189,8 @@ final class SceneJudge {
         Optional<FeedbackImages.Written> written = images.write(number, scene, image, difference,
                 againstHandout ? references.handout() : references.robust());
         SceneResult result = written.map(names -> new SceneResult(scene.name(), false, false, lines,
-                names.heatMap(), names.yours(), names.expected()))
-                .orElseGet(() -> new SceneResult(scene.name(), false, false, lines, null, null, null));
+                new SceneResult.Images(names.heatMap(), names.yours(), names.expected())))
+                .orElseGet(() -> new SceneResult(scene.name(), false, false, lines, SceneResult.Images.NONE));
         Findings found = explained.found();
         return new Judged(result, explained.verdict(), explained.showedProbes(), written.isEmpty(),
                 new Findings(found.catalogued(), found.failed(), found.notes(),

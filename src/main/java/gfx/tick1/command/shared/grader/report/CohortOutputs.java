@@ -122,12 +122,13 @@ public final class CohortOutputs {
             }
             List<SceneResult> scenes = result.scenes().stream().map(scene -> new SceneResult(
                     CellText.bounded(scene.name(), MAX_NAME), scene.hidden(), scene.passed(),
-                    bounded(scene.explanation()), scene.heatMap(), scene.yours(), scene.expected())).toList();
+                    bounded(scene.explanation()), scene.files())).toList();
+            StudentResult.Summary summary = new StudentResult.Summary(result.passed(), result.scenesPassed(),
+                    result.scenesTotal(), bounded(result.diagnosis()), CellText.bounded(result.reason(), MAX_REASON));
             plain.add(new StudentResult(new Submission(folder, CellText.bounded(submission.id(), MAX_NAME),
                     CellText.bounded(submission.fullName(), MAX_NAME), submission.sphere(), submission.renderer(),
-                    submission.problem()), result.passed(), result.scenesPassed(), result.scenesTotal(),
-                    bounded(result.diagnosis()), CellText.bounded(result.reason(), MAX_REASON),
-                    scenes, result.time(), result.findings().mapText(text -> CellText.bounded(text, MAX_LINE))));
+                    submission.problem()), summary, scenes, result.time(),
+                    result.findings().mapText(text -> CellText.bounded(text, MAX_LINE))));
         }
         return plain;
     }

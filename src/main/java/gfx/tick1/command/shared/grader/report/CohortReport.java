@@ -120,11 +120,11 @@ public final class CohortReport {
      * image, when {@code folder} is null (the student's folder could not be made).
      */
     private static StudentResult withImagesOnDisk(Path folder, StudentResult result) {
-        List<SceneResult> scenes = result.scenes().stream().map(scene -> new SceneResult(scene.name(),
-                scene.hidden(), scene.passed(), scene.explanation(), onDisk(folder, scene.heatMap()),
-                onDisk(folder, scene.yours()), onDisk(folder, scene.expected()))).toList();
-        return new StudentResult(result.submission(), result.passed(), result.scenesPassed(), result.scenesTotal(),
-                result.diagnosis(), result.reason(), scenes, result.time(), result.findings());
+        List<SceneResult> scenes = result.scenes().stream().map(scene -> new SceneResult(scene.name(), scene.hidden(),
+                scene.passed(), scene.explanation(), new SceneResult.Images(onDisk(folder, scene.heatMap()),
+                onDisk(folder, scene.yours()), onDisk(folder, scene.expected())))).toList();
+        return new StudentResult(result.submission(), new StudentResult.Summary(result.passed(), result.scenesPassed(),
+                result.scenesTotal(), result.diagnosis(), result.reason()), scenes, result.time(), result.findings());
     }
 
     private static String onDisk(Path folder, String image) {

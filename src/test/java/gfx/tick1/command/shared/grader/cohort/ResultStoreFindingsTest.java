@@ -37,8 +37,8 @@ class ResultStoreFindingsTest {
         Findings found = new Findings(Variant.FAR_ROOT, List.of("your intersectionWith gives the far root"),
                 List.of("a note"), List.of("scene 1: mean difference R 1.000, G 2.000, B 3.000 levels"),
                 List.of("handout section 4, steps 4 and 5."));
-        StudentResult result = new StudentResult(SUBMISSION, false, 0, 2, new Category.Mistake("far root"),
-                "FAILED", List.of(), Duration.ofMillis(3), found);
+        StudentResult result = new StudentResult(SUBMISSION, new StudentResult.Summary(false, 0, 2,
+                new Category.Mistake("far root"), "FAILED"), List.of(), Duration.ofMillis(3), found);
 
         StudentResult loaded = storedAndLoaded(result);
 

@@ -23,8 +23,8 @@ class ResultStoreLinksTest {
     private static final String KEY = "0123456789abcdef";
     private static final Submission SUBMISSION = new Submission("Ann_7_assignsubmission_file", "7", "Ann", null,
             null, null);
-    private static final StudentResult RESULT = new StudentResult(SUBMISSION, true, 1, 1, Category.Outcome.PASSED,
-            "fine", List.of(), Duration.ofMillis(5));
+    private static final StudentResult RESULT = new StudentResult(SUBMISSION, new StudentResult.Summary(true, 1, 1,
+            Category.Outcome.PASSED, "fine"), List.of(), Duration.ofMillis(5));
 
     @TempDir
     Path temp;

@@ -66,7 +66,7 @@ class SceneVerdictTest {
     }
 
     private static SceneResult scene(String explanation) {
-        return new SceneResult("tick1.xml", false, false, List.of(explanation), null, null, null);
+        return new SceneResult("tick1.xml", false, false, List.of(explanation), SceneResult.Images.NONE);
     }
 
     private static Explainer explainer(Path work) throws IOException {

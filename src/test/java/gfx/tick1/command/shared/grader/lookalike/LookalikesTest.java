@@ -189,9 +189,10 @@ class LookalikesTest {
                 new Submission.SourceFile("Renderer.java", solution.renderer().getBytes(StandardCharsets.UTF_8)),
                 null);
         boolean passed = explanation.isEmpty();
-        return new StudentResult(submission, passed, passed ? 1 : 0, 1,
-                passed ? Category.Outcome.PASSED : Category.Outcome.UNRECOGNISED, "",
-                List.of(new SceneResult("tick1.xml", false, passed, explanation, null, null, null)), Duration.ZERO);
+        return new StudentResult(submission, new StudentResult.Summary(passed, passed ? 1 : 0, 1,
+                passed ? Category.Outcome.PASSED : Category.Outcome.UNRECOGNISED, ""),
+                List.of(new SceneResult("tick1.xml", false, passed, explanation, SceneResult.Images.NONE)),
+                Duration.ZERO);
     }
 
 }

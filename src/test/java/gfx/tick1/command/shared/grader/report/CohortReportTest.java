@@ -138,8 +138,8 @@ class CohortReportTest {
     void controlCharactersInANameNeverReachAPageOrTheTextFile() throws IOException {
         Submission bell = new Submission("Eve_1005_assignsubmission_file_", "1005", "Eve\u001b[2J\u0007\u202Eevil",
                 null, null, null);
-        StudentResult result = new StudentResult(bell, false, 0, 0, Category.Outcome.SUBMISSION_PROBLEM,
-                "No Sphere.java.", List.of(), Duration.ofMillis(10));
+        StudentResult result = new StudentResult(bell, new StudentResult.Summary(false, 0, 0,
+                Category.Outcome.SUBMISSION_PROBLEM, "No Sphere.java."), List.of(), Duration.ofMillis(10));
         CohortReport.write(report, List.of(result), SmallCohort::grade);
         assertThat(index() + read(feedbackFolder(result).resolve("feedback.html"))
                 + read(feedbackFolder(result).resolve("feedback.txt"))).doesNotContain("\u001b", "\u0007");
@@ -282,8 +282,8 @@ class CohortReportTest {
         Path elsewhere = report.resolve("elsewhere");
         for (String folder : new String[] {"../escape", "..", ".", "", "a/b", "a\\b"}) {
             Submission sneaky = new Submission(folder, "1", "Sneaky", null, null, null);
-            StudentResult result = new StudentResult(sneaky, true, 1, 1, Category.Outcome.PASSED, "fine", List.of(),
-                    Duration.ZERO);
+            StudentResult result = new StudentResult(sneaky, new StudentResult.Summary(true, 1, 1,
+                    Category.Outcome.PASSED, "fine"), List.of(), Duration.ZERO);
             assertThatThrownBy(() -> CohortReport.write(elsewhere, List.of(result), SmallCohort::grade))
                     .as(folder).isInstanceOf(IllegalArgumentException.class);
         }
@@ -330,8 +330,8 @@ class CohortReportTest {
     void theReasonColumnIsShortWithoutTheTerminalsPaddingAndTheWholeReasonInItsTitle() throws IOException {
         String reason = "FAILED: tick1.xml: ( 67.838% of pixels exact,  99.1% within 1 level) " + "word ".repeat(200);
         Submission wordy = new Submission("Lee_1006_assignsubmission_file_", "1006", "Lee", null, null, null);
-        StudentResult result = new StudentResult(wordy, false, 0, 1, Category.Outcome.UNRECOGNISED, reason, List.of(),
-                Duration.ofMillis(10));
+        StudentResult result = new StudentResult(wordy, new StudentResult.Summary(false, 0, 1,
+                Category.Outcome.UNRECOGNISED, reason), List.of(), Duration.ofMillis(10));
         CohortReport.write(report, List.of(result), SmallCohort::grade);
 
         Matcher cell = Pattern.compile("<td class=\"reason\" title=\"([^\"]*)\">([^<]*)</td>").matcher(index());
@@ -352,9 +352,9 @@ class CohortReportTest {
     void everyTextOfAResultIsBoundedBeforeTheReportWritesIt() {
         String huge = "Sphere.java and ".repeat(1_000_000);
         Submission big = new Submission("x_1_assignsubmission_file_", huge, huge, null, null, huge);
-        StudentResult result = new StudentResult(big, false, 0, 1, new Category.Mistake(huge), huge,
-                List.of(new StudentResult.SceneResult(huge, false, false, java.util.Collections.nCopies(20_000, huge),
-                        null, null, null)), Duration.ZERO);
+        StudentResult result = new StudentResult(big, new StudentResult.Summary(false, 0, 1,
+                new Category.Mistake(huge), huge), List.of(new StudentResult.SceneResult(huge, false, false,
+                java.util.Collections.nCopies(20_000, huge), StudentResult.SceneResult.Images.NONE)), Duration.ZERO);
 
         StudentResult bounded = CohortOutputs.forReport(List.of(result)).get(0);
 
@@ -371,8 +371,8 @@ class CohortReportTest {
         // Moodle's clean_filename leaves both in a full name; an _ in their place would hide the id from its importer.
         Submission csi = new Submission("Eve\u009b2J\u202e_1007_assignsubmission_file_", "1007", "Eve", null, null,
                 "no Sphere.java in the submission");
-        StudentResult result = new StudentResult(csi, false, 0, 0, Category.Outcome.SUBMISSION_PROBLEM, "FAILED",
-                List.of(), Duration.ZERO);
+        StudentResult result = new StudentResult(csi, new StudentResult.Summary(false, 0, 0,
+                Category.Outcome.SUBMISSION_PROBLEM, "FAILED"), List.of(), Duration.ZERO);
 
         List<StudentResult> plain = CohortOutputs.forReport(List.of(result));
         CohortReport.write(report, plain, SmallCohort::grade);

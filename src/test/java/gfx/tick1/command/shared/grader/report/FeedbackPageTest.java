@@ -14,8 +14,9 @@ class FeedbackPageTest {
 
     /** A row's reason as grade writes it for grades.csv, where the feedback is somewhere else. */
     private static final StudentResult ROW = new StudentResult(new Submission("s_1_assignsubmission_file_", "1",
-            "A Student", null, null, null), false, 0, 2, new Category.Mistake("N.L not clamped"),
-            "tick1.xml: your illuminate gives negative diffuse light when N.L < 0; and 1 more (see the feedback)",
+            "A Student", null, null, null), new StudentResult.Summary(false, 0, 2,
+            new Category.Mistake("N.L not clamped"),
+            "tick1.xml: your illuminate gives negative diffuse light when N.L < 0; and 1 more (see the feedback)"),
             List.of(), Duration.ZERO);
 
     @Test

@@ -39,7 +39,8 @@ class LookalikeReportTest {
                 new Submission.SourceFile("Sphere.java", sphere.getBytes(StandardCharsets.UTF_8)),
                 new Submission.SourceFile("Renderer.java",
                         StarterKit.source("Renderer").getBytes(StandardCharsets.UTF_8)), null);
-        return new StudentResult(submission, false, 0, 1, Category.Outcome.UNRECOGNISED, "", List.of(), Duration.ZERO);
+        return new StudentResult(submission, new StudentResult.Summary(false, 0, 1, Category.Outcome.UNRECOGNISED, ""),
+                List.of(), Duration.ZERO);
     }
 
     @Test

@@ -45,15 +45,17 @@ final class SmallCohort {
         results.add(failedOnTick1(report, HOSTILE_FOLDER, "1002", HOSTILE_NAME, NOT_CLAMPED, 4200,
                 "1 of 2 scenes wrong: <b>tick1.xml</b> & \"friends\"", false));
         results.add(new StudentResult(new Submission("Bob Jones_1003_assignsubmission_file_", "1003", "Bob Jones",
-                null, null, null), false, 0, 0, Category.Outcome.DOES_NOT_COMPILE, "The code does not compile: "
-                + "Sphere.java:12:5: error: ';' expected", List.of(), Duration.ofMillis(2500)));
+                null, null, null), new StudentResult.Summary(false, 0, 0, Category.Outcome.DOES_NOT_COMPILE,
+                        "The code does not compile: "
+                + "Sphere.java:12:5: error: ';' expected"), List.of(), Duration.ofMillis(2500)));
         results.add(failedOnTick1(report, "José Ñúñez 陈伟_1004_assignsubmission_file_", "1004",
                 "José Ñúñez 陈伟", NOT_CLAMPED, 61_000, "2 of 2 scenes wrong.", true));
-        results.add(new StudentResult(new Submission("crsid42", "crsid42", "crsid42", null, null, null), false, 0,
-                2, Category.Outcome.TIME_LIMIT, "The code ran out of time (60 s) before it finished tick1.xml.",
-                List.of(scene("tick1.xml", false, false, List.of("not rendered: the time limit"), null, null, null),
+        results.add(new StudentResult(new Submission("crsid42", "crsid42", "crsid42", null, null, null),
+                new StudentResult.Summary(false, 0, 2, Category.Outcome.TIME_LIMIT,
+                "The code ran out of time (60 s) before it finished tick1.xml."), List.of(scene("tick1.xml", false,
+                false, List.of("not rendered: the time limit"), null, null, null),
                         scene(HIDDEN_NAME, true, false, List.of("not rendered: the time limit"), null, null, null)),
-                Duration.ofSeconds(60)));
+                                Duration.ofSeconds(60)));
         results.add(passed("Zoë Brown_999_assignsubmission_file_", "999", "Zoë Brown", 850));
         return results;
     }
@@ -73,20 +75,18 @@ final class SmallCohort {
                 Files.copy(modelFolder.resolve(image), feedback.resolve(image));
             }
             results.add(new StudentResult(new Submission(folder, String.valueOf(5000 + i), "Student " + i, null, null,
-                    null), false, 1, 2, i % 3 == 0 ? Category.Outcome.TIME_LIMIT : new Category.Mistake(NOT_CLAMPED),
-                    "1 of 2 scenes wrong.",
-                    model.scenes(), Duration.ofMillis(i * 7919L % 60_000)));
+                    null), new StudentResult.Summary(false, 1, 2,
+                            i % 3 == 0 ? Category.Outcome.TIME_LIMIT : new Category.Mistake(NOT_CLAMPED),
+                            "1 of 2 scenes wrong."), model.scenes(), Duration.ofMillis(i * 7919L % 60_000)));
         }
         return results;
     }
 
     private static StudentResult passed(String folder, String id, String name, long millis) {
-        return new StudentResult(new Submission(folder, id, name, null, null, null), true, 2, 2,
-                Category.Outcome.PASSED,
-                "Congratulations! Your code passed the tester.",
+        return new StudentResult(new Submission(folder, id, name, null, null, null), new StudentResult.Summary(true, 2,
+                2, Category.Outcome.PASSED, "Congratulations! Your code passed the tester."),
                 List.of(scene("tick1.xml", false, true, List.of(), null, null, null),
-                        scene(HIDDEN_NAME, true, true, List.of(), null, null, null)),
-                Duration.ofMillis(millis));
+                        scene(HIDDEN_NAME, true, true, List.of(), null, null, null)), Duration.ofMillis(millis));
     }
 
     private static StudentResult failedOnTick1(Path report, String folder, String id, String name, String diagnosis,
@@ -110,14 +110,15 @@ final class SmallCohort {
                 "reread: handout section 3.2, \"Diffuse reflection\"."), HIDDEN_HEAT_MAP, null, null)
                 : scene(HIDDEN_NAME, true, true, List.of(), null, null, null));
         int passed = hiddenFails ? 0 : 1;
-        return new StudentResult(new Submission(folder, id, name, null, null, null), false, passed, 2,
-                new Category.Mistake(diagnosis), reason, scenes, Duration.ofMillis(millis), new Findings(null,
+        return new StudentResult(new Submission(folder, id, name, null, null, null), new StudentResult.Summary(false,
+                passed, 2, new Category.Mistake(diagnosis), reason), scenes, Duration.ofMillis(millis),
+                new Findings(null,
                         List.of(), List.of(), List.of(), List.of("handout section 3.2, \"Diffuse reflection\".")));
     }
 
     private static SceneResult scene(String name, boolean hidden, boolean passed, List<String> explanation,
             String heatMap, String yours, String expected) {
-        return new SceneResult(name, hidden, passed, explanation, heatMap, yours, expected);
+        return new SceneResult(name, hidden, passed, explanation, new SceneResult.Images(heatMap, yours, expected));
     }
 
     /** A 16 x 12 image: the left half {@code rgb}, the right half black. */
@@ -133,8 +134,9 @@ final class SmallCohort {
 
     /** A student whose code did not compile, with no scene run: a result of the folder named. */
     static StudentResult notCompiled(String folder, String id, String name) {
-        return new StudentResult(new Submission(folder, id, name, null, null, null), false, 0, 0,
-                Category.Outcome.DOES_NOT_COMPILE, "The code does not compile.", List.of(), Duration.ofMillis(10));
+        return new StudentResult(new Submission(folder, id, name, null, null, null), new StudentResult.Summary(false,
+                0, 0, Category.Outcome.DOES_NOT_COMPILE, "The code does not compile."), List.of(),
+                Duration.ofMillis(10));
     }
 
     /** The names of feedback.zip's entries in {@code report}, in order. */

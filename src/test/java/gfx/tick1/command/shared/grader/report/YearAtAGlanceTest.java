@@ -19,10 +19,9 @@ class YearAtAGlanceTest {
 
     private static StudentResult result(String id, boolean passed, List<String> lines, Findings found, long millis) {
         return new StudentResult(new Submission("S" + id + "_" + id + "_assignsubmission_file_", id, "S" + id, null,
-                null, null), passed, passed ? 1 : 0, 1, passed ? Category.Outcome.PASSED
-                : new Category.Mistake("illuminate: N.L not clamped"), "",
-                List.of(new SceneResult("tick1.xml", false, passed, lines, null, null, null)),
-                Duration.ofMillis(millis), found);
+                null, null), new StudentResult.Summary(passed, passed ? 1 : 0, 1, passed ? Category.Outcome.PASSED
+                : new Category.Mistake("illuminate: N.L not clamped"), ""), List.of(new SceneResult("tick1.xml", false,
+                        passed, lines, SceneResult.Images.NONE)), Duration.ofMillis(millis), found);
     }
 
     private static final List<StudentResult> COHORT = List.of(

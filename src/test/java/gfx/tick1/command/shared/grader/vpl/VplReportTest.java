@@ -29,12 +29,13 @@ class VplReportTest {
     private static final List<String> FILES = List.of("Sphere.java", "Renderer.java");
 
     private static StudentResult result(boolean passed, String diagnosis, String reason, SceneResult... scenes) {
-        return new StudentResult(new Submission("", "", "", null, null, null), passed, passed ? scenes.length : 0,
-                scenes.length, new Category.Mistake(diagnosis), reason, List.of(scenes), Duration.ZERO);
+        return new StudentResult(new Submission("", "", "", null, null, null), new StudentResult.Summary(passed,
+                passed ? scenes.length : 0, scenes.length, new Category.Mistake(diagnosis), reason), List.of(scenes),
+                Duration.ZERO);
     }
 
     private static SceneResult failed(String name, boolean hidden, String... explanation) {
-        return new SceneResult(name, hidden, false, List.of(explanation), null, null, null);
+        return new SceneResult(name, hidden, false, List.of(explanation), SceneResult.Images.NONE);
     }
 
     /** The report as VPL receives it from vpl_execution. */
@@ -45,7 +46,7 @@ class VplReportTest {
     @Test
     void aPassProposesTheMaximumGradeUnderAPassingTitle() {
         String report = received(VplReport.of(result(true, "passed", "Congratulations! Your code passed the tester.",
-                new SceneResult("tick1.xml", false, true, List.of(), null, null, null)), List.of(), TEN));
+                new SceneResult("tick1.xml", false, true, List.of(), SceneResult.Images.NONE)), List.of(), TEN));
 
         assertThat(VplParser.proposedGrade(report)).as("the grade VPL proposes").isEqualTo("10");
         assertThat(VplParser.titles(VplParser.proposedComment(report))).as("the titles the editor shows")
@@ -57,7 +58,7 @@ class VplReportTest {
     void aHiddenSceneOnWhichTheCodeThrewIsSaidInFixedWordsAndNotItsException() {
         String report = received(VplReport.of(result(false, "exception", "FAILED: 1 of 2 scenes wrong. hidden scene "
                 + "1: the code threw java.lang.IllegalStateException (its message is not shown for a hidden scene).",
-                new SceneResult("tick1.xml", false, true, List.of(), null, null, null),
+                new SceneResult("tick1.xml", false, true, List.of(), SceneResult.Images.NONE),
                 failed("secret.xml", true, HiddenVerdict.THREW.words())), List.of(), TEN));
         String comment = VplParser.proposedComment(report);
 
