@@ -80,6 +80,25 @@ class GradeCohortDiskTest {
         assertThat(stored(report)).as("results stored").hasSize(2);
     }
 
+    @Test
+    void aStudentWhoseCodeSaysTheDiskIsFullOnARoomyDiskFailsAndIsNotLeftUngraded() throws Exception {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        Path roomy = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx--x--x")));
+        StudentSolution correct = StudentSolution.correct();
+        // The kernel's words for ENOSPC, thrown by the student's own code, on a disk with room to spare.
+        Path zip = download(correct, correct.editRenderer("return image;",
+                "if (image != null) { throw new IllegalStateException(\"No space left on device\"); } return image;"));
+        Path report = dir.resolve("report");
+
+        String run = grade(roomy, zip, report);
+
+        assertThat(run).as("what the grade printed: the code's own words chose no grade").doesNotContain("not graded");
+        assertThat(Files.readString(report.resolve("grades.csv"))).as("grades.csv: the failing student gets 0.00")
+                .contains("Participant 102,").contains("0.00");
+        assertThat(stored(report)).as("results stored: both").hasSize(2);
+    }
+
     /** A download of two students: one passing, one whose image is wrong. */
     private Path download(StudentSolution passing, StudentSolution failing) throws IOException {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
