@@ -452,8 +452,9 @@ class GradeAttackTest {
 
     /**
      * A scene of the organiser's --scenes folder (not in /usr) with another name in /usr, a hard
-     * link (as a copy, a backup or a version-control object of it would be): hiding by path hides
-     * the scene's own path only, and the code reads the other name.
+     * link (as a copy, a backup or a version-control object of it would be), where the attack of
+     * {@link #aSceneLinkedToAFileDirectlyInUsrIsHiddenFromTheCode} looks: hiding by path hides the
+     * scene's own path only, and the code reads the other name.
      */
     @Test
     void aSceneWithAHardLinkInUsrIsHiddenFromTheCode() throws Exception {
@@ -463,21 +464,18 @@ class GradeAttackTest {
                 null).replace("<scene>", "<scene><!-- " + secret + " -->"));
         try {
             try {
-                Files.createLink(HARD_LINK_IN_USR, scene);
+                Files.createLink(HIDDEN_SCENE_IN_USR, scene);
             } catch (IOException e) {
                 assumeThat(e).as("/usr and the test's folder are one file system").isNull();
             }
-            Grade grade = grade("read-a-hard-link-in-usr", "--scenes", scenes.toString());
+            Grade grade = grade("read-a-scene-in-usr", "--scenes", scenes.toString());
             assertFailedAndHarmedNothing(grade);
             assertThat(grade.output()).as("what the code read there: no scene")
                     .doesNotContain("<scene>", "point-light");
         } finally {
-            Files.deleteIfExists(HARD_LINK_IN_USR);
+            Files.deleteIfExists(HIDDEN_SCENE_IN_USR);
         }
     }
-
-    /** Where {@link #aSceneWithAHardLinkInUsrIsHiddenFromTheCode} puts another name of the organiser's scene. */
-    private static final Path HARD_LINK_IN_USR = Path.of("/usr/tick1-attack-hard-link.xml");
 
     @Test
     void theSandboxsFileSystemsInMemoryAreSizedOrReadOnly() throws Exception {
