@@ -81,6 +81,26 @@ class GradeCohortDiskTest {
     }
 
     @Test
+    void aGraderTemporaryFolderOutOfFilesFailsNoCorrectSubmission() throws Exception {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        Path few = Files.createDirectory(dir.resolve("few-files-tmp"));
+        // Room for far more bytes than a run may write, and for a few dozen files and folders: enough for the
+        // grader's own folders and the sources, not for every class file the compiler writes.
+        Process mount = new ProcessBuilder("/bin/mount", "-t", "tmpfs", "-o", "size=400m,nr_inodes=46,mode=0711",
+                "tick1-test", few.toString()).redirectErrorStream(true).start();
+        assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
+        mounted = few;
+        StudentSolution correct = StudentSolution.correct();
+        Path report = dir.resolve("report");
+
+        String run = grade(few, download(correct, correct), report);
+
+        assertThat(Files.readString(report.resolve("grades.csv")))
+                .as("grades.csv: the grader's disk, out of files, is no student's failure (%s)", run)
+                .doesNotContain("0.00").doesNotContain("FAILED");
+    }
+
+    @Test
     void aStudentWhoseCodeSaysTheDiskIsFullOnARoomyDiskFailsAndIsNotLeftUngraded() throws Exception {
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
         Path roomy = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
