@@ -454,10 +454,10 @@ class GradeAttackTest {
      * A scene of the organiser's --scenes folder (not in /usr) with another name in /usr, a hard
      * link (as a copy, a backup or a version-control object of it would be), where the attack of
      * {@link #aSceneLinkedToAFileDirectlyInUsrIsHiddenFromTheCode} looks: hiding by path hides the
-     * scene's own path only, and the code reads the other name.
+     * scene's own path only, and the code would read the other name, so such a scene is refused.
      */
     @Test
-    void aSceneWithAHardLinkInUsrIsHiddenFromTheCode() throws Exception {
+    void aSceneWithAHardLinkInUsrIsRefused() throws Exception {
         assumeThat(Files.isWritable(Path.of("/usr"))).as("a file can be made in /usr (as root)").isTrue();
         Path scenes = Files.createDirectory(dir.resolve("scenes"));
         Path scene = Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml",
@@ -469,9 +469,9 @@ class GradeAttackTest {
                 assumeThat(e).as("/usr and the test's folder are one file system").isNull();
             }
             Grade grade = grade("read-a-scene-in-usr", "--scenes", scenes.toString());
-            assertFailedAndHarmedNothing(grade);
-            assertThat(grade.output()).as("what the code read there: no scene")
-                    .doesNotContain("<scene>", "point-light");
+            assertThat(grade.status()).as("the grade, refused: " + grade.output()).isEqualTo(GradeCommand.EXIT_USAGE);
+            assertThat(grade.output()).as("why, in one line").contains("other name", "copy it to a file of its own")
+                    .doesNotContain(secret, "<scene>", "point-light");
         } finally {
             Files.deleteIfExists(HIDDEN_SCENE_IN_USR);
         }

@@ -113,13 +113,14 @@ public final class Sandbox {
      * bound for them, never through a path of the grader's.
      *
      * @throws CannotHide when one is a folder that holds what the sandbox shows or the runs need,
-     *     or lies in the JDK the runs use
+     *     or lies in the JDK the runs use, or a file with another name (a hard link)
      */
     public Sandbox hiding(List<Path> paths) throws CannotHide {
         List<Path> all = new ArrayList<>(secrets);
         all.addAll(paths);
         secretsShown(shown(), all);
         noneNeeded(all);
+        noOtherNames(all);
         return new Sandbox(host(), uid, job, all);
     }
 
@@ -485,6 +486,30 @@ public final class Sandbox {
                             + ", so tick1 cannot hide this folder's scenes from the student's code without "
                             + "stopping every run: give the scenes a folder of their own");
                 }
+            }
+        }
+    }
+
+    /**
+     * Refuses a secret file with more than one name (a hard link): the sandbox hides by path, and
+     * the other name, wherever it is, would still show the scene to the student's code.
+     */
+    private static void noOtherNames(List<Path> secrets) throws CannotHide {
+        for (Path secret : secrets) {
+            Path real = realPath(secret);
+            if (real == null || !Files.isRegularFile(real)) {
+                continue;
+            }
+            int names;
+            try {
+                names = (Integer) Files.getAttribute(real, "unix:nlink");
+            } catch (IOException | UnsupportedOperationException e) {
+                throw new CannotHide(secret + ": tick1 cannot tell whether this scene has another name it cannot hide ("
+                        + e.getMessage() + "): copy it to a file of its own");
+            }
+            if (names > 1) {
+                throw new CannotHide(secret + ": this scene has " + (names - 1) + " other name(s) (hard links) that "
+                        + "tick1 cannot hide from the student's code: copy it to a file of its own");
             }
         }
     }
