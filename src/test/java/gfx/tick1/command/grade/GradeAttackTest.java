@@ -573,20 +573,7 @@ class GradeAttackTest {
 
     @Test
     void sigtermStopsTheStudentsCodeAndDeletesTheWorkFolder() throws Exception {
-        Path student = Files.createDirectories(dir.resolve("looping"));
-        Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
-                "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
-        Process grade = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
-                Tick1.class.getName(), "grade",
-                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
-                "--width", "16", "--height", "12").redirectErrorStream(true)
-                .redirectOutput(dir.resolve("grade.log").toFile()).start();
-        // Wait (at most a minute) for the student's code to be running: its JVM's class path is /harness.
-        for (int i = 0; i < 600 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
-                .contains("StudentHarness render")); i++) {
-            Thread.sleep(100);
-        }
+        Process grade = loopingGrade(dir.resolve("grade.log"));
         assertThat(grade.descendants().map(p -> p.info().commandLine().orElse("")))
                 .as("the student's code is running").anyMatch(line -> line.contains("StudentHarness render"));
         List<ProcessHandle> running = grade.descendants().toList();
@@ -598,6 +585,39 @@ class GradeAttackTest {
         }
         assertThat(running).as("processes of the student's").noneMatch(ProcessHandle::isAlive);
         assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
+    }
+
+    @Test
+    void sigtermSaysInOneLineThatTheGradeWasStopped() throws Exception {
+        Path log = dir.resolve("grade.log");
+        Process grade = loopingGrade(log);
+
+        grade.destroy();   // SIGTERM
+        assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+        assertThat(grade.exitValue()).as("the exit status").isNotZero();
+        assertThat(Files.readString(log)).as("what the grade printed")
+                .contains("tick1 grade: the grade was stopped").doesNotContain("internal error", "Exception");
+    }
+
+    /**
+     * A grade, in a JVM of its own printing to {@code log}, of code that loops in its render:
+     * returned once the student's code is running (waiting at most a minute).
+     */
+    private Process loopingGrade(Path log) throws IOException, InterruptedException {
+        Path student = Files.createDirectories(dir.resolve("looping"));
+        Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
+                "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
+        Process grade = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName(), "grade",
+                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
+                "--width", "16", "--height", "12").redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        // The student's code runs in a JVM whose class path is /harness.
+        for (int i = 0; i < 600 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
+                .contains("StudentHarness render")); i++) {
+            Thread.sleep(100);
+        }
+        return grade;
     }
 
     private String resourceOr(String name, String otherwise) throws IOException {
