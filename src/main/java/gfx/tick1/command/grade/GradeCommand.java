@@ -65,8 +65,8 @@ public final class GradeCommand implements Callable<Integer> {
     @ExitStatus("a scene failed and its images could not be written to the report folder; with --submissions: the "
             + "report could not be written, or a submission's images could not be stored")
     public static final int EXIT_CANNOT_WRITE = 3;
-    @ExitStatus("with --submissions: stopped by Ctrl-C; the results finished so far are kept, and the same command "
-            + "grades the rest")
+    @ExitStatus("stopped by Ctrl-C or SIGTERM; with --submissions: the results finished so far are kept, and the same "
+            + "command grades the rest")
     public static final int EXIT_STOPPED = 130;
 
     @Spec
@@ -176,6 +176,9 @@ public final class GradeCommand implements Callable<Integer> {
         });
         try {
             return grade(work, sandbox, process, out, err);
+        } catch (InterruptedException e) {
+            // Ctrl-C or SIGTERM stopped the student's process: the grade's end, not a fault of tick1's.
+            throw new CommandFailure(EXIT_STOPPED, "the grade was stopped (Ctrl-C or SIGTERM); no verdict");
         } finally {
             cleanUp.now();
         }

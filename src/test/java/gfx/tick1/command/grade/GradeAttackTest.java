@@ -450,6 +450,33 @@ class GradeAttackTest {
     /** Where {@link #aSceneLinkedToAFileDirectlyInUsrIsHiddenFromTheCode} puts the organiser's scene. */
     private static final Path HIDDEN_SCENE_IN_USR = Path.of("/usr/tick1-attack-hidden-scene.xml");
 
+    /**
+     * A scene of the organiser's --scenes folder (not in /usr) with another name in /usr, a hard
+     * link (as a copy, a backup or a version-control object of it would be), where the attack of
+     * {@link #aSceneLinkedToAFileDirectlyInUsrIsHiddenFromTheCode} looks: hiding by path hides the
+     * scene's own path only, and the code would read the other name, so such a scene is refused.
+     */
+    @Test
+    void aSceneWithAHardLinkInUsrIsRefused() throws Exception {
+        assumeThat(Files.isWritable(Path.of("/usr"))).as("a file can be made in /usr (as root)").isTrue();
+        Path scenes = Files.createDirectory(dir.resolve("scenes"));
+        Path scene = Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml",
+                null).replace("<scene>", "<scene><!-- " + secret + " -->"));
+        try {
+            try {
+                Files.createLink(HIDDEN_SCENE_IN_USR, scene);
+            } catch (IOException e) {
+                assumeThat(e).as("/usr and the test's folder are one file system").isNull();
+            }
+            Grade grade = grade("read-a-scene-in-usr", "--scenes", scenes.toString());
+            assertThat(grade.status()).as("the grade, refused: " + grade.output()).isEqualTo(GradeCommand.EXIT_USAGE);
+            assertThat(grade.output()).as("why, in one line").contains("other name", "copy it to a file of its own")
+                    .doesNotContain(secret, "<scene>", "point-light");
+        } finally {
+            Files.deleteIfExists(HIDDEN_SCENE_IN_USR);
+        }
+    }
+
     @Test
     void theSandboxsFileSystemsInMemoryAreSizedOrReadOnly() throws Exception {
         Grade grade = grade("fill-the-tmpfs");
@@ -546,20 +573,7 @@ class GradeAttackTest {
 
     @Test
     void sigtermStopsTheStudentsCodeAndDeletesTheWorkFolder() throws Exception {
-        Path student = Files.createDirectories(dir.resolve("looping"));
-        Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
-                "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
-        Process grade = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
-                Tick1.class.getName(), "grade",
-                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
-                "--width", "16", "--height", "12").redirectErrorStream(true)
-                .redirectOutput(dir.resolve("grade.log").toFile()).start();
-        // Wait (at most a minute) for the student's code to be running: its JVM's class path is /harness.
-        for (int i = 0; i < 600 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
-                .contains("StudentHarness render")); i++) {
-            Thread.sleep(100);
-        }
+        Process grade = loopingGrade(dir.resolve("grade.log"));
         assertThat(grade.descendants().map(p -> p.info().commandLine().orElse("")))
                 .as("the student's code is running").anyMatch(line -> line.contains("StudentHarness render"));
         List<ProcessHandle> running = grade.descendants().toList();
@@ -571,6 +585,39 @@ class GradeAttackTest {
         }
         assertThat(running).as("processes of the student's").noneMatch(ProcessHandle::isAlive);
         assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
+    }
+
+    @Test
+    void sigtermSaysInOneLineThatTheGradeWasStopped() throws Exception {
+        Path log = dir.resolve("grade.log");
+        Process grade = loopingGrade(log);
+
+        grade.destroy();   // SIGTERM
+        assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+        assertThat(grade.exitValue()).as("the exit status").isNotZero();
+        assertThat(Files.readString(log)).as("what the grade printed")
+                .contains("tick1 grade: the grade was stopped").doesNotContain("internal error", "Exception");
+    }
+
+    /**
+     * A grade, in a JVM of its own printing to {@code log}, of code that loops in its render:
+     * returned once the student's code is running (waiting at most a minute).
+     */
+    private Process loopingGrade(Path log) throws IOException, InterruptedException {
+        Path student = Files.createDirectories(dir.resolve("looping"));
+        Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
+                "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
+        Process grade = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName(), "grade",
+                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
+                "--width", "16", "--height", "12").redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        // The student's code runs in a JVM whose class path is /harness.
+        for (int i = 0; i < 600 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
+                .contains("StudentHarness render")); i++) {
+            Thread.sleep(100);
+        }
+        return grade;
     }
 
     private String resourceOr(String name, String otherwise) throws IOException {

@@ -80,6 +80,45 @@ class GradeCohortDiskTest {
         assertThat(stored(report)).as("results stored").hasSize(2);
     }
 
+    @Test
+    void aGraderTemporaryFolderOutOfFilesFailsNoCorrectSubmission() throws Exception {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        Path few = Files.createDirectory(dir.resolve("few-files-tmp"));
+        // Room for far more bytes than a run may write, and for a few dozen files and folders: enough for the
+        // grader's own folders and the sources, not for every class file the compiler writes.
+        Process mount = new ProcessBuilder("/bin/mount", "-t", "tmpfs", "-o", "size=400m,nr_inodes=46,mode=0711",
+                "tick1-test", few.toString()).redirectErrorStream(true).start();
+        assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
+        mounted = few;
+        StudentSolution correct = StudentSolution.correct();
+        Path report = dir.resolve("report");
+
+        String run = grade(few, download(correct, correct), report);
+
+        assertThat(Files.readString(report.resolve("grades.csv")))
+                .as("grades.csv: the grader's disk, out of files, is no student's failure (%s)", run)
+                .doesNotContain("0.00").doesNotContain("FAILED");
+    }
+
+    @Test
+    void aStudentWhoseCodeSaysTheDiskIsFullOnARoomyDiskFailsAndIsNotLeftUngraded() throws Exception {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        Path roomy = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx--x--x")));
+        StudentSolution correct = StudentSolution.correct();
+        // The kernel's words for ENOSPC, thrown by the student's own code, on a disk with room to spare.
+        Path zip = download(correct, correct.editRenderer("return image;",
+                "if (image != null) { throw new IllegalStateException(\"No space left on device\"); } return image;"));
+        Path report = dir.resolve("report");
+
+        String run = grade(roomy, zip, report);
+
+        assertThat(run).as("what the grade printed: the code's own words chose no grade").doesNotContain("not graded");
+        assertThat(Files.readString(report.resolve("grades.csv"))).as("grades.csv: the failing student gets 0.00")
+                .contains("Participant 102,").contains("0.00");
+        assertThat(stored(report)).as("results stored: both").hasSize(2);
+    }
+
     /** A download of two students: one passing, one whose image is wrong. */
     private Path download(StudentSolution passing, StudentSolution failing) throws IOException {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();

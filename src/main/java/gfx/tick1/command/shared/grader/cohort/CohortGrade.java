@@ -332,7 +332,7 @@ public final class CohortGrade {
             } finally {
                 WorkFolder.delete(submissionWork);
             }
-            String diskShort = graded.result().passed() ? null : GraderDisk.shortOfSpace(folder, graded.result());
+            String diskShort = graded.result().passed() ? null : GraderDisk.shortOfSpace(folder);
             if (diskShort != null) {
                 WorkFolder.delete(entry);
                 throw new IOException(diskShort);

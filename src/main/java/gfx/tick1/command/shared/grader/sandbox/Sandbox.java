@@ -112,12 +112,15 @@ public final class Sandbox {
      * empty folder, a file under an empty file. The runs get their scenes only through the folder
      * bound for them, never through a path of the grader's.
      *
-     * @throws CannotHide when one is a folder that holds what the sandbox shows
+     * @throws CannotHide when one is a folder that holds what the sandbox shows or the runs need,
+     *     or lies in the JDK the runs use, or a file with another name (a hard link)
      */
     public Sandbox hiding(List<Path> paths) throws CannotHide {
         List<Path> all = new ArrayList<>(secrets);
         all.addAll(paths);
         secretsShown(shown(), all);
+        noneNeeded(all);
+        noOtherNames(all);
         return new Sandbox(host(), uid, job, all);
     }
 
@@ -440,6 +443,77 @@ public final class Sandbox {
         return shown;
     }
 
+    /**
+     * What the runs need from the host besides what {@link #shown()} names: the JDK (by its path and
+     * its real path), the programs and libraries (/usr/bin, /usr/lib, ... and the links to them
+     * that lead there), and /etc.
+     */
+    private static List<Path> needed() {
+        List<Path> needed = new ArrayList<>(shown());
+        needed.add(javaHome());
+        for (String system : List.of("/usr/bin", "/usr/sbin", "/usr/lib", "/usr/lib32", "/usr/lib64", "/usr/libx32",
+                "/usr/libexec", "/usr/share", "/bin", "/lib", "/lib64", "/etc")) {
+            needed.add(Path.of(system));
+        }
+        needed.addAll(needed.stream().map(Sandbox::realPath).filter(java.util.Objects::nonNull).toList());
+        return needed;
+    }
+
+    /** The real path of {@code path}; null when it cannot be read (not there: nothing to hide or need). */
+    private static Path realPath(Path path) {
+        try {
+            return path.toRealPath();
+        } catch (IOException e) {
+            return null;
+        }
+    }
+
+    /**
+     * Refuses a secret whose hiding would take from the runs what they need: a folder that holds
+     * one of {@link #needed()}, or anything in the JDK the runs use (hidden, the runs have no java).
+     */
+    private static void noneNeeded(List<Path> secrets) throws CannotHide {
+        List<Path> needed = needed();
+        Path jdk = realPath(javaHome()) == null ? javaHome() : realPath(javaHome());
+        for (Path secret : secrets) {
+            Path real = realPath(secret);
+            if (real == null) {
+                continue;
+            }
+            for (Path system : needed) {
+                if (system.startsWith(real) || real.startsWith(jdk)) {
+                    throw new CannotHide(secret + ": the runs need " + (real.startsWith(jdk) ? jdk : system)
+                            + ", so tick1 cannot hide this folder's scenes from the student's code without "
+                            + "stopping every run: give the scenes a folder of their own");
+                }
+            }
+        }
+    }
+
+    /**
+     * Refuses a secret file with more than one name (a hard link): the sandbox hides by path, and
+     * the other name, wherever it is, would still show the scene to the student's code.
+     */
+    private static void noOtherNames(List<Path> secrets) throws CannotHide {
+        for (Path secret : secrets) {
+            Path real = realPath(secret);
+            if (real == null || !Files.isRegularFile(real)) {
+                continue;
+            }
+            int names;
+            try {
+                names = (Integer) Files.getAttribute(real, "unix:nlink");
+            } catch (IOException | UnsupportedOperationException e) {
+                throw new CannotHide(secret + ": tick1 cannot tell whether this scene has another name it cannot hide ("
+                        + e.getMessage() + "): copy it to a file of its own");
+            }
+            if (names > 1) {
+                throw new CannotHide(secret + ": this scene has " + (names - 1) + " other name(s) (hard links) that "
+                        + "tick1 cannot hide from the student's code: copy it to a file of its own");
+            }
+        }
+    }
+
     /** One of the organiser's scenes, or their folder, by its real path: hidden under an empty folder or file. */
     record Secret(Path path, boolean folder) {
     }
@@ -455,10 +529,8 @@ public final class Sandbox {
     static List<Secret> secretsShown(List<Path> shown, List<Path> secrets) throws CannotHide {
         List<Secret> folders = new ArrayList<>(), files = new ArrayList<>();
         for (Path secret : secrets) {
-            Path real;
-            try {
-                real = secret.toRealPath();
-            } catch (IOException e) {
+            Path real = realPath(secret);
+            if (real == null) {
                 continue;
             }
             boolean folder = Files.isDirectory(real);

@@ -28,6 +28,13 @@ public final class WorkFolder {
      */
     public static final long RUN_SPACE = OutputCount.BYTES_CAP;
 
+    /**
+     * The free files and folders (inodes) a grade's work folder needs for one run: what the run's
+     * output folder may hold ({@link OutputCount#ENTRIES_CAP}). With fewer, a failed run (or a
+     * compiler that could not write its class files) may be the disk's doing.
+     */
+    public static final long RUN_FILES = OutputCount.ENTRIES_CAP;
+
     private WorkFolder() {
     }
 

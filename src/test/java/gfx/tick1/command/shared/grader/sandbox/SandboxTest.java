@@ -71,4 +71,15 @@ class SandboxTest {
                 .hasMessage(dir + ": the sandbox shows the student's code what is in " + system.toRealPath()
                         + ", so it cannot hide this folder's scenes from it: give the scenes a folder of their own");
     }
+
+    @Test
+    void aScenesFolderThatHoldsTheJdkTheRunsNeedIsRefused() throws IOException {
+        // On Debian the JDK is in /usr/lib/jvm: hiding that folder under an empty one leaves the
+        // sandbox no java to run, and every student fails ("could not be compiled") instead.
+        Path jdkFolder = Path.of(System.getProperty("java.home")).toRealPath().getParent();
+
+        assertThatThrownBy(() -> Sandbox.unconfined().hiding(List.of(jdkFolder)))
+                .as("--scenes " + jdkFolder + ", the folder of the JDK the sandbox runs")
+                .isInstanceOf(Sandbox.CannotHide.class);
+    }
 }
