@@ -470,22 +470,30 @@ public final class Sandbox {
 
     /**
      * Refuses a secret whose hiding would take from the runs what they need: a folder that holds
-     * one of {@link #needed()}, or anything in the JDK the runs use (hidden, the runs have no java).
+     * one of {@link #needed()}, a folder inside one of the system's folders the runs load from
+     * (its libraries, say, which an empty folder would replace), or anything in the JDK the runs use
+     * (hidden, the runs have no java).
      */
     private static void noneNeeded(List<Path> secrets) throws CannotHide {
         List<Path> needed = needed();
+        List<Path> systemFolders = needed.stream().filter(path -> !shown().contains(path)).toList();
         Path jdk = realPath(javaHome()) == null ? javaHome() : realPath(javaHome());
         for (Path secret : secrets) {
             Path real = realPath(secret);
             if (real == null) {
                 continue;
             }
+            Path refused = real.startsWith(jdk) ? jdk : null;
             for (Path system : needed) {
-                if (system.startsWith(real) || real.startsWith(jdk)) {
-                    throw new CannotHide(secret + ": the runs need " + (real.startsWith(jdk) ? jdk : system)
-                            + ", so tick1 cannot hide this folder's scenes from the student's code without "
-                            + "stopping every run: give the scenes a folder of their own");
+                if (refused == null && (system.startsWith(real)
+                        || Files.isDirectory(real) && systemFolders.contains(system) && real.startsWith(system))) {
+                    refused = system;
                 }
+            }
+            if (refused != null) {
+                throw new CannotHide(secret + ": the runs need " + refused
+                        + ", so tick1 cannot hide this folder's scenes from the student's code without "
+                        + "stopping every run: give the scenes a folder of their own");
             }
         }
     }

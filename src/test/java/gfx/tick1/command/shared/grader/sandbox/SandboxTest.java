@@ -82,4 +82,20 @@ class SandboxTest {
                 .as("--scenes " + jdkFolder + ", the folder of the JDK the sandbox runs")
                 .isInstanceOf(Sandbox.CannotHide.class);
     }
+
+    @Test
+    void aScenesFolderInsideAFolderOfLibrariesTheRunsNeedIsRefused() throws IOException {
+        // Any folder of /usr/lib may hold a library the JVM loads (Debian's libc and libz are in
+        // /usr/lib/x86_64-linux-gnu): hidden under an empty folder, every run would fail.
+        Path jdk = Path.of(System.getProperty("java.home")).toRealPath();
+        Path inside;
+        try (var folders = Files.list(Path.of("/usr/lib"))) {
+            inside = folders.filter(Files::isDirectory).filter(folder -> !jdk.startsWith(folder)).sorted()
+                    .findFirst().orElseThrow();
+        }
+
+        assertThatThrownBy(() -> Sandbox.unconfined().hiding(List.of(inside)))
+                .as("--scenes " + inside + ", a folder inside /usr/lib")
+                .isInstanceOf(Sandbox.CannotHide.class);
+    }
 }
