@@ -21,6 +21,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicBoolean;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -68,6 +69,9 @@ public final class GradeCommand implements Callable<Integer> {
     @ExitStatus("stopped by Ctrl-C or SIGTERM; with --submissions: the results finished so far are kept, and the same "
             + "command grades the rest")
     public static final int EXIT_STOPPED = 130;
+
+    /** What a grade stopped by Ctrl-C or SIGTERM says. */
+    private static final String STOPPED = "the grade was stopped (Ctrl-C or SIGTERM); no verdict";
 
     @Spec
     private CommandSpec spec;
@@ -169,8 +173,14 @@ public final class GradeCommand implements Callable<Integer> {
         Path work = Files.createTempDirectory("tick1-grade");
         StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), options.memoryMegabytes());
         // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
-        // scenes and all.
+        // scenes and all. Stopped, the JVM ends when its shutdown hooks do, whatever the grade's thread
+        // is doing, so the hook says so itself: whichever of the two sees the stop first says it, once.
+        AtomicBoolean ended = new AtomicBoolean();
         OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
+            if (ended.compareAndSet(false, true)) {
+                err.println("tick1 grade: " + STOPPED);
+                err.flush();
+            }
             process.stop();
             reportUndeleted(WorkFolder.delete(work), err);
         });
@@ -178,8 +188,12 @@ public final class GradeCommand implements Callable<Integer> {
             return grade(work, sandbox, process, out, err);
         } catch (InterruptedException e) {
             // Ctrl-C or SIGTERM stopped the student's process: the grade's end, not a fault of tick1's.
-            throw new CommandFailure(EXIT_STOPPED, "the grade was stopped (Ctrl-C or SIGTERM); no verdict");
+            if (ended.compareAndSet(false, true)) {
+                throw new CommandFailure(EXIT_STOPPED, STOPPED);
+            }
+            return EXIT_STOPPED;
         } finally {
+            ended.set(true);
             cleanUp.now();
         }
     }
