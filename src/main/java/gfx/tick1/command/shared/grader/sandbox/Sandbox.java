@@ -67,31 +67,23 @@ public final class Sandbox {
     /** The size of each empty folder that hides tick1's own code under /usr. */
     private static final long HIDING_BYTES = 64L << 10;
 
-    /** The bwrap that makes the sandbox; null for {@link #unconfined()}. */
-    private final Path bwrap;
+    /** What this machine gives the sandbox: its bwrap, control groups, seccomp filter and output disks. */
+    private final Host host;
+    /** Whether there is a bwrap: false for {@link #unconfined()}. */
     private final boolean confined;
-    /** Where each run's control group is made, or null: totals are then not enforced. */
-    private final Cgroup.Place cgroups;
     /** The user the student's code runs as when the grader is root; -1 to keep the grader's. */
     private final int uid;
     /** Which of the grades this program runs at once this sandbox is for: 0 for a single grade. */
     private final int job;
-    /** The file of the {@link SpaceFilter}, or null where there is none for this machine. */
-    private final Path spaceFilter;
     /** Folders of the grader's to hide wherever the sandbox would show them: the organiser's scenes. */
     private final List<Path> secrets;
-    /** Whether each run's output folder is a file system of its own ({@link OutputDisk}). */
-    private final boolean ownDisks;
 
     private Sandbox(Host host, int uid, int job, List<Path> secrets) {
-        this.bwrap = host.bwrap();
-        this.confined = bwrap != null;
-        this.cgroups = host.cgroups();
+        this.host = host;
+        this.confined = host.bwrap() != null;
         this.uid = uid;
         this.job = job;
-        this.spaceFilter = host.spaceFilter();
         this.secrets = List.copyOf(secrets);
-        this.ownDisks = host.ownDisks();
     }
 
     /**
@@ -100,10 +92,6 @@ public final class Sandbox {
      * folder can be a file system of its own.
      */
     private record Host(Path bwrap, Cgroup.Place cgroups, Path spaceFilter, boolean ownDisks) {
-    }
-
-    private Host host() {
-        return new Host(bwrap, cgroups, spaceFilter, ownDisks);
     }
 
     /**
@@ -121,7 +109,7 @@ public final class Sandbox {
         secretsShown(shown(), all);
         noneNeeded(all);
         noOtherNames(all);
-        return new Sandbox(host(), uid, job, all);
+        return new Sandbox(host, uid, job, all);
     }
 
     /**
@@ -133,7 +121,7 @@ public final class Sandbox {
         if (job < 0 || job >= MOST_JOBS) {
             throw new IllegalArgumentException("job " + job + ": must be from 0 to " + (MOST_JOBS - 1));
         }
-        return new Sandbox(host(), uid < 0 ? uid : uid + job * JOB_UID_STEP, job, secrets);
+        return new Sandbox(host, uid < 0 ? uid : uid + job * JOB_UID_STEP, job, secrets);
     }
 
     /**
@@ -142,7 +130,7 @@ public final class Sandbox {
      * process limit nor can signal each other. Only for a sandbox {@link #forJob} made.
      */
     public Sandbox forCompiler() {
-        return new Sandbox(host(), uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job, secrets);
+        return new Sandbox(host, uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job, secrets);
     }
 
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
@@ -199,7 +187,7 @@ public final class Sandbox {
      * says they are not (the limits are then per process only).
      */
     public String totalsNotEnforced() {
-        return !confined || cgroups != null ? null
+        return !confined || host.cgroups() != null ? null
                 : "no control group can be made here (cgroup v2 not delegated, cgroup v1 memory and pids not "
                         + "writable): the limits are per process; memory, processes and CPU are not limited in all";
     }
@@ -209,7 +197,7 @@ public final class Sandbox {
      * ({@link SpaceFilter}); else the one line that says it does not, on this machine.
      */
     public String reservationsNotRefused() {
-        return !confined || spaceFilter != null ? null
+        return !confined || host.spaceFilter() != null ? null
                 : "tick1 has no seccomp filter for this machine (" + System.getProperty("os.arch") + "): disk space "
                         + "the code reserves with fallocate is not counted in its output folder's limit";
     }
@@ -219,7 +207,7 @@ public final class Sandbox {
      * files the kernel enforces; else the one line that says it is not.
      */
     public String diskNotEnforced() {
-        return !confined || ownDisks ? null
+        return !confined || host.ownDisks() ? null
                 : (uid < 0 ? "grading as a normal user" : "no file system can be mounted here")
                         + ": the output folder of each run is on the host's disk, held to its limit by a count of "
                         + "its files' names, which misses files the code deletes while it holds them open";
@@ -231,7 +219,7 @@ public final class Sandbox {
      * it once the folder is read), else the folder as it is.
      */
     OutputDisk outputDisk(Path folder) throws IOException {
-        return ownDisks ? OutputDisk.mount(folder, uid) : OutputDisk.onHostDisk(folder);
+        return host.ownDisks() ? OutputDisk.mount(folder, uid) : OutputDisk.onHostDisk(folder);
     }
 
     /** Whether this grader can mount each run a tmpfs of its own: it mounts one, in a new temporary folder. */
@@ -250,7 +238,7 @@ public final class Sandbox {
 
     /** A control group for one run held to {@code totals}, or null when none can be made. */
     Cgroup cgroupFor(Cgroup.Totals totals) throws IOException {
-        return confined && cgroups != null ? Cgroup.create(cgroups, totals) : null;
+        return confined && host.cgroups() != null ? Cgroup.create(host.cgroups(), totals) : null;
     }
 
     /** A size for messages: "1 GiB", "768 MiB". */
@@ -308,14 +296,14 @@ public final class Sandbox {
         }
         List<String> wrapped = new ArrayList<>(startCommand(cgroup));
         wrapped.addAll(limits(cpuSeconds, addressSpaceMiB, oneCore));
-        wrapped.addAll(List.of("--", bwrap.toString(),
+        wrapped.addAll(List.of("--", host.bwrap().toString(),
                 "--unshare-all", "--unshare-user", "--disable-userns",
                 "--die-with-parent", "--new-session", "--cap-drop", "ALL",
                 "--clearenv", "--setenv", "PATH", "/usr/bin", "--setenv", "LANG", "C.UTF-8",
                 "--setenv", "MALLOC_ARENA_MAX", "2",
                 "--ro-bind", "/usr", "/usr",
                 "--symlink", "usr/bin", "/bin", "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64", "/lib64"));
-        if (spaceFilter != null) {
+        if (host.spaceFilter() != null) {
             wrapped.addAll(List.of("--seccomp", Integer.toString(FILTER_FD)));
         }
         if (Files.isDirectory(JAVA_CONFIG)) {
@@ -396,13 +384,13 @@ public final class Sandbox {
      * Java's ProcessBuilder), and becomes the run's first program. Empty when there is neither.
      */
     private List<String> startCommand(Cgroup cgroup) {
-        if (cgroup == null && spaceFilter == null) {
+        if (cgroup == null && host.spaceFilter() == null) {
             return List.of();
         }
         List<String> command = new ArrayList<>(List.of(SH.toString(), "-c",
                 "f=$1; shift; while [ \"$1\" != -- ]; do echo $$ > \"$1/cgroup.procs\" || exit 125; shift; done; "
                         + "shift; if [ -n \"$f\" ]; then exec \"$@\" " + FILTER_FD + "<\"$f\"; else exec \"$@\"; fi",
-                "sh", spaceFilter == null ? "" : spaceFilter.toString()));
+                "sh", host.spaceFilter() == null ? "" : host.spaceFilter().toString()));
         if (cgroup != null) {
             cgroup.folders().forEach(group -> command.add(group.toString()));
         }
@@ -476,7 +464,8 @@ public final class Sandbox {
      */
     private static void noneNeeded(List<Path> secrets) throws CannotHide {
         List<Path> needed = needed();
-        List<Path> systemFolders = needed.stream().filter(path -> !shown().contains(path)).toList();
+        List<Path> shown = shown();
+        List<Path> systemFolders = needed.stream().filter(path -> !shown.contains(path)).toList();
         Path jdk = realPath(javaHome()) == null ? javaHome() : realPath(javaHome());
         for (Path secret : secrets) {
             Path real = realPath(secret);
@@ -639,7 +628,7 @@ public final class Sandbox {
      * less than their own noise on a shared machine, so the parts are timed.)
      */
     public double cgroupSeconds(int runs) throws IOException, InterruptedException {
-        if (!confined || cgroups == null) {
+        if (!confined || host.cgroups() == null) {
             return Double.NaN;
         }
         long[] group = new long[runs], shell = new long[runs];
@@ -658,7 +647,7 @@ public final class Sandbox {
      * where the runs' output folders are on the host's disk.
      */
     public double outputDiskSeconds(int runs) throws IOException {
-        if (!confined || !ownDisks) {
+        if (!confined || !host.ownDisks()) {
             return Double.NaN;
         }
         Path folder = Files.createTempDirectory("tick1-disk-");
