@@ -22,7 +22,8 @@ class CohortSectionTest {
                 .contains("the control groups (2 runs, each making, joining, removing one)", "| 0.0042 |")
                 .contains("the output folders' file systems (2 runs, each mounting, counting, unmounting one) "
                         + "| 0.0087 |")
-                .contains("the JDK's files and libraries read into memory (2 runs, before each) | 0.0311 |");
+                .contains("the JDK's files and libraries, each bound on its own and read into memory before the run "
+                        + "(2 runs) | 0.0311 |");
     }
 
     @Test

@@ -438,7 +438,7 @@ public final class Sandbox {
         List<Path> seen = new ArrayList<>(List.of(jdk));
         if (system != null) {
             seen.addAll(system.files());
-            seen.addAll(system.linkPaths());
+            seen.addAll(system.pathsSeen());
         }
         for (Path secret : secrets) {
             Path real = realPath(secret);
@@ -556,20 +556,32 @@ public final class Sandbox {
     }
 
     /**
-     * What reading the host's files a run sees into memory before it ({@link #warm}) adds to one
-     * run, in seconds: the median of {@code runs} times; NaN without a sandbox.
+     * What showing a run the host's files one by one ({@link SystemFiles}) adds to it, in seconds:
+     * reading them into memory before it ({@link #warm}), and starting bwrap with each bound on its
+     * own rather than all of /usr bound at once (each start runs {@code true}, without limits); the
+     * medians of {@code runs} times each. NaN without a sandbox.
      */
-    public double systemFilesSeconds(int runs) {
+    public double systemFilesSeconds(int runs) throws IOException, InterruptedException {
         if (!confined) {
             return Double.NaN;
         }
-        long[] times = new long[runs];
+        List<String> start = List.of(host.bwrap().toString(), "--unshare-all", "--die-with-parent", "--proc", "/proc",
+                "--dev", "/dev");
+        List<String> eachFile = new ArrayList<>(start);
+        eachFile.addAll(host.system().bwrapArguments());
+        eachFile.addAll(List.of("--ro-bind", TRUE.toString(), TRUE.toString(), "--", TRUE.toString()));
+        List<String> allOfUsr = new ArrayList<>(start);
+        allOfUsr.addAll(List.of("--ro-bind", "/usr", "/usr", "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64",
+                "/lib64", "--", TRUE.toString()));
+        long[] warming = new long[runs], filesStart = new long[runs], usrStart = new long[runs];
         for (int i = 0; i < runs; i++) {
-            long start = System.nanoTime();
+            long before = System.nanoTime();
             warm(List.of());
-            times[i] = System.nanoTime() - start;
+            warming[i] = System.nanoTime() - before;
+            filesStart[i] = timeStart(eachFile.toArray(String[]::new));
+            usrStart[i] = timeStart(allOfUsr.toArray(String[]::new));
         }
-        return median(times) / 1e9;
+        return (median(warming) + median(filesStart) - median(usrStart)) / 1e9;
     }
 
     private static long timeStart(String... command) throws IOException, InterruptedException {

@@ -54,7 +54,7 @@ class SystemFilesTest {
     }
 
     @Test
-    void eachLinkOnTheWayToAFileIsMadeInTheRunsRootAndTheFileBoundWhereItReallyIs() throws IOException {
+    void aLinkToAFolderIsMadeInTheRunsRootAndALinkToAFileIsBoundAsTheFile() throws IOException {
         Path real = Files.createDirectories(dir.resolve("usr/lib"));
         Path library = Files.writeString(real.resolve("libz.so.1.2"), "elf");
         Files.createSymbolicLink(real.resolve("libz.so.1"), Path.of("libz.so.1.2"));
@@ -66,9 +66,7 @@ class SystemFilesTest {
         Path root = dir.toRealPath();
         assertThat(system.bwrapArguments()).as("bwrap's arguments").containsExactly(
                 "--dir", root.toString(), "--symlink", "usr/lib", root.resolve("lib").toString(),
-                "--dir", root.resolve("usr/lib").toString(), "--symlink", "libz.so.1.2",
-                root.resolve("usr/lib/libz.so.1").toString(),
-                "--ro-bind", library.toRealPath().toString(), library.toRealPath().toString());
+                "--ro-bind", library.toRealPath().toString(), root.resolve("usr/lib/libz.so.1").toString());
     }
 
     @Test
