@@ -182,6 +182,12 @@ public final class Sandbox {
         return confined;
     }
 
+    /** What this sandbox holds the code to: results graded under other rules are graded again. */
+    public Enforcement enforcement() {
+        return new Enforcement(confined, uid >= 0, confined && host.cgroups() != null,
+                confined && host.spaceFilter() != null, confined && host.ownDisks());
+    }
+
     /**
      * Null when each run is held to totals by a control group of its own; else the one line that
      * says they are not (the limits are then per process only).
