@@ -35,6 +35,8 @@ public final class Sandbox {
 
     /** Debian's bwrap; the system property tick1.grade.bwrap names another (the tests name a missing one). */
     private static final String BWRAP_PROPERTY = "tick1.grade.bwrap";
+    /** "host" keeps each run's output folder on the host's disk, as where no tmpfs can be mounted (for the tests). */
+    private static final String OUTPUT_DISKS_PROPERTY = "tick1.grade.outputDisks";
     private static final Path SETPRIV = Path.of("/usr/bin/setpriv");
     private static final Path PRLIMIT = Path.of("/usr/bin/prlimit");
     private static final Path TASKSET = Path.of("/usr/bin/taskset");
@@ -163,7 +165,8 @@ public final class Sandbox {
         } catch (IOException e) {
             throw new Unavailable("cannot write the sandbox's seccomp filter (" + e.getMessage() + ")");
         }
-        Sandbox sandbox = new Sandbox(new Host(bwrap, Cgroup.find(), spaceFilter, root && canMountOutputDisks()),
+        Sandbox sandbox = new Sandbox(new Host(bwrap, Cgroup.find(), spaceFilter, root
+                && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks()),
                 root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0, List.of());
         sandbox.selfTest();
         return sandbox;
@@ -180,6 +183,12 @@ public final class Sandbox {
 
     boolean isConfined() {
         return confined;
+    }
+
+    /** What this sandbox holds the code to: results graded under other rules are graded again. */
+    public Enforcement enforcement() {
+        return new Enforcement(confined, uid >= 0, confined && host.cgroups() != null,
+                confined && host.spaceFilter() != null, confined && host.ownDisks());
     }
 
     /**
