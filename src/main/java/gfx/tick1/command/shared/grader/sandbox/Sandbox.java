@@ -210,8 +210,8 @@ public final class Sandbox {
         return !confined || host.ownDisks() ? null
                 : (uid < 0 ? "grading as a normal user" : "no file system can be mounted here")
                         + ": the output folder of each run is on the host's disk, held to its limit by a count of "
-                        + "its files' names, which misses files the code deletes while it holds them open; the "
-                        + "class files a cohort's compiler writes there are counted only once it has compiled";
+                        + "its files' names, which misses files the code deletes while it holds them open; a cohort's "
+                        + "compiler writes its class files there too, counted only once it has compiled";
     }
 
     /**
