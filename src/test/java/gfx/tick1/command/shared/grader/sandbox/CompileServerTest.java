@@ -83,6 +83,21 @@ class CompileServerTest {
     }
 
     @Test
+    void compilesThatLeaveNothingBehindShareOneCompilerAndOneFileSystem() throws Exception {
+        server = compiler("mkdir -p \"$d/classes\" && touch \"$d/classes/Sphere.class\"");
+        for (int i = 0; i < 3; i++) {
+            Path request = server.newRequest();
+            server.compile(request, "Sphere.java", "Renderer.java", LIMIT);
+            server.takeOutput(request);
+            server.done(request);
+        }
+
+        assertThat(starts).as("the compilers started").hasValue(1);
+        assertThat(Files.readString(Path.of("/proc/self/mountinfo")).split(" " + folder.toRealPath() + " ", -1))
+                .as("the mounts on the compiler's folder").hasSize(2);
+    }
+
+    @Test
     void aRequestAfterOneThatLeftSomethingBehindGetsAnEmptyFileSystemAndANewCompiler() throws Exception {
         server = compiler("mkdir -p \"$d/classes\" && touch \"$1/left-behind-$n\"");
         Path first = server.newRequest();
