@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.sandbox;
 
 import java.io.File;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -130,13 +131,16 @@ final class OutputDisk implements AutoCloseable {
     /**
      * Whether nothing is left on this file system: no name in its folder and, on a tmpfs of its
      * own, no block in use (a file a killed process still held takes its blocks until it is gone)
-     * and still mounted there. On the host's disk, always: a new one would be no emptier.
+     * and still mounted there. On the host's disk, whenever the folder is there and empty: a new
+     * one would be no emptier.
      */
-    boolean holdsNothing() throws IOException {
+    boolean holdsNothing() {
         try (var names = Files.list(folder)) {
             if (names.findAny().isPresent()) {
                 return false;
             }
+        } catch (IOException | UncheckedIOException e) {
+            return false;   // not there, or not readable: nothing to start a compile on
         }
         if (!mounted) {
             return true;
