@@ -24,6 +24,9 @@ import java.util.concurrent.ThreadLocalRandom;
  * files (images, logs) have room while the code keeps below them; a run found holding more than a
  * cap, by the walk or by the file system's own count, is stopped with the cap's words. Its pages
  * are memory, which the kernel charges to the run's control group, within the run's total.
+ *
+ * <p>A cohort job's warm compiler has one of the same size on its folder ({@link #mountReadable}),
+ * for the class files javac writes there.
  */
 final class OutputDisk implements AutoCloseable {
 
