@@ -219,7 +219,8 @@ public final class Sandbox {
         return !confined || host.ownDisks() ? null
                 : (uid < 0 ? "grading as a normal user" : "no file system can be mounted here")
                         + ": the output folder of each run is on the host's disk, held to its limit by a count of "
-                        + "its files' names, which misses files the code deletes while it holds them open";
+                        + "its files' names, which misses files the code deletes while it holds them open; a cohort's "
+                        + "compiler writes its class files there too, counted only once it has compiled";
     }
 
     /**
@@ -229,6 +230,15 @@ public final class Sandbox {
      */
     OutputDisk outputDisk(Path folder) throws IOException {
         return host.ownDisks() ? OutputDisk.mount(folder, uid) : OutputDisk.onHostDisk(folder);
+    }
+
+    /**
+     * The file system of the warm compiler's folder {@code folder}, an empty folder, for a sandbox
+     * {@link #forCompiler} made: a tmpfs of its own, the grader's and readable by the compiler's
+     * user, where the sandbox can mount one (close it once the compiler has ended); else the folder.
+     */
+    OutputDisk compilerDisk(Path folder) throws IOException {
+        return host.ownDisks() ? OutputDisk.mountReadable(folder, uid) : OutputDisk.onHostDisk(folder);
     }
 
     /** Whether this grader can mount each run a tmpfs of its own: it mounts one, in a new temporary folder. */
