@@ -48,12 +48,7 @@ class GradeCohortDiskTest {
 
     @Test
     void aFailureOnAGraderShortOfDiskIsNotGradedNotStoredAndGradedOnTheNextRun() throws Exception {
-        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
-        Path small = Files.createDirectory(dir.resolve("small-tmp"));
-        Process mount = new ProcessBuilder("/bin/mount", "-t", "tmpfs", "-o", "size=64m,mode=0711", "tick1-test",
-                small.toString()).redirectErrorStream(true).start();
-        assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
-        mounted = small;
+        Path small = temporaryFolder("small-tmp", "size=64m");
         StudentSolution correct = StudentSolution.correct();
         Path zip = download(correct, correct.editRenderer("return image;",
                 "image.setRGB(0, 0, 0xFFFFFF); return image;"));
@@ -82,14 +77,9 @@ class GradeCohortDiskTest {
 
     @Test
     void aGraderTemporaryFolderOutOfFilesFailsNoCorrectSubmission() throws Exception {
-        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
-        Path few = Files.createDirectory(dir.resolve("few-files-tmp"));
         // Room for far more bytes than a run may write, and for a few dozen files and folders: enough for the
         // grader's own folders and the sources, not for every class file the compiler writes.
-        Process mount = new ProcessBuilder("/bin/mount", "-t", "tmpfs", "-o", "size=400m,nr_inodes=46,mode=0711",
-                "tick1-test", few.toString()).redirectErrorStream(true).start();
-        assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
-        mounted = few;
+        Path few = temporaryFolder("few-files-tmp", "size=400m,nr_inodes=46");
         StudentSolution correct = StudentSolution.correct();
         Path report = dir.resolve("report");
 
@@ -119,6 +109,48 @@ class GradeCohortDiskTest {
         assertThat(stored(report)).as("results stored: both").hasSize(2);
     }
 
+    @Test
+    void aCompileThatWritesMoreClassFilesThanACapFailsThatStudentAloneAndNeverFillsTheGraderDisk() throws Exception {
+        // Room for the grader's own files and the files and folders one run may make, but not for 15,000 more:
+        // a burst of class files beyond the output folder's cap that reached it would fill it.
+        Path tight = temporaryFolder("tight-tmp", "size=1g,nr_inodes=11000");
+        StudentSolution correct = StudentSolution.correct();
+        // A short source for each class file: javac writes 15,000 files, more than the 10,000 a run may make.
+        StringBuilder classes = new StringBuilder();
+        for (int i = 0; i < 15_000; i++) {
+            classes.append("static class C").append(i).append(" {}\n");
+        }
+        String sphere = correct.sphere();
+        int end = sphere.lastIndexOf('}');
+        StudentSolution burst = new StudentSolution(sphere.substring(0, end) + classes + "}\n", correct.renderer());
+        Path report = dir.resolve("report");
+
+        String run = grade(tight, download(correct, burst), report, 2);
+
+        assertThat(run).as("what the grade printed: both graded").contains("1 passed, 1 failed")
+                .doesNotContain("not graded");
+        assertThat(Files.readString(report.resolve("feedback").resolve("Failing Student_102_assignsubmission_file_")
+                .resolve("feedback.txt"))).as("the student's feedback: the burst fails them, by the cap's words")
+                .contains("made more than 10000 files and folders");
+        assertThat(Files.readString(report.resolve("grades.csv"))).as("grades.csv: the neighbour passes (%s)", run)
+                .containsPattern("Participant 101,.*1\\.00");
+        assertThat(stored(report)).as("results stored: both").hasSize(2);
+    }
+
+    /**
+     * A temporary folder for the grader, {@code name} in the test's folder: a tmpfs this test mounts
+     * with {@code options} (size, inodes) and unmounts; the test is skipped where it cannot (not root).
+     */
+    private Path temporaryFolder(String name, String options) throws IOException, InterruptedException {
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
+        Path folder = Files.createDirectory(dir.resolve(name));
+        Process mount = new ProcessBuilder("/bin/mount", "-t", "tmpfs", "-o", options + ",mode=0711", "tick1-test",
+                folder.toString()).redirectErrorStream(true).start();
+        assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
+        mounted = folder;
+        return folder;
+    }
+
     /** A download of two students: one passing, one whose image is wrong. */
     private Path download(StudentSolution passing, StudentSolution failing) throws IOException {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
@@ -140,10 +172,16 @@ class GradeCohortDiskTest {
 
     /** A cohort grade in a JVM of its own with {@code temporary} as its temporary folder: what it printed. */
     private static String grade(Path temporary, Path zip, Path report) throws IOException, InterruptedException {
+        return grade(temporary, zip, report, 1);
+    }
+
+    /** A cohort grade as above, by {@code jobs} jobs at once. */
+    private static String grade(Path temporary, Path zip, Path report, int jobs)
+            throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
                 .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
                 Tick1.class.getName(), "grade", "--submissions", zip.toString(), "--report", report.toString(),
-                "--width", "160", "--height", "120", "--time-limit", "30", "--jobs", "1"));
+                "--width", "160", "--height", "120", "--time-limit", "30", "--jobs", Integer.toString(jobs)));
         Process grade = new ProcessBuilder(command).redirectErrorStream(true).start();
         grade.getOutputStream().close();
         byte[] printed = grade.getInputStream().readAllBytes();

@@ -8,6 +8,7 @@ import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.report.Worksheet;
+import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.command.preview.HeadlessChromium;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -531,6 +532,9 @@ class GradeCohortTest {
             Thread.sleep(100);
         }
         grade.destroyForcibly().waitFor();
+        // What a grader killed with SIGKILL leaves behind (docs/grading.md): its work folder, and its job's
+        // compiler's tmpfs mounted there, which course staff unmount and delete.
+        assertThat(WorkFolder.delete(dir.resolve("tmp"))).as("what the killed grade left behind, removed").isNull();
         int kept = storedResults(state).size();
         assertThat(kept).as(Files.readString(dir.resolve("grade.log"))).isBetween(1, students.size() - 1);
         assertThat(report.resolve("grades.csv")).as("no grades.csv before the end").doesNotExist();

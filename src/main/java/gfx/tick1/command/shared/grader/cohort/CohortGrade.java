@@ -170,7 +170,7 @@ public final class CohortGrade {
                             .grade(submission, null, null, new PrintWriter(Writer.nullWriter()), err).result();
                     continue;
                 }
-                String key = ResultStore.key(submission, grading);
+                String key = ResultStore.key(submission, grading, sandbox.enforcement());
                 results[i] = store.load(key, submission);
                 if (results[i] != null) {
                     images[i] = store.folderOf(key);
@@ -258,7 +258,7 @@ public final class CohortGrade {
                 WorkFolder.delete(entry);
                 return;
             }
-            String key = ResultStore.key(submission, grading);
+            String key = ResultStore.key(submission, grading, sandbox.enforcement());
             store.save(key, graded.result(), entry);
             results[index] = graded.result();
             images[index] = store.folderOf(key);

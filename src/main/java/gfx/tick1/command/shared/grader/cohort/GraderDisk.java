@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.UUID;
 
 /**
  * Whether a failed grade may be the grader's own disk's doing rather than the student's: a run
@@ -14,12 +15,16 @@ import java.nio.file.Path;
  *
  * <p>It is decided from the grader's disk alone, as the file system reports it after the failure,
  * never from the result's words: those are the student's to choose (an exception's message, a
- * source line quoted in a compile error).
+ * source line quoted in a compile error). Free bytes come from Java; free inodes from the system's
+ * stat (Java has no call for them), and where stat cannot tell, from a file and a folder made in
+ * the work folder: that they can be made shows that inodes remain, if not how many.
  */
 final class GraderDisk {
 
-    /** GNU stat's file system form: free inodes, then all inodes (0 where the file system has no count). */
-    private static final String STAT = "/usr/bin/stat";
+    /** The system's stat (coreutils, which every Debian has): its file system form prints free and all inodes. */
+    private static final Path STAT = Path.of("/usr/bin/stat");
+    /** The prefix of what is made to see whether the file system still takes files. */
+    private static final String PROBE = ".tick1-disk-probe-";
 
     private GraderDisk() {
     }
@@ -27,10 +32,15 @@ final class GraderDisk {
     /**
      * Null when the folder {@code work} is on has room for one run; else why a failure there may
      * be the disk's doing, in words for the course staff: fewer free bytes than one run may write
-     * ({@link WorkFolder#RUN_SPACE}), or fewer free files and folders than it may make
-     * ({@link WorkFolder#RUN_FILES}).
+     * ({@link WorkFolder#RUN_SPACE}), fewer free files and folders than it may make
+     * ({@link WorkFolder#RUN_FILES}), or, where their number cannot be read, no room for one more.
      */
     static String shortOfSpace(Path work) throws InterruptedException {
+        return shortOfSpace(work, STAT);
+    }
+
+    /** {@link #shortOfSpace(Path)}, with the stat at {@code stat}. */
+    static String shortOfSpace(Path work, Path stat) throws InterruptedException {
         long free;
         try {
             free = Files.getFileStore(work).getUsableSpace();
@@ -41,33 +51,53 @@ final class GraderDisk {
             return "the grader's temporary folder has only " + (free >> 20) + " MiB free, less than the "
                     + (WorkFolder.RUN_SPACE >> 20) + " MiB a run may need: free some space and grade again";
         }
-        long[] inodes;
-        try {
-            inodes = inodes(work);
-        } catch (IOException e) {
-            return "the free files of the grader's temporary folder cannot be read (" + e.getMessage() + ")";
+        long[] inodes = inodes(work, stat);
+        if (inodes == null || inodes[1] == 0) {
+            return takesAFileAndAFolder(work);
         }
-        if (inodes[1] > 0 && inodes[0] < WorkFolder.RUN_FILES) {
+        if (inodes[0] < WorkFolder.RUN_FILES) {
             return "the grader's temporary folder has room for only " + inodes[0] + " more files, fewer than the "
                     + WorkFolder.RUN_FILES + " a run may make: free some and grade again";
         }
         return null;
     }
 
-    /** The free and total inodes of the file system {@code work} is on (statvfs; Java has no call for it). */
-    private static long[] inodes(Path work) throws IOException, InterruptedException {
-        Process stat = new ProcessBuilder(STAT, "--file-system", "--format=%d %c", work.toString())
-                .redirectErrorStream(true).start();
-        stat.getOutputStream().close();
-        String printed = new String(stat.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
-        if (stat.waitFor() != 0) {
-            throw new IOException(printed);
+    /**
+     * The free and total inodes of the file system {@code work} is on (0 total where the file system
+     * keeps no count), as {@code program} prints them; null when it cannot tell: missing, failing, or
+     * printing another form. The short options are GNU's and BusyBox's alike.
+     */
+    private static long[] inodes(Path work, Path program) throws InterruptedException {
+        String printed;
+        try {
+            Process stat = new ProcessBuilder(program.toString(), "-f", "-c", "%d %c", work.toString())
+                    .redirectErrorStream(true).start();
+            stat.getOutputStream().close();
+            printed = new String(stat.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
+            if (stat.waitFor() != 0) {
+                return null;
+            }
+        } catch (IOException e) {
+            return null;
         }
         String[] fields = printed.split("\\s+");
         try {
-            return new long[] {Long.parseLong(fields[0]), Long.parseLong(fields[1])};
-        } catch (NumberFormatException | ArrayIndexOutOfBoundsException e) {
-            throw new IOException("stat printed \"" + printed + "\"", e);
+            return fields.length == 2 ? new long[] {Long.parseLong(fields[0]), Long.parseLong(fields[1])} : null;
+        } catch (NumberFormatException e) {
+            return null;
+        }
+    }
+
+    /** Null when a file and a folder can be made (and are deleted) in {@code work}; else why not. */
+    private static String takesAFileAndAFolder(Path work) {
+        String name = PROBE + UUID.randomUUID();
+        try {
+            Files.delete(Files.createFile(work.resolve(name)));
+            Files.delete(Files.createDirectory(work.resolve(name)));
+            return null;
+        } catch (IOException e) {
+            return "the grader's temporary folder takes no new file or folder (" + e.getMessage()
+                    + "): free some and grade again";
         }
     }
 }

@@ -7,6 +7,7 @@ import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
+import gfx.tick1.command.shared.grader.sandbox.Enforcement;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.OwnFolder;
 import java.io.IOException;
@@ -48,9 +49,9 @@ public final class ResultStore {
     private static final String WRITING = ".writing-";
     /**
      * Changes when the way a result is stored or keyed changes, so that older results are graded again
-     * (2: what the grade found is stored beside its words).
+     * (2: what the grade found is stored beside its words; 3: the sandbox's rules are part of the key).
      */
-    private static final String FORMAT = "tick1 grade result 2";
+    private static final String FORMAT = "tick1 grade result 3";
 
     private final Path folder;
 
@@ -69,11 +70,13 @@ public final class ResultStore {
 
     /**
      * The key of a submission's result: SHA-256 of the store's format, this program's version and
-     * Java's, the options that change a grade, every grading scene's name and bytes, and the two
-     * files' names (they appear in messages) and bytes. Each part is preceded by its length, so
-     * that no two different inputs make the same bytes.
+     * Java's, the options that change a grade, what the sandbox held the code to ({@code --no-sandbox}
+     * or not, and what this machine let it enforce: code can pass under weaker rules and fail under
+     * stronger ones), every grading scene's name and bytes, and the two files' names (they appear in
+     * messages) and bytes. Each part is preceded by its length, so that no two different inputs make
+     * the same bytes.
      */
-    static String key(Submission submission, Grading grading) throws IOException {
+    static String key(Submission submission, Grading grading, Enforcement enforcement) throws IOException {
         MessageDigest sha;
         try {
             sha = MessageDigest.getInstance("SHA-256");
@@ -88,6 +91,10 @@ public final class ResultStore {
         add(sha, "Java " + System.getProperty("java.version"));
         add(sha, limits.width() + "x" + limits.height() + " " + limits.timeLimit().toMillis() + " ms "
                 + limits.memoryMegabytes() + " MiB reference " + limits.referenceChoice());
+        add(sha, !enforcement.confined() ? "no sandbox" : "sandbox" + (enforcement.ownUser() ? ", own user" : "")
+                + (enforcement.totals() ? ", control group" : "")
+                + (enforcement.reservationsRefused() ? ", reservations refused" : "")
+                + (enforcement.ownDisks() ? ", tmpfs output" : ""));
         for (Grading.CourseScene scene : grading.scenes()) {
             add(sha, scene.name() + (scene.hidden() ? " hidden" : " public"));
             add(sha, Files.readAllBytes(scene.file()));

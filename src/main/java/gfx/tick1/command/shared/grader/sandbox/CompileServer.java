@@ -9,7 +9,10 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
@@ -28,6 +31,12 @@ import java.util.regex.Pattern;
  * and its processor-time limit stays that of a bounded number of compiles. It may write in the
  * output folder of the request it is compiling, and nowhere else: its folder and the requests'
  * are the grader's.
+ *
+ * <p>Its folder is a file system of its own where the sandbox can mount one ({@link
+ * Sandbox#compilerDisk}), held by the kernel to a run's output caps: what a source makes javac
+ * write (many classes, huge constants) fills that, never the grader's disk, and fails that
+ * submission with the cap's words. Each request starts on an empty one: where something is left
+ * (a compile the time limit stopped), the compiler is ended and a new file system mounted.
  */
 final class CompileServer implements AutoCloseable {
 
@@ -48,6 +57,8 @@ final class CompileServer implements AutoCloseable {
     private final Sandbox sandbox;
     private final Path folder;
     private final Launcher launcher;
+    /** The file system of {@link #folder}, or null before the first request and once stopped. */
+    private OutputDisk disk;
     private Started running;
     private volatile Answers answers;
     private int compiles;
@@ -64,11 +75,58 @@ final class CompileServer implements AutoCloseable {
         this.launcher = launcher;
     }
 
-    /** A new request's folder, with an empty {@value StudentHarness#SOURCES_FOLDER} folder for its sources. */
-    Path newRequest() throws IOException {
+    /**
+     * A new request's folder, with an empty {@value StudentHarness#SOURCES_FOLDER} folder for its
+     * sources, alone on the compiler's file system, and the folder {@link #takeOutput} moves its
+     * output to (made now: a compile may leave no room for a folder); {@link #done} removes both.
+     */
+    synchronized Path newRequest() throws IOException, InterruptedException {
+        if (stopped) {
+            throw new InterruptedException("the grade was stopped");
+        }
+        if (disk == null || !disk.holdsNothing()) {
+            // The compiler sees the file system it was started with: a new one needs a new compiler.
+            endCompiler();
+            if (disk != null) {
+                disk.close();
+            }
+            disk = null;
+            WorkFolder.delete(folder);
+            Files.createDirectory(folder);
+            sandbox.share(folder, false);
+            disk = sandbox.compilerDisk(folder);
+        }
         Path request = Files.createDirectory(folder.resolve(Integer.toString(next++)));
         Files.createDirectory(request.resolve(StudentHarness.SOURCES_FOLDER));
+        Files.createDirectory(taken(request), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx------")));
         return request;
+    }
+
+    /**
+     * Moves {@code request}'s output folder where the compiler cannot reach it, on the same file
+     * system (it may still be running, and nothing it could write, a link or a FIFO in place of a
+     * file, may change as it is read): a folder only the grader may enter. Returns the output
+     * folder there, which is not there when nothing was written.
+     */
+    Path takeOutput(Path request) throws IOException {
+        Path output = taken(request).resolve(StudentHarness.OUTPUT_FOLDER);
+        try {
+            Files.move(request.resolve(StudentHarness.OUTPUT_FOLDER), output, StandardCopyOption.ATOMIC_MOVE);
+        } catch (NoSuchFileException e) {
+            // Nothing written: read as such.
+        }
+        return output;
+    }
+
+    /** Removes {@code request} and what was taken of it, leaving the compiler's file system empty. */
+    void done(Path request) {
+        WorkFolder.delete(taken(request));
+        WorkFolder.delete(request);
+    }
+
+    private static Path taken(Path request) {
+        return request.resolveSibling(request.getFileName() + "-taken");
     }
 
     /**
@@ -115,25 +173,36 @@ final class CompileServer implements AutoCloseable {
         }
         Answers.Heard answer = heard.await(number, timeLimit);
         if (answer == null) {
-            close();
-            return new Attempt(new Run(false, -1, heard.takeTail(), false, 0, null), false);
+            endCompiler();
+            return new Attempt(new Run(false, -1, heard.takeTail(), false, 0, overCap(output)), false);
         }
         if (answer.status() == null) {
             compiler.process().waitFor(10, TimeUnit.SECONDS);
             LimitReached reached = compiler.limitReached();
-            close();
+            endCompiler();
+            // A compiler that could not write its class files (its file system full) ends with an exception.
+            LimitReached over = reached != null ? reached : overCap(output);
             return new Attempt(new Run(true, compiler.process().isAlive() ? -1 : compiler.process().exitValue(),
-                    answer.tail(), false, 0, reached), true);
+                    answer.tail(), false, 0, over), true);
         }
-        String over = OutputCount.overCap(output);
+        LimitReached over = overCap(output);
         if (over != null || answer.status() != 0
                 || !ChildOutput.isDirectory(output.resolve(StudentHarness.CLASSES_FOLDER))) {
             // javac reports an Error it caught (a stack overflow, memory) as a failed compile, perhaps with
             // no word of it: after any compile that did not succeed, the next one gets a fresh compiler.
-            close();
+            endCompiler();
         }
-        return new Attempt(new Run(over == null, answer.status(), answer.tail(), false, 0,
-                over == null ? null : new LimitReached(NoImage.DISK_LIMIT, over)), false);
+        return new Attempt(new Run(over == null, answer.status(), answer.tail(), false, 0, over), false);
+    }
+
+    /** The output folder's cap, when the compile left more than it allows in {@code output}; else null. */
+    private LimitReached overCap(Path output) {
+        OutputDisk counted;
+        synchronized (this) {
+            counted = disk;
+        }
+        String over = counted == null ? OutputCount.overCap(output) : counted.overCap(output);
+        return over == null ? null : new LimitReached(NoImage.DISK_LIMIT, over);
     }
 
     /** Whether the compiler that takes the next compile has compiled others already. */
@@ -147,7 +216,7 @@ final class CompileServer implements AutoCloseable {
             throw new InterruptedException("the grade was stopped");
         }
         if (running == null || !running.process().isAlive() || compiles >= COMPILES_PER_START) {
-            close();
+            endCompiler();
             running = launcher.start(sandbox, folder, timeLimit);
             answers = new Answers(running.process().getInputStream());
             answers.start();
@@ -157,14 +226,24 @@ final class CompileServer implements AutoCloseable {
         return running;
     }
 
-    /** Ends the compiler, for the next compile to start another. */
+    /** Ends the compiler and unmounts its file system, for good (on Ctrl-C or SIGTERM). */
     void stop() {
         stopped = true;
         close();
     }
 
+    /** Ends the compiler and unmounts its file system; a later request starts both again. */
     @Override
     public synchronized void close() {
+        endCompiler();
+        if (disk != null) {
+            disk.close();
+            disk = null;
+        }
+    }
+
+    /** Ends the compiler, for the next compile to start another on the same file system. */
+    private synchronized void endCompiler() {
         if (running != null) {
             running.close();
             running = null;

@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.sandbox;
 
 import java.io.File;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -23,6 +24,9 @@ import java.util.concurrent.ThreadLocalRandom;
  * files (images, logs) have room while the code keeps below them; a run found holding more than a
  * cap, by the walk or by the file system's own count, is stopped with the cap's words. Its pages
  * are memory, which the kernel charges to the run's control group, within the run's total.
+ *
+ * <p>A cohort job's warm compiler has one of the same size on its folder ({@link #mountReadable}),
+ * for the class files javac writes there.
  */
 final class OutputDisk implements AutoCloseable {
 
@@ -61,10 +65,24 @@ final class OutputDisk implements AutoCloseable {
      * @throws IOException when it cannot be mounted (the grader is not root, or may not mount)
      */
     static OutputDisk mount(Path folder, int uid) throws IOException {
-        String options = "size=" + BYTES + ",nr_inodes=" + INODES + ",mode=0700,uid=" + uid + ",gid=" + uid
-                + ",nosuid,nodev";
+        return mount(folder, "mode=0700,uid=" + uid + ",gid=" + uid);
+    }
+
+    /**
+     * A tmpfs of its own mounted on {@code folder}, an empty folder, owned by the grader (root) and
+     * readable by {@code group} (the warm compiler's user), which may write only in the folders the
+     * grader makes it there: the folder the warm compiler's class files land in.
+     *
+     * @throws IOException when it cannot be mounted
+     */
+    static OutputDisk mountReadable(Path folder, int group) throws IOException {
+        return mount(folder, "mode=0750,uid=0,gid=" + group);
+    }
+
+    private static OutputDisk mount(Path folder, String owner) throws IOException {
+        String options = "size=" + BYTES + ",nr_inodes=" + INODES + "," + owner + ",nosuid,nodev";
         if (!Commands.run(List.of(MOUNT.toString(), "-t", "tmpfs", "-o", options, SOURCE, folder.toString()))) {
-            throw new IOException("cannot mount a file system of its own on the run's output folder " + folder);
+            throw new IOException("cannot mount a file system of its own on " + folder);
         }
         try {
             return new OutputDisk(folder, true, Files.getAttribute(folder, "unix:dev"));
@@ -93,6 +111,14 @@ final class OutputDisk implements AutoCloseable {
      * the code holds without a name: its blocks in use, and whether a file can still be made.
      */
     String overCap() {
+        return overCap(folder);
+    }
+
+    /**
+     * As {@link #overCap()}, but the walk counts only {@code within}, a folder on this file system
+     * (the file system's own count is of all of it).
+     */
+    String overCap(Path within) {
         if (mounted && stillMounted()) {
             File root = folder.toFile();
             if (root.getTotalSpace() - root.getFreeSpace() > OutputCount.BYTES_CAP) {
@@ -102,7 +128,28 @@ final class OutputDisk implements AutoCloseable {
                 return OutputCount.TOO_MANY_ENTRIES;
             }
         }
-        return OutputCount.overCap(folder);
+        return OutputCount.overCap(within);
+    }
+
+    /**
+     * Whether nothing is left on this file system: no name in its folder and, on a tmpfs of its
+     * own, no block in use (a file a killed process still held takes its blocks until it is gone)
+     * and still mounted there. On the host's disk, whenever the folder is there and empty: a new
+     * one would be no emptier.
+     */
+    boolean holdsNothing() {
+        try (var names = Files.list(folder)) {
+            if (names.findAny().isPresent()) {
+                return false;
+            }
+        } catch (IOException | UncheckedIOException e) {
+            return false;   // not there, or not readable: nothing to start a compile on
+        }
+        if (!mounted) {
+            return true;
+        }
+        File root = folder.toFile();
+        return stillMounted() && root.getTotalSpace() == root.getFreeSpace();
     }
 
     /** Whether the folder is still the tmpfs's root: the clean-up on Ctrl-C may have detached it. */

@@ -42,6 +42,8 @@ public final class Sandbox {
     private static final String ALSO_SHOWN_PROPERTY = "tick1.grade.sandboxAlsoShows";
     /** Debian's bwrap; the system property tick1.grade.bwrap names another (the tests name a missing one). */
     private static final String BWRAP_PROPERTY = "tick1.grade.bwrap";
+    /** "host" keeps each run's output folder on the host's disk, as where no tmpfs can be mounted (for the tests). */
+    private static final String OUTPUT_DISKS_PROPERTY = "tick1.grade.outputDisks";
     private static final Path SETPRIV = Path.of("/usr/bin/setpriv");
     private static final Path PRLIMIT = Path.of("/usr/bin/prlimit");
     private static final Path TASKSET = Path.of("/usr/bin/taskset");
@@ -181,7 +183,8 @@ public final class Sandbox {
             throw new Unavailable("cannot list the files of the JDK and the libraries java loads (" + e.getMessage()
                     + ")");
         }
-        Host host = new Host(bwrap, Cgroup.find(), spaceFilter, root && canMountOutputDisks(), system);
+        Host host = new Host(bwrap, Cgroup.find(), spaceFilter, root
+                && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks(), system);
         Sandbox sandbox = new Sandbox(host,
                 root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0);
         sandbox.selfTest();
@@ -199,6 +202,12 @@ public final class Sandbox {
 
     boolean isConfined() {
         return confined;
+    }
+
+    /** What this sandbox holds the code to: results graded under other rules are graded again. */
+    public Enforcement enforcement() {
+        return new Enforcement(confined, uid >= 0, confined && host.cgroups() != null,
+                confined && host.spaceFilter() != null, confined && host.ownDisks());
     }
 
     /**
@@ -229,7 +238,8 @@ public final class Sandbox {
         return !confined || host.ownDisks() ? null
                 : (uid < 0 ? "grading as a normal user" : "no file system can be mounted here")
                         + ": the output folder of each run is on the host's disk, held to its limit by a count of "
-                        + "its files' names, which misses files the code deletes while it holds them open";
+                        + "its files' names, which misses files the code deletes while it holds them open; a cohort's "
+                        + "compiler writes its class files there too, counted only once it has compiled";
     }
 
     /**
@@ -239,6 +249,15 @@ public final class Sandbox {
      */
     OutputDisk outputDisk(Path folder) throws IOException {
         return host.ownDisks() ? OutputDisk.mount(folder, uid) : OutputDisk.onHostDisk(folder);
+    }
+
+    /**
+     * The file system of the warm compiler's folder {@code folder}, an empty folder, for a sandbox
+     * {@link #forCompiler} made: a tmpfs of its own, the grader's and readable by the compiler's
+     * user, where the sandbox can mount one (close it once the compiler has ended); else the folder.
+     */
+    OutputDisk compilerDisk(Path folder) throws IOException {
+        return host.ownDisks() ? OutputDisk.mountReadable(folder, uid) : OutputDisk.onHostDisk(folder);
     }
 
     /** Whether this grader can mount each run a tmpfs of its own: it mounts one, in a new temporary folder. */

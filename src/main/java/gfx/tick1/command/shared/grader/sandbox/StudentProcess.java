@@ -13,9 +13,7 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -169,7 +167,7 @@ public final class StudentProcess implements AutoCloseable {
     /**
      * Compiles with the warm compiler, then copies the class files into {@code output}/classes, a
      * folder of the grader's: the JVMs that run the code are given that copy, read-only, never
-     * the folder the compiler wrote.
+     * the folder the compiler wrote. Only a compile within the output folder's caps is copied.
      */
     private Compiled compileWarm(Path sources, Path output, String sphereName, String rendererName,
             Duration timeLimit) throws IOException, InterruptedException {
@@ -181,23 +179,15 @@ public final class StudentProcess implements AutoCloseable {
                 }
             }
             Run run = compiler.compile(request, sphereName, rendererName, timeLimit);
-            // Out of the compiler's reach before a byte of it is read: it may still be running, and
-            // nothing it could write (a link, a FIFO in place of a file) may change as it is read.
-            Path written = output.resolve("from-compiler");
-            try {
-                Files.move(request.resolve(StudentHarness.OUTPUT_FOLDER), written, StandardCopyOption.ATOMIC_MOVE);
-            } catch (NoSuchFileException e) {
-                // Nothing written: read as such below.
-            }
+            Path written = compiler.takeOutput(request);
             Compiled compiled = compiled(run, written, timeLimit);
             if (compiled.compiled()) {
                 copyClasses(written.resolve(StudentHarness.CLASSES_FOLDER),
                         output.resolve(StudentHarness.CLASSES_FOLDER));
             }
-            WorkFolder.delete(written);
             return compiled;
         } finally {
-            WorkFolder.delete(request);   // what is left of it is deleted with the grade's work folder
+            compiler.done(request);   // what is left of it is deleted with the grade's work folder
         }
     }
 
