@@ -6,9 +6,8 @@ import java.nio.file.Path;
 import java.util.stream.Stream;
 
 /**
- * Looks for the organiser's --scenes folder where the sandbox shows the host's files (all of
- * /usr), and throws with every scene it can read there, so that the public scene's report quotes
- * the hidden ones.
+ * Looks for the organiser's --scenes folder in /usr, and throws with every scene it can read
+ * there, so that the public scene's report quotes the hidden ones.
  */
 public class Renderer {
 

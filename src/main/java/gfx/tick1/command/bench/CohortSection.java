@@ -84,12 +84,15 @@ final class CohortSection {
                 | per submission: the control groups (%d runs, each making, joining, removing one) | %.4f |
                 | per submission: the output folders' file systems (%d runs, each mounting, counting, \
                 unmounting one) | %.4f |
+                | per submission: the JDK's files and libraries, each bound on its own and read into memory before \
+                the run (%d runs) | %.4f |
 
                 The phases are the grader's view of one submission while the other jobs run beside it, so they \
                 add up to more than the wall time per submission.
                 """, m.submissions(), m.jobs(), WIDTH, HEIGHT, m.passed(), m.submissions(), m.wallPerSubmission(),
                 m.wallSeconds(), m.medians().compile(), m.medians().render(), m.medians().compare(),
                 m.medians().total(), CohortTiming.RUNS_PER_SUBMISSION, m.perSubmission().cgroup(),
-                CohortTiming.RUNS_PER_SUBMISSION, m.perSubmission().outputDisk());
+                CohortTiming.RUNS_PER_SUBMISSION, m.perSubmission().outputDisk(),
+                CohortTiming.RUNS_PER_SUBMISSION, m.perSubmission().systemFiles());
     }
 }

@@ -9,6 +9,7 @@ import static org.assertj.core.api.Assumptions.assumeThat;
 import gfx.tick1.Tick1;
 import gfx.tick1.command.shared.kit.StarterKit;
 import java.io.ByteArrayOutputStream;
+import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
@@ -21,8 +22,11 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
+import java.util.HexFormat;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
@@ -114,6 +118,15 @@ class GradeAttackTest {
         return gradeFiles(sphere, renderer, options);
     }
 
+    /**
+     * The host's programs the attacks start, which the sandbox shows them (a real grade shows none
+     * but java): so that the limits are tested against what the programs can do that Java cannot.
+     */
+    private static final List<String> ATTACK_TOOLS = List.of("/bin/sh", "/usr/bin/setsid", "/usr/bin/sleep",
+            "/usr/bin/head", "/usr/bin/tail", "/usr/bin/mkfifo", "/usr/bin/touch", "/usr/bin/chmod",
+            "/usr/bin/fallocate", "/usr/bin/mkdir", "/usr/bin/cat", "/usr/bin/ln", "/usr/bin/dd", "/usr/bin/rm",
+            "/usr/bin/seq");
+
     /** An attack's file of the lines the correct solution's render runs first, in place of its own files. */
     private static final String RENDER_FIRST = "render-first.java.txt";
     /** The line of the correct solution's Renderer.java that those lines follow. */
@@ -130,6 +143,7 @@ class GradeAttackTest {
         command.addAll(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporaryFolder,
+                "-Dtick1.grade.sandboxAlsoShows=" + String.join(File.pathSeparator, ATTACK_TOOLS),
                 "-cp", classPath,
                 Tick1.class.getName(), "grade", "--sphere", sphere.toString(), "--renderer", renderer.toString()));
         if (!List.of(options).contains("--report")) {
@@ -402,8 +416,8 @@ class GradeAttackTest {
     }
 
     /**
-     * The organiser's scenes in a folder under /usr, all of which the sandbox shows read-only: the
-     * code looks for them there, and would quote them in the public scene's report.
+     * The organiser's scenes in a folder under /usr, where the code looks for them, and would
+     * quote them in the public scene's report: the runs see no folder of the host's.
      */
     @Test
     void organisersScenesUnderUsrAreHiddenFromTheCode() throws Exception {
@@ -414,8 +428,9 @@ class GradeAttackTest {
                     .replace("<scene>", "<scene><!-- " + secret + " -->"));
             Grade grade = grade("read-the-organisers-scenes", "--scenes", scenes.toString());
             assertFailedAndHarmedNothing(grade);
-            assertThat(grade.output()).as("what the code found in the folder: nothing")
-                    .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: read: \n");
+            assertThat(grade.output()).as("what the code found in the folder: no folder at all")
+                    .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: read: "
+                            + "java.nio.file.NoSuchFileException: " + ORGANISERS_SCENES + "\n");
         } finally {
             Files.deleteIfExists(scenes.resolve("secret-scene.xml"));
             Files.deleteIfExists(scenes);
@@ -453,11 +468,11 @@ class GradeAttackTest {
     /**
      * A scene of the organiser's --scenes folder (not in /usr) with another name in /usr, a hard
      * link (as a copy, a backup or a version-control object of it would be), where the attack of
-     * {@link #aSceneLinkedToAFileDirectlyInUsrIsHiddenFromTheCode} looks: hiding by path hides the
-     * scene's own path only, and the code would read the other name, so such a scene is refused.
+     * {@link #aSceneLinkedToAFileDirectlyInUsrIsHiddenFromTheCode} looks: the runs see no file of
+     * /usr but the JDK's and its libraries, so the other name is not there either.
      */
     @Test
-    void aSceneWithAHardLinkInUsrIsRefused() throws Exception {
+    void aSceneWithAHardLinkInUsrIsHiddenFromTheCode() throws Exception {
         assumeThat(Files.isWritable(Path.of("/usr"))).as("a file can be made in /usr (as root)").isTrue();
         Path scenes = Files.createDirectory(dir.resolve("scenes"));
         Path scene = Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml",
@@ -469,13 +484,59 @@ class GradeAttackTest {
                 assumeThat(e).as("/usr and the test's folder are one file system").isNull();
             }
             Grade grade = grade("read-a-scene-in-usr", "--scenes", scenes.toString());
-            assertThat(grade.status()).as("the grade, refused: " + grade.output()).isEqualTo(GradeCommand.EXIT_USAGE);
-            assertThat(grade.output()).as("why, in one line").contains("other name", "copy it to a file of its own")
-                    .doesNotContain(secret, "<scene>", "point-light");
+            assertFailedAndHarmedNothing(grade);
+            assertThat(grade.output()).as("what the code read there: no scene")
+                    .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: read: [")
+                    .doesNotContain("<scene>", "point-light");
         } finally {
             Files.deleteIfExists(HIDDEN_SCENE_IN_USR);
         }
     }
+
+    /**
+     * Two grades, one after the other (two submissions of one student's, or two students' of a
+     * cohort): in the first, the hidden scene's run reads pages of a file of the JDK that no JVM
+     * reads, one for each 1 bit of the scene; in the second, tick1.xml's run times a read of each
+     * page (one in memory is quick) and quotes what it read in the report. The host's page cache,
+     * which every run shares, would carry the hidden scene from one grade to the next, but the
+     * grader reads every file a run sees before the run starts.
+     */
+    @Test
+    void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheHostsPageCache() throws Exception {
+        Path scenes = Files.createDirectory(dir.resolve("scenes"));
+        Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml", null)
+                .replace("<scene>", "<scene><!-- " + secret + " -->"));
+        // Out of memory, so that only the first grade's reads would bring pages of it back.
+        Process drop = new ProcessBuilder("/bin/dd", "if=" + PAGE_CACHE_FILE, "iflag=nocache", "count=0")
+                .redirectErrorStream(true).start();
+        assumeThat(drop.waitFor()).as("dd can drop the file from the page cache").isZero();
+
+        Grade writing = grade("page-cache-write", "--scenes", scenes.toString());
+        Grade reading = grade("page-cache-read");
+
+        assertFailedAndHarmedNothing(writing);
+        assertFailedAndHarmedNothing(reading);
+        Matcher read = Pattern.compile("read: \\[([0-9a-f]{60})]")
+                .matcher(reading.output());
+        assertThat(read.find()).as("the second grade's code timed the pages: " + reading.output()).isTrue();
+        assertThat(bitsInCommon(HexFormat.of().parseHex(read.group(1)), secret.getBytes(StandardCharsets.UTF_8)))
+                .as("of the hidden scene's secret's " + 8 * secret.length() + " bits, those the code read right "
+                        + "(about half would be chance)")
+                .isLessThan(7 * secret.length());
+    }
+
+    /** How many of the bits of {@code expected} are the same in {@code read}. */
+    private static int bitsInCommon(byte[] read, byte[] expected) {
+        int same = 0;
+        for (int i = 0; i < expected.length && i < read.length; i++) {
+            same += 8 - Integer.bitCount((read[i] ^ expected[i]) & 0xFF);
+        }
+        return same;
+    }
+
+    /** The file whose pages {@link #aHiddenSceneCannotBeCarriedToALaterGradeThroughTheHostsPageCache} uses. */
+    private static final Path PAGE_CACHE_FILE = Path.of(System.getProperty("java.home"), "lib", "server",
+            "classes_nocoops.jsa");
 
     @Test
     void theSandboxsFileSystemsInMemoryAreSizedOrReadOnly() throws Exception {

@@ -208,13 +208,15 @@ class GradeCommandTest {
     }
 
     @Test
-    void aScenesFolderThatHoldsWhatTheSandboxShowsIsRefusedInOneLine() throws IOException {
+    void aScenesFolderThatHoldsWhatTheRunsNeedIsRefusedInOneLine() throws IOException {
         CliRun run = grade(StudentSolution.correct(), "--scenes", "/usr");
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
-        assertThat(run.err()).as("what grade said").isEqualTo("tick1 grade: /usr: the sandbox shows the student's "
-                + "code what is in /usr, so it cannot hide this folder's scenes from it: give the scenes a folder of "
-                + "their own" + System.lineSeparator());
+        assertThat(run.err()).as("what grade said").isEqualTo("tick1 grade: /usr: the runs need "
+                + Path.of(System.getProperty("java.home")).toRealPath() + ", so tick1 cannot hide this folder's "
+                + "scenes from the student's code without stopping every run: give the scenes a folder of their own"
+                + System.lineSeparator());
     }
+
     @Test
     void aFileInAnotherPackageFailsWithOneLineNamingThePackageTheTesterNeeds() throws IOException {
         CliRun run = grade(StudentSolution.correct().editSphere("package gfx.tick1;", "package tick1;"));

@@ -46,7 +46,7 @@ public final class CohortTiming {
      * What a submission's sandbox runs add beyond the grade's own work, in seconds: their control
      * groups, and their output folders' own file systems.
      */
-    public record Overheads(double cgroup, double outputDisk) {
+    public record Overheads(double cgroup, double outputDisk, double systemFiles) {
     }
 
     /** Why the cohort could not be timed (no sandbox here). */
@@ -110,7 +110,8 @@ public final class CohortTiming {
                             median(phases.stream().mapToLong(SubmissionGrader.Phases::compareNanos).toArray()),
                             median(done.results().stream().mapToLong(r -> r.time().toNanos()).toArray())),
                     new Overheads(RUNS_PER_SUBMISSION * sandbox.cgroupSeconds(CGROUP_PROBES),
-                            RUNS_PER_SUBMISSION * sandbox.outputDiskSeconds(CGROUP_PROBES)));
+                            RUNS_PER_SUBMISSION * sandbox.outputDiskSeconds(CGROUP_PROBES),
+                            RUNS_PER_SUBMISSION * sandbox.systemFilesSeconds(CGROUP_PROBES)));
         } finally {
             WorkFolder.delete(work);
             WorkFolder.delete(report);

@@ -14,8 +14,9 @@ import java.util.concurrent.TimeUnit;
  * <ul>
  *   <li>runs as an unprivileged user of its own when {@code grade} runs as root (through
  *       {@code setpriv}), with no capabilities and no way to gain any;
- *   <li>sees a read-only system ({@code /usr} and the JDK's configuration), the folders
- *       {@code grade} binds in (read-only but for its output folder, which is a file system of
+ *   <li>sees of the host's files only the JDK and the libraries it loads ({@link SystemFiles}),
+ *       read-only, each in memory when the run starts, the folders {@code grade} binds in
+ *       (read-only but for its output folder, which is a file system of
  *       its own when {@code grade} runs as root: {@link OutputDisk}) and nothing else: no home
  *       folder, no {@code /tmp}, no other process, none of the organiser's scenes but its own;
  *   <li>has no network (a network namespace with nothing in it, not even the host's loopback),
@@ -33,6 +34,12 @@ public final class Sandbox {
     /** The package that provides {@code bwrap}, for the message when it is missing. */
     public static final String PACKAGE = "bubblewrap";
 
+    /**
+     * Host programs the sandbox shows besides java, with the libraries they load: none in a grade.
+     * The attack tests name those their attacks start (sh, fallocate, mkfifo, ...), so that what
+     * holds the runs to their limits is tested against them too.
+     */
+    private static final String ALSO_SHOWN_PROPERTY = "tick1.grade.sandboxAlsoShows";
     /** Debian's bwrap; the system property tick1.grade.bwrap names another (the tests name a missing one). */
     private static final String BWRAP_PROPERTY = "tick1.grade.bwrap";
     /** "host" keeps each run's output folder on the host's disk, as where no tmpfs can be mounted (for the tests). */
@@ -41,16 +48,30 @@ public final class Sandbox {
     private static final Path PRLIMIT = Path.of("/usr/bin/prlimit");
     private static final Path TASKSET = Path.of("/usr/bin/taskset");
     private static final Path SH = Path.of("/bin/sh");
+    private static final Path TRUE = Path.of("/usr/bin/true");
     /** The descriptor bwrap reads the {@link SpaceFilter} from. */
     private static final int FILTER_FD = 3;
-    /** The JDK's configuration files, which java.home links to on Debian. */
-    private static final Path JAVA_CONFIG = Path.of("/etc/java-17-openjdk");
 
     /** The most files the student's process may write, each at most this big (RLIMIT_FSIZE). */
     static final long FILE_SIZE_LIMIT = 64L << 20;
     private static final int OPEN_FILES_LIMIT = 256;
     /** Threads count as processes: the JVM needs about 20; the student's code one. */
     static final int PROCESSES_LIMIT = 96;
+
+    /**
+     * The files of /proc that count what the whole machine did (CPU time, processes started,
+     * page faults, interrupts, pressure) or hold what it has (memory, files, dentries), those this
+     * machine has: none can be read in the runs' /proc (/dev/null is bound over each, in a mount
+     * without devices). A run could move these counters by
+     * amounts it chooses and a later run read them, so carrying a hidden scene from one grade to
+     * the next; the JVM reads two of them (stat, meminfo) and starts without them.
+     */
+    private static final List<Path> MACHINE_COUNTERS = java.util.stream.Stream.of("stat", "vmstat", "meminfo",
+            "interrupts", "softirqs", "diskstats", "schedstat", "loadavg", "uptime", "zoneinfo", "buddyinfo",
+            "pagetypeinfo", "vmallocinfo", "slabinfo", "key-users", "keys", "locks", "swaps", "pressure/cpu",
+            "pressure/io", "pressure/memory", "pressure/irq", "sys/fs/dentry-state", "sys/fs/inode-nr",
+            "sys/fs/inode-state", "sys/fs/file-nr", "sys/kernel/random/entropy_avail")
+            .map(name -> Path.of("/proc", name)).filter(Files::exists).toList();
 
     /** The first of the user ids the student's code runs as when the grader is root. */
     static final int FIRST_UID = 1_900_000_000;
@@ -66,8 +87,6 @@ public final class Sandbox {
 
     /** The size of the sandbox's shared memory, /dev/shm (its / and /dev are read-only). */
     static final long SHM_BYTES = 64L << 20;
-    /** The size of each empty folder that hides tick1's own code under /usr. */
-    private static final long HIDING_BYTES = 64L << 10;
 
     /** What this machine gives the sandbox: its bwrap, control groups, seccomp filter and output disks. */
     private final Host host;
@@ -77,41 +96,31 @@ public final class Sandbox {
     private final int uid;
     /** Which of the grades this program runs at once this sandbox is for: 0 for a single grade. */
     private final int job;
-    /** Folders of the grader's to hide wherever the sandbox would show them: the organiser's scenes. */
-    private final List<Path> secrets;
-
-    private Sandbox(Host host, int uid, int job, List<Path> secrets) {
+    private Sandbox(Host host, int uid, int job) {
         this.host = host;
         this.confined = host.bwrap() != null;
         this.uid = uid;
         this.job = job;
-        this.secrets = List.copyOf(secrets);
     }
 
     /**
      * What this machine gives every sandbox made here: the bwrap (null for none), where control
      * groups are made (or null), the seccomp filter's file (or null), and whether each run's output
-     * folder can be a file system of its own.
+     * folder can be a file system of its own, and the host's files the runs see (null for none).
      */
-    private record Host(Path bwrap, Cgroup.Place cgroups, Path spaceFilter, boolean ownDisks) {
+    private record Host(Path bwrap, Cgroup.Place cgroups, Path spaceFilter, boolean ownDisks, SystemFiles system) {
     }
 
     /**
-     * The same sandbox, which also hides {@code paths} (the organiser's scenes and their folder),
-     * should their real paths lie in what it shows (/usr, the JDK's folders): a folder under an
-     * empty folder, a file under an empty file. The runs get their scenes only through the folder
-     * bound for them, never through a path of the grader's.
+     * The same sandbox, after checking that it hides {@code paths} (the organiser's scenes and
+     * their folder) from the runs, as it hides every file of the host's but the JDK and the
+     * libraries it loads: the runs get their scenes only through the folder bound for them.
      *
-     * @throws CannotHide when one is a folder that holds what the sandbox shows or the runs need,
-     *     or lies in the JDK the runs use, or a file with another name (a hard link)
+     * @throws CannotHide when one is, holds or lies in what the runs see (the JDK, a library)
      */
     public Sandbox hiding(List<Path> paths) throws CannotHide {
-        List<Path> all = new ArrayList<>(secrets);
-        all.addAll(paths);
-        secretsShown(shown(), all);
-        noneNeeded(all);
-        noOtherNames(all);
-        return new Sandbox(host, uid, job, all);
+        refuseWhatTheRunsSee(paths, host.system(), realPath(javaHome()) == null ? javaHome() : realPath(javaHome()));
+        return this;
     }
 
     /**
@@ -123,7 +132,7 @@ public final class Sandbox {
         if (job < 0 || job >= MOST_JOBS) {
             throw new IllegalArgumentException("job " + job + ": must be from 0 to " + (MOST_JOBS - 1));
         }
-        return new Sandbox(host, uid < 0 ? uid : uid + job * JOB_UID_STEP, job, secrets);
+        return new Sandbox(host, uid < 0 ? uid : uid + job * JOB_UID_STEP, job);
     }
 
     /**
@@ -132,12 +141,12 @@ public final class Sandbox {
      * process limit nor can signal each other. Only for a sandbox {@link #forJob} made.
      */
     public Sandbox forCompiler() {
-        return new Sandbox(host, uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job, secrets);
+        return new Sandbox(host, uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job);
     }
 
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
     public static Sandbox unconfined() {
-        return new Sandbox(new Host(null, null, null, false), -1, 0, List.of());
+        return new Sandbox(new Host(null, null, null, false, null), -1, 0);
     }
 
     /**
@@ -165,9 +174,19 @@ public final class Sandbox {
         } catch (IOException e) {
             throw new Unavailable("cannot write the sandbox's seccomp filter (" + e.getMessage() + ")");
         }
-        Sandbox sandbox = new Sandbox(new Host(bwrap, Cgroup.find(), spaceFilter, root
-                && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks()),
-                root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0, List.of());
+        SystemFiles system;
+        try {
+            system = SystemFiles.of(javaHome(), java.util.Arrays.stream(
+                    System.getProperty(ALSO_SHOWN_PROPERTY, "").split(java.io.File.pathSeparator))
+                    .filter(name -> !name.isEmpty()).map(Path::of).toList());
+        } catch (IOException e) {
+            throw new Unavailable("cannot list the files of the JDK and the libraries java loads (" + e.getMessage()
+                    + ")");
+        }
+        Host host = new Host(bwrap, Cgroup.find(), spaceFilter, root
+                && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks(), system);
+        Sandbox sandbox = new Sandbox(host,
+                root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0);
         sandbox.selfTest();
         return sandbox;
     }
@@ -285,6 +304,29 @@ public final class Sandbox {
     }
 
     /**
+     * Reads into memory every file of the host's that a run sees ({@link SystemFiles#warm}) and
+     * every file of the folders {@code binds} shows it read-only, before the run starts: whatever
+     * pages of them an earlier run read or dropped, all are in memory when this one times them.
+     */
+    void warm(List<Bind> binds) {
+        if (!confined) {
+            return;
+        }
+        host.system().warm();
+        java.nio.ByteBuffer buffer = java.nio.ByteBuffer.allocateDirect(1 << 20);
+        for (Bind bind : binds) {
+            if (!bind.writable()) {
+                try (var files = Files.walk(bind.outside())) {
+                    files.filter(file -> Files.isRegularFile(file, java.nio.file.LinkOption.NOFOLLOW_LINKS))
+                            .forEach(file -> SystemFiles.readWhole(file, buffer));
+                } catch (IOException | java.io.UncheckedIOException e) {
+                    // A folder the grader made for this run: what cannot be listed, the run cannot read either.
+                }
+            }
+        }
+    }
+
+    /**
      * Makes {@code folder} readable (or, if {@code writable}, owned) by the user the student's code
      * runs as, and no one else. Does nothing when that user is the grader.
      */
@@ -309,7 +351,7 @@ public final class Sandbox {
      * {@code oneCore}, on one processor core only.
      */
     List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB, boolean oneCore,
-            Cgroup cgroup) throws CannotHide {
+            Cgroup cgroup) {
         if (!confined) {
             return command;
         }
@@ -319,45 +361,19 @@ public final class Sandbox {
                 "--unshare-all", "--unshare-user", "--disable-userns",
                 "--die-with-parent", "--new-session", "--cap-drop", "ALL",
                 "--clearenv", "--setenv", "PATH", "/usr/bin", "--setenv", "LANG", "C.UTF-8",
-                "--setenv", "MALLOC_ARENA_MAX", "2",
-                "--ro-bind", "/usr", "/usr",
-                "--symlink", "usr/bin", "/bin", "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64", "/lib64"));
+                "--setenv", "MALLOC_ARENA_MAX", "2"));
         if (host.spaceFilter() != null) {
             wrapped.addAll(List.of("--seccomp", Integer.toString(FILTER_FD)));
         }
-        if (Files.isDirectory(JAVA_CONFIG)) {
-            wrapped.addAll(List.of("--ro-bind", JAVA_CONFIG.toString(), JAVA_CONFIG.toString()));
-        }
-        Path javaHome = javaHome();
-        if (!javaHome.startsWith("/usr")) {
-            wrapped.addAll(List.of("--ro-bind", javaHome.toString(), javaHome.toString()));
-        }
-        // tick1 itself and the grader's temporary folder (every work folder, with the hidden scenes each
-        // job copies) may lie in what is shown: hide them, so that there is no renderer to copy and no
-        // scene to read but those bound in for the run.
-        List<Path> hide = new ArrayList<>(ownCode());
-        hide.add(Path.of(System.getProperty("java.io.tmpdir")));
-        List<Path> hidden = new ArrayList<>();
-        for (Path system : shown()) {
-            for (Path folder : foldersUnder(system, hide)) {
-                wrapped.addAll(List.of("--size", Long.toString(HIDING_BYTES), "--tmpfs", folder.toString()));
-                hidden.add(folder);
-            }
-        }
-        // The organiser's scenes, each file and folder by its real path, wherever in what is shown.
-        for (Secret secret : secretsShown(shown(), secrets)) {
-            if (hidden.stream().anyMatch(secret.path()::startsWith)) {
-                continue;
-            }
-            if (secret.folder()) {
-                wrapped.addAll(List.of("--size", Long.toString(HIDING_BYTES), "--tmpfs", secret.path().toString()));
-                hidden.add(secret.path());
-            } else {
-                wrapped.addAll(List.of("--ro-bind", "/dev/null", secret.path().toString()));
-            }
-        }
+        // Of the host's files, the JDK and the libraries it loads, each on its own: no folder of the host's,
+        // so neither tick1, nor the grader's temporary folder, nor any scene of the organiser's.
+        wrapped.addAll(host.system().bwrapArguments());
         // Every tmpfs has a size, and / and /dev (bwrap's own, of half the host's memory) are read-only.
-        wrapped.addAll(List.of("--proc", "/proc", "--dev", "/dev",
+        wrapped.addAll(List.of("--proc", "/proc"));
+        for (Path counters : MACHINE_COUNTERS) {
+            wrapped.addAll(List.of("--ro-bind", "/dev/null", counters.toString()));
+        }
+        wrapped.addAll(List.of("--dev", "/dev",
                 "--size", Long.toString(SHM_BYTES), "--perms", "1777", "--tmpfs", "/dev/shm",
                 "--remount-ro", "/dev"));
         for (Bind bind : binds) {
@@ -417,56 +433,12 @@ public final class Sandbox {
         return command;
     }
 
-    /** Where this program's own classes and libraries are: its class path and its own jar or folder. */
-    private static List<Path> ownCode() {
-        List<Path> code = new ArrayList<>();
-        for (String entry : System.getProperty("java.class.path", "").split(java.io.File.pathSeparator)) {
-            if (!entry.isEmpty()) {
-                code.add(Path.of(entry));
-            }
-        }
-        try {
-            code.add(Path.of(Sandbox.class.getProtectionDomain().getCodeSource().getLocation().toURI()));
-        } catch (java.net.URISyntaxException | RuntimeException e) {
-            // The class path above is all there is to hide.
-        }
-        return code;
-    }
-
-    /** The JDK this program runs on, which the sandbox shows for the harness's JVM. */
+    /** The JDK this program runs on, whose java the runs start. */
     private static Path javaHome() {
         return Path.of(System.getProperty("java.home")).toAbsolutePath();
     }
 
-    /** The host's folders the sandbox shows, read-only: /usr, the JDK's configuration, the JDK if elsewhere. */
-    private static List<Path> shown() {
-        List<Path> shown = new ArrayList<>(List.of(Path.of("/usr")));
-        if (Files.isDirectory(JAVA_CONFIG)) {
-            shown.add(JAVA_CONFIG);
-        }
-        if (!javaHome().startsWith("/usr")) {
-            shown.add(javaHome());
-        }
-        return shown;
-    }
-
-    /**
-     * What the runs need from the host besides what {@link #shown()} names: the JDK (by its path and
-     * its real path), the programs and libraries (/usr/bin, /usr/lib, ... and the links to them
-     * that lead there), and /etc.
-     */
-    private static List<Path> needed() {
-        List<Path> needed = new ArrayList<>(shown());
-        needed.add(javaHome());
-        for (String system : List.of("/usr/bin", "/usr/sbin", "/usr/lib", "/usr/lib32", "/usr/lib64", "/usr/libx32",
-                "/usr/libexec", "/usr/share", "/bin", "/lib", "/lib64", "/etc")) {
-            needed.add(Path.of(system));
-        }
-        needed.addAll(needed.stream().map(Sandbox::realPath).filter(java.util.Objects::nonNull).toList());
-        return needed;
-    }
-
-    /** The real path of {@code path}; null when it cannot be read (not there: nothing to hide or need). */
+    /** The real path of {@code path}; null when it cannot be read (not there: nothing to hide). */
     private static Path realPath(Path path) {
         try {
             return path.toRealPath();
@@ -476,93 +448,31 @@ public final class Sandbox {
     }
 
     /**
-     * Refuses a secret whose hiding would take from the runs what they need: a folder that holds
-     * one of {@link #needed()}, a folder inside one of the system's folders the runs load from
-     * (its libraries, say, which an empty folder would replace), or anything in the JDK the runs use
-     * (hidden, the runs have no java).
+     * Refuses a secret the runs would see: one in the JDK {@code jdk} (its real path) or holding
+     * it, or one that is, or is a folder that holds, one of {@code system}'s files or links (none
+     * for a sandbox that shows the host's files as they are). Hiding it would take from the runs
+     * what they need. A secret that cannot be read is not there to hide.
      */
-    private static void noneNeeded(List<Path> secrets) throws CannotHide {
-        List<Path> needed = needed();
-        List<Path> shown = shown();
-        List<Path> systemFolders = needed.stream().filter(path -> !shown.contains(path)).toList();
-        Path jdk = realPath(javaHome()) == null ? javaHome() : realPath(javaHome());
-        for (Path secret : secrets) {
-            Path real = realPath(secret);
-            if (real == null) {
-                continue;
-            }
-            Path refused = real.startsWith(jdk) ? jdk : null;
-            for (Path system : needed) {
-                if (refused == null && (system.startsWith(real)
-                        || Files.isDirectory(real) && systemFolders.contains(system) && real.startsWith(system))) {
-                    refused = system;
-                }
-            }
-            if (refused != null) {
-                throw new CannotHide(secret + ": the runs need " + refused
-                        + ", so tick1 cannot hide this folder's scenes from the student's code without "
-                        + "stopping every run: give the scenes a folder of their own");
-            }
+    static void refuseWhatTheRunsSee(List<Path> secrets, SystemFiles system, Path jdk) throws CannotHide {
+        List<Path> seen = new ArrayList<>(List.of(jdk));
+        if (system != null) {
+            seen.addAll(system.files());
+            seen.addAll(system.pathsSeen());
         }
-    }
-
-    /**
-     * Refuses a secret file with more than one name (a hard link): the sandbox hides by path, and
-     * the other name, wherever it is, would still show the scene to the student's code.
-     */
-    private static void noOtherNames(List<Path> secrets) throws CannotHide {
-        for (Path secret : secrets) {
-            Path real = realPath(secret);
-            if (real == null || !Files.isRegularFile(real)) {
-                continue;
-            }
-            int names;
-            try {
-                names = (Integer) Files.getAttribute(real, "unix:nlink");
-            } catch (IOException | UnsupportedOperationException e) {
-                throw new CannotHide(secret + ": tick1 cannot tell whether this scene has another name it cannot hide ("
-                        + e.getMessage() + "): copy it to a file of its own");
-            }
-            if (names > 1) {
-                throw new CannotHide(secret + ": this scene has " + (names - 1) + " other name(s) (hard links) that "
-                        + "tick1 cannot hide from the student's code: copy it to a file of its own");
-            }
-        }
-    }
-
-    /** One of the organiser's scenes, or their folder, by its real path: hidden under an empty folder or file. */
-    record Secret(Path path, boolean folder) {
-    }
-
-    /**
-     * The real paths of {@code secrets} (files and folders, or links to them) that lie in one of
-     * {@code shown}, the folders the sandbox shows, the folders before the files. A secret that
-     * cannot be read is not there to hide.
-     *
-     * @throws CannotHide for a folder that is one of {@code shown} or holds one: hiding it would hide
-     *     what the runs need
-     */
-    static List<Secret> secretsShown(List<Path> shown, List<Path> secrets) throws CannotHide {
-        List<Secret> folders = new ArrayList<>(), files = new ArrayList<>();
         for (Path secret : secrets) {
             Path real = realPath(secret);
             if (real == null) {
                 continue;
             }
             boolean folder = Files.isDirectory(real);
-            for (Path system : shown) {
-                if (folder && system.startsWith(real)) {
-                    throw new CannotHide(secret + ": the sandbox shows the student's code what is in " + system
-                            + ", so it cannot hide this folder's scenes from it: give the scenes a folder of "
-                            + "their own");
-                }
-            }
-            if (shown.stream().anyMatch(real::startsWith)) {
-                (folder ? folders : files).add(new Secret(real, folder));
+            Path needed = real.startsWith(jdk) ? jdk
+                    : seen.stream().filter(path -> path.startsWith(real)).findFirst().orElse(null);
+            if (needed != null) {
+                throw new CannotHide(secret + ": the runs need " + needed + ", so tick1 cannot hide "
+                        + (folder ? "this folder's scenes" : "this scene") + " from the student's code without "
+                        + "stopping every run: give the scenes a folder of their own");
             }
         }
-        folders.addAll(files);
-        return folders;
     }
 
     /** Why the sandbox cannot hide the organiser's scenes: in one line for the organiser. */
@@ -572,27 +482,6 @@ public final class Sandbox {
         CannotHide(String reason) {
             super(reason);
         }
-    }
-
-    /**
-     * The folders holding {@code code} (files such as jars: the folder they are in; folders:
-     * themselves) that lie inside {@code system}, a part of the file system the sandbox shows.
-     */
-    static List<Path> foldersUnder(Path system, List<Path> code) {
-        List<Path> folders = new ArrayList<>();
-        for (Path entry : code) {
-            Path real;
-            try {
-                real = entry.toRealPath();
-            } catch (IOException e) {
-                continue;
-            }
-            Path folder = Files.isDirectory(real) ? real : real.getParent();
-            if (folder != null && folder.startsWith(system) && !folder.equals(system) && !folders.contains(folder)) {
-                folders.add(folder);
-            }
-        }
-        return folders;
     }
 
     /**
@@ -685,6 +574,35 @@ public final class Sandbox {
         }
     }
 
+    /**
+     * What showing a run the host's files one by one ({@link SystemFiles}) adds to it, in seconds:
+     * reading them into memory before it ({@link #warm}), and starting bwrap with each bound on its
+     * own rather than all of /usr bound at once (each start runs {@code true}, without limits); the
+     * medians of {@code runs} times each. NaN without a sandbox.
+     */
+    public double systemFilesSeconds(int runs) throws IOException, InterruptedException {
+        if (!confined) {
+            return Double.NaN;
+        }
+        List<String> start = List.of(host.bwrap().toString(), "--unshare-all", "--die-with-parent", "--proc", "/proc",
+                "--dev", "/dev");
+        List<String> eachFile = new ArrayList<>(start);
+        eachFile.addAll(host.system().bwrapArguments());
+        eachFile.addAll(List.of("--ro-bind", TRUE.toString(), TRUE.toString(), "--", TRUE.toString()));
+        List<String> allOfUsr = new ArrayList<>(start);
+        allOfUsr.addAll(List.of("--ro-bind", "/usr", "/usr", "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64",
+                "/lib64", "--", TRUE.toString()));
+        long[] warming = new long[runs], filesStart = new long[runs], usrStart = new long[runs];
+        for (int i = 0; i < runs; i++) {
+            long before = System.nanoTime();
+            warm(List.of());
+            warming[i] = System.nanoTime() - before;
+            filesStart[i] = timeStart(eachFile.toArray(String[]::new));
+            usrStart[i] = timeStart(allOfUsr.toArray(String[]::new));
+        }
+        return (median(warming) + median(filesStart) - median(usrStart)) / 1e9;
+    }
+
     private static long timeStart(String... command) throws IOException, InterruptedException {
         long start = System.nanoTime();
         Process process = processFor(List.of(command)).redirectErrorStream(true)
@@ -701,10 +619,14 @@ public final class Sandbox {
         return sorted.length % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2.0;
     }
 
-    /** Runs {@code true} in the sandbox: bubblewrap may be installed where namespaces are not allowed. */
+    /**
+     * Runs {@code true} in the sandbox, bound in for this run alone (it loads only libraries java
+     * loads too): bubblewrap may be installed where namespaces are not allowed.
+     */
     private void selfTest() throws Unavailable, InterruptedException {
         try {
-            Process process = processFor(wrap(List.of("/usr/bin/true"), List.of(), 5, 256, false, null))
+            Process process = processFor(wrap(List.of(TRUE.toString()),
+                    List.of(new Bind(TRUE, TRUE.toString(), false)), 5, 256, false, null))
                     .redirectErrorStream(true).start();
             process.getOutputStream().close();
             byte[] said = process.getInputStream().readNBytes(4096);

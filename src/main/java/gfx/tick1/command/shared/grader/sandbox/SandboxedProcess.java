@@ -183,6 +183,7 @@ final class SandboxedProcess {
         Cgroup cgroup = sandbox.cgroupFor(new Cgroup.Totals(
                 (long) (heapMegabytes + TOTAL_BEYOND_HEAP_MEGABYTES) << 20, Sandbox.PROCESSES_LIMIT, oneCore));
         try {
+            sandbox.warm(binds);
             Process process = Sandbox.processFor(sandbox.wrap(command, binds, cpuSeconds,
                     heapMegabytes + NON_HEAP_MEGABYTES, oneCore, cgroup)).redirectErrorStream(true).start();
             return new Started(process, cgroup);

@@ -1,0 +1,104 @@
+package gfx.tick1.command.shared.grader.sandbox;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assumptions.assumeThat;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.MappedByteBuffer;
+import java.nio.channels.FileChannel;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The host's files a run sees, how they are made in its root, and that they are in memory when it starts. */
+class SystemFilesTest {
+
+    @TempDir
+    Path dir;
+
+    private static final Path JDK = Path.of(System.getProperty("java.home")).toAbsolutePath();
+
+    @Test
+    void theRunsSeeTheJdksLauncherModulesAndTheLibrariesItLoads() throws Exception {
+        Path jdk = JDK.toRealPath();
+        List<Path> files = SystemFiles.of(JDK, List.of()).files();
+
+        assertThat(files).as("the files the runs see").contains(jdk.resolve("bin/java"), jdk.resolve("lib/modules"),
+                jdk.resolve("lib/server/libjvm.so"));
+        assertThat(files).as("the C library java loads")
+                .anyMatch(file -> file.getFileName().toString().startsWith("libc.so"));
+    }
+
+    @Test
+    void theRunsSeeNoFileOfTheHostsButTheJdksItsLibrariesAndTheLocales() throws Exception {
+        Path jdk = JDK.toRealPath();
+
+        assertThat(SystemFiles.of(JDK, List.of()).files()).as("the files the runs see").allSatisfy(file -> assertThat(
+                file.startsWith(jdk) || file.getFileName().toString().contains(".so")
+                        || file.startsWith("/etc") || file.startsWith("/usr/lib/locale"))
+                .as(file + ": the JDK's, a library, a file of /etc the JDK links to (its configuration) or the "
+                        + "locale's").isTrue());
+    }
+
+    @Test
+    void theRunsSeeNoneOfTick1sOwnCode() throws Exception {
+        List<Path> files = SystemFiles.of(JDK, List.of()).files();
+        for (String entry : System.getProperty("java.class.path").split(File.pathSeparator)) {
+            Path code = Path.of(entry).toAbsolutePath();
+            assertThat(files).as("the files the runs see").noneMatch(file -> file.startsWith(code));
+        }
+    }
+
+    @Test
+    void aLinkToAFolderIsMadeInTheRunsRootAndALinkToAFileIsBoundAsTheFile() throws IOException {
+        Path real = Files.createDirectories(dir.resolve("usr/lib"));
+        Path library = Files.writeString(real.resolve("libz.so.1.2"), "elf");
+        Files.createSymbolicLink(real.resolve("libz.so.1"), Path.of("libz.so.1.2"));
+        Path lib = Files.createSymbolicLink(dir.resolve("lib"), Path.of("usr/lib"));
+
+        SystemFiles system = SystemFiles.following(List.of(lib.resolve("libz.so.1")));
+
+        assertThat(system.files()).as("the file, by its real path").containsExactly(library.toRealPath());
+        Path root = dir.toRealPath();
+        assertThat(system.bwrapArguments()).as("bwrap's arguments").containsExactly(
+                "--dir", root.toString(), "--symlink", "usr/lib", root.resolve("lib").toString(),
+                "--ro-bind", library.toRealPath().toString(), root.resolve("usr/lib/libz.so.1").toString());
+    }
+
+    @Test
+    void aPathThatLeadsNowhereOrToAFolderShowsNothing() throws IOException {
+        Path dangling = Files.createSymbolicLink(dir.resolve("src.zip"), Path.of("missing/src.zip"));
+        Path folder = Files.createDirectories(dir.resolve("lib"));
+
+        SystemFiles system = SystemFiles.following(List.of(dangling, folder, dir.resolve("missing.so")));
+
+        assertThat(system.files()).as("the files shown").isEmpty();
+    }
+
+    @Test
+    void afterWarmingEveryPageOfAFileDroppedFromMemoryIsInMemoryAgain() throws Exception {
+        Path file = dir.resolve("cold.bin");
+        byte[] noise = new byte[4 << 20];
+        new Random(1).nextBytes(noise);
+        Files.write(file, noise);
+        try (FileChannel channel = FileChannel.open(file, java.nio.file.StandardOpenOption.WRITE)) {
+            channel.force(true);
+        }
+        Process drop = new ProcessBuilder("/bin/dd", "if=" + file, "iflag=nocache", "count=0")
+                .redirectErrorStream(true).start();
+        assumeThat(drop.waitFor()).as("dd can drop the file from the page cache").isZero();
+        try (FileChannel channel = FileChannel.open(file)) {
+            // isLoaded asks the kernel (mincore) which pages are in memory, without reading them.
+            MappedByteBuffer pages = channel.map(FileChannel.MapMode.READ_ONLY, 0, noise.length);
+            assumeThat(pages.isLoaded()).as("the file's pages were dropped from memory").isFalse();
+
+            SystemFiles.following(List.of(file)).warm();
+
+            assertThat(pages.isLoaded()).as("every page of the file in memory after warming").isTrue();
+        }
+    }
+}
