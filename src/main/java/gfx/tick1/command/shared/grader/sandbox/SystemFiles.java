@@ -90,8 +90,9 @@ final class SystemFiles {
         Set<Path> wanted = new LinkedHashSet<>(programs);
         JDK_FILES.forEach(file -> wanted.add(javaHome.resolve(file)));
         if (Files.isDirectory(LOCALE)) {
-            try (var entries = Files.list(LOCALE)) {
-                entries.forEach(wanted::add);
+            // Every file, those in its folders too: glibc refuses the locale without LC_MESSAGES/SYS_LC_MESSAGES.
+            try (var entries = Files.walk(LOCALE)) {
+                entries.filter(Files::isRegularFile).forEach(wanted::add);
             }
         }
         List<Path> loaders = wanted.stream()

@@ -34,6 +34,28 @@ class SystemFilesTest {
     }
 
     @Test
+    void theRunsSeeEveryFileOfTheLocaleTheirsIsSetTo() throws Exception {
+        Path locale = Path.of("/usr/lib/locale/C.utf8");
+        assumeThat(Files.isDirectory(locale)).as("the C.UTF-8 locale is in files (glibc before 2.35, Debian)")
+                .isTrue();
+        List<Path> localeFiles;
+        try (var all = Files.walk(locale)) {
+            localeFiles = all.filter(Files::isRegularFile).map(file -> {
+                try {
+                    return file.toRealPath();
+                } catch (IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+            }).toList();
+        }
+
+        // Without one of them (LC_MESSAGES/SYS_LC_MESSAGES, in a folder of its own) the C library
+        // refuses the locale, and Java reads and prints ASCII: every other letter comes out as '?'.
+        assertThat(SystemFiles.of(JDK, List.of()).files()).as("the files the runs see")
+                .containsAll(localeFiles);
+    }
+
+    @Test
     void theRunsSeeNoFileOfTheHostsButTheJdksItsLibrariesAndTheLocales() throws Exception {
         Path jdk = JDK.toRealPath();
 
