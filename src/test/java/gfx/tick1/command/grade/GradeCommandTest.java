@@ -62,6 +62,22 @@ class GradeCommandTest {
     }
 
     @Test
+    void aCorrectSolutionThatEncodesAJpegWithImageIoPasses() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer("    public BufferedImage render(Scene scene) {\n",
+                """
+                    public BufferedImage render(Scene scene) {
+                        try {
+                            javax.imageio.ImageIO.write(new BufferedImage(8, 8, BufferedImage.TYPE_INT_RGB), "jpg",
+                                    new java.io.ByteArrayOutputStream());
+                        } catch (java.io.IOException e) {
+                            throw new java.io.UncheckedIOException(e);
+                        }
+                """));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS");
+    }
+
+    @Test
     void theCorrectSolutionPassesOnEverySceneOfTheProject() throws IOException {
         CliRun run = grade(StudentSolution.correct(), "--scenes", "scenes");
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
