@@ -78,6 +78,23 @@ class GradeCommandTest {
     }
 
     @Test
+    void aCorrectSolutionThatTimesItselfWithTheManagementBeansAndHashesWithACipherPasses() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer("    public BufferedImage render(Scene scene) {\n",
+                """
+                    public BufferedImage render(Scene scene) {
+                        System.out.println(java.lang.management.ManagementFactory.getThreadMXBean()
+                                .getCurrentThreadCpuTime());
+                        try {
+                            javax.crypto.Mac.getInstance("HmacSHA256");
+                        } catch (java.security.GeneralSecurityException e) {
+                            throw new IllegalStateException(e);
+                        }
+                """));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS");
+    }
+
+    @Test
     void theCorrectSolutionPassesOnEverySceneOfTheProject() throws IOException {
         CliRun run = grade(StudentSolution.correct(), "--scenes", "scenes");
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);

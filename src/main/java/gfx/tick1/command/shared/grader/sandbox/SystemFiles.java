@@ -35,19 +35,25 @@ final class SystemFiles {
      * The JDK's files a run of the harness uses, headless: the launcher; the modules, with the
      * class data archives (the second for heaps without compressed pointers); the VM and the
      * native libraries of java.base (sockets' included, which find no network), of ImageIO's
-     * images (awt, mlib_image, lcms, and its JPEG codec, javajpeg) and of the management the
-     * harness reads its CPU time through; the time zones; the helper that starts processes; and
-     * the configuration read at start or by security and logging. The rest of the JDK (the X11
-     * toolkit, sound, fonts, printing, JFR, the debugger's agents, smart cards, ...) a run never
-     * loads, and nothing of it is shown.
+     * images (awt, mlib_image, lcms, and the JPEG codec, javajpeg) and of the management the
+     * harness reads its CPU time through (with the platform's beans, which ManagementFactory
+     * loads); the time zones; the helper that starts processes; and the configuration read at
+     * start or by security (javax.crypto's policy files too) and logging. The rest of the JDK (the
+     * X11 toolkit, sound, fonts, printing, JFR, the debugger's agents, smart cards, ...) a run
+     * never loads, and nothing of it is shown.
      */
     private static final List<String> JDK_FILES = List.of("bin/java", "release", "lib/modules",
             "lib/server/libjvm.so", "lib/server/classes.jsa", "lib/server/classes_nocoops.jsa", "lib/jvm.cfg",
             "lib/libjli.so", "lib/libjava.so", "lib/libjimage.so", "lib/libzip.so", "lib/libnio.so", "lib/libnet.so",
             "lib/libextnet.so",
-            "lib/libverify.so", "lib/libjsvml.so", "lib/libmanagement.so", "lib/libawt.so", "lib/libawt_headless.so",
-            "lib/libmlib_image.so", "lib/liblcms.so", "lib/libjavajpeg.so", "lib/tzdb.dat", "lib/jspawnhelper",
-            "conf/security/java.security", "conf/logging.properties", "conf/net.properties");
+            "lib/libverify.so", "lib/libjsvml.so", "lib/libmanagement.so", "lib/libmanagement_ext.so", "lib/libawt.so",
+            "lib/libawt_headless.so", "lib/libmlib_image.so", "lib/liblcms.so", "lib/libjavajpeg.so", "lib/tzdb.dat",
+            "lib/jspawnhelper", "conf/security/java.security",
+            "conf/security/policy/unlimited/default_US_export.policy",
+            "conf/security/policy/unlimited/default_local.policy",
+            "conf/security/policy/limited/default_US_export.policy",
+            "conf/security/policy/limited/default_local.policy",
+            "conf/security/policy/limited/exempt_local.policy", "conf/logging.properties", "conf/net.properties");
     /** Glibc's files for the runs' locale, C.UTF-8 (built into glibc from 2.35; in these files before). */
     private static final Path LOCALE = Path.of("/usr/lib/locale/C.utf8");
     /** Glibc's ldd, which lists the libraries a program or library loads and where the loader finds them. */
