@@ -75,6 +75,13 @@ public final class Sandbox {
 
     /** The first of the user ids the student's code runs as when the grader is root. */
     static final int FIRST_UID = 1_900_000_000;
+    /**
+     * Chooses each grader's user, far above the ranges of real users and of containers'
+     * subordinate ids: at random, so that two grades at once almost never share one, and so that
+     * the id, which the code can read, tells nothing of the machine (a user id made from the
+     * grader's process id told a later grade how many processes an earlier one had started).
+     */
+    private static final java.security.SecureRandom RUN_USERS = new java.security.SecureRandom();
 
     /** A folder of the grader's, bound into the sandbox at {@code inside}, writable or not. */
     record Bind(Path outside, String inside, boolean writable) {
@@ -166,8 +173,6 @@ public final class Sandbox {
         } catch (IOException | UnsupportedOperationException e) {
             throw new Unavailable("cannot tell which user this is (" + e.getMessage() + ")");
         }
-        // A user of its own for each grade running at the same time (the grader's process id is
-        // unique), far above the ranges of real users and of containers' subordinate ids.
         Path spaceFilter;
         try {
             spaceFilter = SpaceFilter.writeForThisMachine();
@@ -186,7 +191,7 @@ public final class Sandbox {
         Host host = new Host(bwrap, Cgroup.find(), spaceFilter, root
                 && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks(), system);
         Sandbox sandbox = new Sandbox(host,
-                root ? FIRST_UID + (int) (ProcessHandle.current().pid() % JOB_UID_STEP) : -1, 0);
+                root ? FIRST_UID + RUN_USERS.nextInt(JOB_UID_STEP) : -1, 0);
         sandbox.selfTest();
         return sandbox;
     }
@@ -202,6 +207,11 @@ public final class Sandbox {
 
     boolean isConfined() {
         return confined;
+    }
+
+    /** The user the student's code runs as; -1 for the grader's own. */
+    int runUser() {
+        return uid;
     }
 
     /** What this sandbox holds the code to: results graded under other rules are graded again. */

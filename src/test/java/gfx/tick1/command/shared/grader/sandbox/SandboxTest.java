@@ -1,7 +1,9 @@
 package gfx.tick1.command.shared.grader.sandbox;
 
+import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatCode;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.assertj.core.api.Assumptions.assumeThat;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -67,5 +69,18 @@ class SandboxTest {
         assertThatCode(() -> Sandbox.refuseWhatTheRunsSee(List.of(scenes), SystemFiles.following(List.of(library)),
                 jdk.toRealPath()))
                 .as("--scenes " + scenes + ", beside " + library).doesNotThrowAnyException();
+    }
+
+    @Test
+    void theUserTheCodeRunsAsTellsNothingOfTheGradersProcessId() throws Exception {
+        Sandbox first = Sandbox.confined();
+        Sandbox second = Sandbox.confined();
+        assumeThat(first.runUser()).as("the grader is root, so the code runs as a user of its own")
+                .isGreaterThanOrEqualTo(Sandbox.FIRST_UID);
+
+        // Made from this process's id, both would be the same user; the code reads its user id,
+        // and a process id would tell it how many processes the machine started since an earlier grade.
+        assertThat(List.of(first.runUser(), second.runUser())).as("the users of two sandboxes of one grader")
+                .doesNotHaveDuplicates();
     }
 }
