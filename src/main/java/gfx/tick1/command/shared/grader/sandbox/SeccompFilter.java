@@ -30,7 +30,7 @@ import java.util.List;
  * another architecture than the host's (a 32-bit program, or x32's) kills the process: its
  * numbers are not those above. The JVM and javac use none of these calls.
  */
-final class SpaceFilter {
+final class SeccompFilter {
 
     /** Classic BPF as seccomp reads it (linux/filter.h, linux/bpf_common.h). */
     private static final int LOAD_WORD = 0x20, JUMP_EQUAL = 0x15, JUMP_AT_LEAST = 0x35, AND = 0x54, RETURN = 0x06;
@@ -53,12 +53,17 @@ final class SpaceFilter {
     private static final Architecture AARCH64 = new Architecture(0xc00000b7, 29,
             new int[] {47, 5, 6, 7, 425, 426, 427, 463});
 
-    private SpaceFilter() {
+    private SeccompFilter() {
     }
 
     /** The filter for the host's architecture, or null where tick1 has none (it then warns). */
     static byte[] forThisMachine() {
-        return switch (System.getProperty("os.arch", "")) {
+        return forArchitecture(System.getProperty("os.arch", ""));
+    }
+
+    /** The filter for an architecture as Java names it ({@code os.arch}), or null where tick1 has none. */
+    static byte[] forArchitecture(String name) {
+        return switch (name) {
             case "amd64", "x86_64" -> program(X86_64);
             case "aarch64" -> program(AARCH64);
             default -> null;
@@ -69,7 +74,7 @@ final class SpaceFilter {
      * The filter as bwrap reads it: struct sock_filter ({@code u16 code; u8 jt, jf; u32 k}) in the
      * machine's byte order, both of whose architectures are little-endian.
      */
-    static byte[] program(Architecture architecture) {
+    private static byte[] program(Architecture architecture) {
         List<int[]> code = new ArrayList<>();
         int refused = architecture.refused().length;
         // Jumps count instructions from the next one; the last two are ALLOW and the refusal.
