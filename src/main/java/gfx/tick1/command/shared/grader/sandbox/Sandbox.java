@@ -221,13 +221,16 @@ public final class Sandbox {
     }
 
     /**
-     * Null when the sandbox refuses the calls that reserve disk space a size does not show
-     * ({@link SeccompFilter}); else the one line that says it does not, on this machine.
+     * Null when the sandbox refuses the calls that reserve disk space a size does not show and those
+     * that drop pages from the host's page cache ({@link SeccompFilter}); else the one line that says
+     * it does not, on this machine.
      */
-    public String reservationsNotRefused() {
+    public String callsNotRefused() {
         return !confined || host.seccompFilter() != null ? null
                 : "tick1 has no seccomp filter for this machine (" + System.getProperty("os.arch") + "): disk space "
-                        + "the code reserves with fallocate is not counted in its output folder's limit";
+                        + "the code reserves with fallocate is not counted in its output folder's limit, and a run "
+                        + "can drop the JDK's files from the page cache while another run going at the same time "
+                        + "times its reads";
     }
 
     /**

@@ -7,12 +7,14 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
- * The seccomp filter bubblewrap installs on everything the sandbox runs ({@code bwrap --seccomp}):
- * it refuses the system calls that take disk space a file's size does not show, so that the
- * output folder's count of sizes ({@link OutputCount}) bounds what a run holds on the host's disk.
+ * The seccomp filter bubblewrap installs on everything the sandbox runs ({@code bwrap --seccomp}).
+ * It refuses the system calls that take disk space a file's size does not show, so that the
+ * output folder's count of sizes ({@link OutputCount}) bounds what a run holds on the host's disk:
  *
  * <ul>
  *   <li>{@code fallocate(2)}: {@code fallocate --keep-size} reserves any amount with a size of 0;
@@ -22,13 +24,25 @@ import java.util.List;
  *   <li>{@code setxattr}, {@code lsetxattr}, {@code fsetxattr}, {@code setxattrat}: an extended
  *       attribute takes a block of its own;
  *   <li>{@code io_uring_setup}, {@code io_uring_enter}, {@code io_uring_register}: io_uring
- *       runs fallocate without a system call the filter could see.
+ *       runs fallocate (and fadvise, below) without a system call the filter could see.
+ * </ul>
+ *
+ * And it refuses the calls that drop a file's pages from the host's page cache, which every run
+ * shares: the grader reads the files a run sees into memory before it starts, but a run going at
+ * the same time as another could drop pages of the JDK's files while the other times its reads.
+ *
+ * <ul>
+ *   <li>{@code fadvise64} ({@code posix_fadvise}'s {@code POSIX_FADV_DONTNEED}, as
+ *       {@code dd iflag=nocache} gives it);
+ *   <li>{@code madvise} with {@code MADV_PAGEOUT} on a mapping of the file; the JVM gives madvise
+ *       other advice ({@code MADV_DONTNEED}, {@code MADV_HUGEPAGE}, ...), which stays allowed;
+ *   <li>{@code process_madvise}, which gives the same advice for a process's memory.
  * </ul>
  *
  * Each is answered {@code EOPNOTSUPP} ("Operation not supported"), which glibc's
  * {@code posix_fallocate} meets by writing the bytes (counted by their size). A system call of
  * another architecture than the host's (a 32-bit program, or x32's) kills the process: its
- * numbers are not those above. The JVM and javac use none of these calls.
+ * numbers are not those below. The JVM and javac use none of the calls refused.
  */
 final class SeccompFilter {
 
@@ -36,22 +50,36 @@ final class SeccompFilter {
     private static final int LOAD_WORD = 0x20, JUMP_EQUAL = 0x15, JUMP_AT_LEAST = 0x35, AND = 0x54, RETURN = 0x06;
     /** seccomp's answers (linux/seccomp.h) and the errno refused calls get. */
     private static final int ALLOW = 0x7fff0000, KILL_PROCESS = 0x80000000, ERRNO = 0x00050000, EOPNOTSUPP = 95;
-    /** Offsets in struct seccomp_data: the call's number, the architecture, the low word of the second argument. */
-    private static final int NUMBER = 0, ARCHITECTURE = 4, SECOND_ARGUMENT = 24;
+    /**
+     * Offsets in struct seccomp_data: the call's number, the architecture, and the low words of the
+     * second and third arguments (both machines are little-endian).
+     */
+    private static final int NUMBER = 0, ARCHITECTURE = 4, SECOND_ARGUMENT = 24, THIRD_ARGUMENT = 32;
     /** x86-64's x32 calls have this bit in their number. */
     private static final int X32_BIT = 0x40000000;
     /** An ioctl's type is the second byte of its request: 'X' for the space reservations. */
     private static final int IOCTL_TYPE = 0xff00, RESERVATIONS = 'X' << 8;
+    /**
+     * madvise's advice that reclaims the pages (linux/mman-common.h). The kernel reads the advice
+     * as an int, so the low word is all of it.
+     */
+    private static final int MADV_PAGEOUT = 21;
 
-    /** One architecture's numbers: AUDIT_ARCH_*, ioctl's, and those of the calls refused outright. */
-    private record Architecture(int audit, int ioctl, int[] refused) {
+    /**
+     * One architecture's numbers: AUDIT_ARCH_* (linux/audit.h), ioctl's and madvise's, and those of
+     * the calls refused outright.
+     */
+    private record Architecture(int audit, int ioctl, int madvise, int[] refused) {
     }
 
-    // fallocate, setxattr, lsetxattr, fsetxattr, io_uring_setup, io_uring_enter, io_uring_register, setxattrat
-    private static final Architecture X86_64 = new Architecture(0xc000003e, 16,
-            new int[] {285, 188, 189, 190, 425, 426, 427, 463});
-    private static final Architecture AARCH64 = new Architecture(0xc00000b7, 29,
-            new int[] {47, 5, 6, 7, 425, 426, 427, 463});
+    // The numbers are the kernel's: x86-64's arch/x86/entry/syscalls/syscall_64.tbl, AArch64's
+    // include/uapi/asm-generic/unistd.h (ioctl 16 and 29, madvise 28 and 233). Refused outright:
+    // fallocate, setxattr, lsetxattr, fsetxattr, io_uring_setup, io_uring_enter, io_uring_register, setxattrat,
+    // fadvise64, process_madvise.
+    private static final Architecture X86_64 = new Architecture(0xc000003e, 16, 28,
+            new int[] {285, 188, 189, 190, 425, 426, 427, 463, 221, 440});
+    private static final Architecture AARCH64 = new Architecture(0xc00000b7, 29, 233,
+            new int[] {47, 5, 6, 7, 425, 426, 427, 463, 223, 440});
 
     private SeccompFilter() {
     }
@@ -75,30 +103,70 @@ final class SeccompFilter {
      * machine's byte order, both of whose architectures are little-endian.
      */
     private static byte[] program(Architecture architecture) {
-        List<int[]> code = new ArrayList<>();
-        int refused = architecture.refused().length;
-        // Jumps count instructions from the next one; the last two are ALLOW and the refusal.
-        int allow = 9 + refused, deny = allow + 1;
-        code.add(new int[] {LOAD_WORD, 0, 0, ARCHITECTURE});
-        code.add(new int[] {JUMP_EQUAL, 1, 0, architecture.audit()});
-        code.add(new int[] {RETURN, 0, 0, KILL_PROCESS});
-        code.add(new int[] {LOAD_WORD, 0, 0, NUMBER});
-        code.add(new int[] {JUMP_AT_LEAST, deny - 5, 0, X32_BIT});
-        for (int i = 0; i < refused; i++) {
-            code.add(new int[] {JUMP_EQUAL, deny - (6 + i), 0, architecture.refused()[i]});
+        Program code = new Program();
+        code.add(LOAD_WORD, ARCHITECTURE);
+        code.jump(JUMP_EQUAL, architecture.audit(), "number", null);
+        code.add(RETURN, KILL_PROCESS);
+        code.label("number");
+        code.add(LOAD_WORD, NUMBER);
+        code.jump(JUMP_AT_LEAST, X32_BIT, "refuse", null);
+        for (int refused : architecture.refused()) {
+            code.jump(JUMP_EQUAL, refused, "refuse", null);
         }
-        code.add(new int[] {JUMP_EQUAL, 0, allow - (6 + refused), architecture.ioctl()});
-        code.add(new int[] {LOAD_WORD, 0, 0, SECOND_ARGUMENT});
-        code.add(new int[] {AND, 0, 0, IOCTL_TYPE});
-        code.add(new int[] {JUMP_EQUAL, 1, 0, RESERVATIONS});
-        code.add(new int[] {RETURN, 0, 0, ALLOW});
-        code.add(new int[] {RETURN, 0, 0, ERRNO | EOPNOTSUPP});
-        ByteBuffer bytes = ByteBuffer.allocate(code.size() * 8).order(ByteOrder.LITTLE_ENDIAN);
-        for (int[] instruction : code) {
-            bytes.putShort((short) instruction[0]).put((byte) instruction[1]).put((byte) instruction[2])
-                    .putInt(instruction[3]);
+        code.jump(JUMP_EQUAL, architecture.ioctl(), "ioctl", null);
+        code.jump(JUMP_EQUAL, architecture.madvise(), "madvise", "allow");
+        code.label("ioctl");
+        code.add(LOAD_WORD, SECOND_ARGUMENT);
+        code.add(AND, IOCTL_TYPE);
+        code.jump(JUMP_EQUAL, RESERVATIONS, "refuse", "allow");
+        code.label("madvise");
+        code.add(LOAD_WORD, THIRD_ARGUMENT);
+        code.jump(JUMP_EQUAL, MADV_PAGEOUT, "refuse", "allow");
+        code.label("allow");
+        code.add(RETURN, ALLOW);
+        code.label("refuse");
+        code.add(RETURN, ERRNO | EOPNOTSUPP);
+        return code.bytes();
+    }
+
+    /** A program being written, whose jumps name the place they go to (null: the next instruction). */
+    private static final class Program {
+        private record Instruction(int code, int k, String ifTrue, String ifFalse) {
         }
-        return bytes.array();
+
+        private final List<Instruction> instructions = new ArrayList<>();
+        private final Map<String, Integer> labels = new HashMap<>();
+
+        void add(int code, int k) {
+            jump(code, k, null, null);
+        }
+
+        void jump(int code, int k, String ifTrue, String ifFalse) {
+            instructions.add(new Instruction(code, k, ifTrue, ifFalse));
+        }
+
+        void label(String name) {
+            labels.put(name, instructions.size());
+        }
+
+        /** The instructions, each jump counted, as the kernel counts it, from the instruction after it. */
+        byte[] bytes() {
+            ByteBuffer bytes = ByteBuffer.allocate(instructions.size() * 8).order(ByteOrder.LITTLE_ENDIAN);
+            for (int i = 0; i < instructions.size(); i++) {
+                Instruction instruction = instructions.get(i);
+                bytes.putShort((short) instruction.code()).put(offset(instruction.ifTrue(), i))
+                        .put(offset(instruction.ifFalse(), i)).putInt(instruction.k());
+            }
+            return bytes.array();
+        }
+
+        private byte offset(String label, int from) {
+            int offset = label == null ? 0 : labels.get(label) - (from + 1);
+            if (offset < 0 || offset > 0xff) {
+                throw new IllegalStateException("a jump to " + label + " of " + offset + " instructions");
+            }
+            return (byte) offset;
+        }
     }
 
     /**
