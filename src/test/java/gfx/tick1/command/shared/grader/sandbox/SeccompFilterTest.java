@@ -4,8 +4,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
+import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.EnumSource;
+import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * What the sandbox's seccomp filter answers each call, read by running its program as the kernel
@@ -24,26 +25,8 @@ class SeccompFilterTest {
      * The numbers of the calls the tests make, from the kernel's tables: x86-64's
      * arch/x86/entry/syscalls/syscall_64.tbl, AArch64's include/uapi/asm-generic/unistd.h.
      */
-    enum Machine {
-        X86_64("amd64", 0xc000003e, 0, 257, 9, 16, 285, 221, 28, 440),
-        AARCH64("aarch64", 0xc00000b7, 63, 56, 222, 29, 47, 223, 233, 440);
-
-        final String osArch;
-        final int audit, read, openat, mmap, ioctl, fallocate, fadvise64, madvise, processMadvise;
-
-        Machine(String osArch, int audit, int read, int openat, int mmap, int ioctl, int fallocate, int fadvise64,
-                int madvise, int processMadvise) {
-            this.osArch = osArch;
-            this.audit = audit;
-            this.read = read;
-            this.openat = openat;
-            this.mmap = mmap;
-            this.ioctl = ioctl;
-            this.fallocate = fallocate;
-            this.fadvise64 = fadvise64;
-            this.madvise = madvise;
-            this.processMadvise = processMadvise;
-        }
+    record Machine(String osArch, int audit, int read, int openat, int mmap, int ioctl, int fallocate,
+            int fadvise64, int madvise, int processMadvise) {
 
         /** What the filter answers this machine's call {@code number} with these arguments. */
         int answer(int number, long... arguments) {
@@ -53,39 +36,44 @@ class SeccompFilterTest {
         int answerOf(int architecture, int number, long... arguments) {
             return run(SeccompFilter.forArchitecture(osArch), architecture, number, arguments);
         }
+
+        @Override
+        public String toString() {
+            return osArch;
+        }
     }
 
-    @ParameterizedTest
-    @EnumSource(Machine.class)
+    static Stream<Machine> machines() {
+        return Stream.of(new Machine("amd64", 0xc000003e, 0, 257, 9, 16, 285, 221, 28, 440),
+                new Machine("aarch64", 0xc00000b7, 63, 56, 222, 29, 47, 223, 233, 440));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
     void droppingAFilesPagesFromThePageCacheWithFadviseIsRefused(Machine machine) {
         assertThat(machine.answer(machine.fadvise64, 3, 0, 0, 4 /* POSIX_FADV_DONTNEED */))
                 .as("fadvise64 (posix_fadvise, dd iflag=nocache)").isEqualTo(REFUSED);
     }
 
-    @ParameterizedTest
-    @EnumSource(Machine.class)
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
     void adviceOnAnotherProcesssMemoryIsRefused(Machine machine) {
         assertThat(machine.answer(machine.processMadvise, 3, 0x1000, 1, MADV_PAGEOUT, 0))
                 .as("process_madvise").isEqualTo(REFUSED);
     }
 
-    @ParameterizedTest
-    @EnumSource(Machine.class)
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
     void pagingOutAMappingIsRefused(Machine machine) {
         assertThat(machine.answer(machine.madvise, 0x7f0000000000L, 1 << 20, MADV_PAGEOUT))
                 .as("madvise(MADV_PAGEOUT)").isEqualTo(REFUSED);
-    }
-
-    @ParameterizedTest
-    @EnumSource(Machine.class)
-    void pagingOutIsRefusedWhateverTheAdvicesUnusedHighBitsHold(Machine machine) {
         // The kernel reads madvise's advice as an int: the high word of the register is not looked at.
         assertThat(machine.answer(machine.madvise, 0x7f0000000000L, 1 << 20, 0xffffffffL << 32 | MADV_PAGEOUT))
                 .as("madvise(MADV_PAGEOUT) with the high word set").isEqualTo(REFUSED);
     }
 
-    @ParameterizedTest
-    @EnumSource(Machine.class)
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
     void theAdviceTheJvmGivesIsAllowed(Machine machine) {
         assertThat(machine.answer(machine.madvise, 0x7f0000000000L, 1 << 20, MADV_DONTNEED))
                 .as("madvise(MADV_DONTNEED)").isEqualTo(ALLOW);
@@ -93,31 +81,31 @@ class SeccompFilterTest {
                 .as("madvise(MADV_HUGEPAGE)").isEqualTo(ALLOW);
     }
 
-    @ParameterizedTest
-    @EnumSource(Machine.class)
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
     void readingAndMappingFilesIsAllowed(Machine machine) {
         assertThat(machine.answer(machine.read, 3, 0x1000, 4096)).as("read").isEqualTo(ALLOW);
         assertThat(machine.answer(machine.openat, -100, 0x1000, 0)).as("openat").isEqualTo(ALLOW);
         assertThat(machine.answer(machine.mmap, 0, 4096, 1, 2, 3, 0)).as("mmap").isEqualTo(ALLOW);
     }
 
-    @ParameterizedTest
-    @EnumSource(Machine.class)
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
     void reservingDiskSpaceWithFallocateIsRefused(Machine machine) {
         assertThat(machine.answer(machine.fallocate, 3, 1 /* FALLOC_FL_KEEP_SIZE */, 0, 1L << 30))
                 .as("fallocate --keep-size").isEqualTo(REFUSED);
     }
 
-    @ParameterizedTest
-    @EnumSource(Machine.class)
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
     void theIoctlsThatReserveDiskSpaceAreRefusedAndOthersAllowed(Machine machine) {
         assertThat(machine.answer(machine.ioctl, 3, 0x4030582b /* FS_IOC_RESVSP64 */, 0))
                 .as("ioctl FS_IOC_RESVSP64").isEqualTo(REFUSED);
         assertThat(machine.answer(machine.ioctl, 0, 0x5401 /* TCGETS */, 0)).as("ioctl TCGETS").isEqualTo(ALLOW);
     }
 
-    @ParameterizedTest
-    @EnumSource(Machine.class)
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
     void aCallOfAnotherArchitectureKillsItsProcess(Machine machine) {
         assertThat(machine.answerOf(I386, 3 /* i386's read */, 3, 0x1000, 4096))
                 .as("a 32-bit program's read").isEqualTo(KILL_PROCESS);
