@@ -153,7 +153,7 @@ public final class GradeCommand implements Callable<Integer> {
                         + " package (apt-get install " + Sandbox.PACKAGE + ")" + (vpl() ? "" : ", or give "
                         + "--no-sandbox to grade without a sandbox"));
             }
-            for (String warning : new String[] {sandbox.totalsNotEnforced(), sandbox.reservationsNotRefused(),
+            for (String warning : new String[] {sandbox.totalsNotEnforced(), sandbox.callsNotRefused(),
                     sandbox.diskNotEnforced()}) {
                 if (warning != null) {
                     err.println("tick1 grade: warning: " + warning);

@@ -12,11 +12,13 @@ import java.io.ByteArrayOutputStream;
 import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.OutputStream;
 import java.io.UncheckedIOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
+import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -122,10 +124,12 @@ class GradeAttackTest {
      * The host's programs the attacks start, which the sandbox shows them (a real grade shows none
      * but java): so that the limits are tested against what the programs can do that Java cannot.
      */
+    /** The witness of what the kernel answered a call the program that made it keeps quiet about. */
+    private static final Path STRACE = Path.of("/usr/bin/strace");
     private static final List<String> ATTACK_TOOLS = List.of("/bin/sh", "/usr/bin/setsid", "/usr/bin/sleep",
             "/usr/bin/head", "/usr/bin/tail", "/usr/bin/mkfifo", "/usr/bin/touch", "/usr/bin/chmod",
             "/usr/bin/fallocate", "/usr/bin/mkdir", "/usr/bin/cat", "/usr/bin/ln", "/usr/bin/dd", "/usr/bin/rm",
-            "/usr/bin/seq");
+            "/usr/bin/seq", STRACE.toString());
 
     /** An attack's file of the lines the correct solution's render runs first, in place of its own files. */
     private static final String RENDER_FIRST = "render-first.java.txt";
@@ -532,6 +536,33 @@ class GradeAttackTest {
             same += 8 - Integer.bitCount((read[i] ^ expected[i]) & 0xFF);
         }
         return same;
+    }
+
+    /**
+     * A run that drops pages of a file of the JDK's from the host's page cache, which a run of
+     * another grade going at the same time (a cohort's jobs) could see by timing its reads: the
+     * sandbox refuses the calls that drop them, so they stay in memory.
+     */
+    @Test
+    void aRunCannotDropTheJdksFilesFromTheHostsPageCache() throws Exception {
+        assumeThat(Files.isWritable(PAGE_CACHE_FILE))
+                .as("the test may write the file, so the kernel says which of its pages are in memory (as root)")
+                .isTrue();
+        assumeThat(Files.isExecutable(STRACE)).as("strace is installed, to show what the kernel answered dd").isTrue();
+        try (InputStream in = Files.newInputStream(PAGE_CACHE_FILE)) {
+            in.transferTo(OutputStream.nullOutputStream());
+        }
+
+        Grade grade = grade("drop-the-page-cache");
+
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("dd iflag=nocache in the sandbox, and what strace saw the kernel answer")
+                .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: dd exited with status 0: "
+                        + "fadvise64(0, 0, 0, POSIX_FADV_DONTNEED) = -1 EOPNOTSUPP (Operation not supported)");
+        try (FileChannel file = FileChannel.open(PAGE_CACHE_FILE)) {
+            assertThat(file.map(FileChannel.MapMode.READ_ONLY, 0, file.size()).isLoaded())
+                    .as("every page of " + PAGE_CACHE_FILE + " in memory after the grade").isTrue();
+        }
     }
 
     /** The file whose pages {@link #aHiddenSceneCannotBeCarriedToALaterGradeThroughTheHostsPageCache} uses. */

@@ -16,7 +16,7 @@ import java.util.EnumSet;
  * follows no link, goes to any depth and stops at the cap. Every entry counts by its size
  * (folders and links too: a folder keeps the space its names took, however many were deleted),
  * and a file's size bounds the disk it takes, as the sandbox refuses the calls that reserve space
- * beyond a size ({@link SpaceFilter}); a sparse file counts its holes. What the walk cannot read
+ * beyond a size ({@link SeccompFilter}); a sparse file counts its holes. What the walk cannot read
  * (a folder made unreadable, or deeper than a path may be long) stops the run, as it cannot be
  * counted.
  */

@@ -49,7 +49,7 @@ public final class Sandbox {
     private static final Path TASKSET = Path.of("/usr/bin/taskset");
     private static final Path SH = Path.of("/bin/sh");
     private static final Path TRUE = Path.of("/usr/bin/true");
-    /** The descriptor bwrap reads the {@link SpaceFilter} from. */
+    /** The descriptor bwrap reads the {@link SeccompFilter} from. */
     private static final int FILTER_FD = 3;
 
     /** The most files the student's process may write, each at most this big (RLIMIT_FSIZE). */
@@ -115,7 +115,7 @@ public final class Sandbox {
      * groups are made (or null), the seccomp filter's file (or null), and whether each run's output
      * folder can be a file system of its own, and the host's files the runs see (null for none).
      */
-    private record Host(Path bwrap, Cgroup.Place cgroups, Path spaceFilter, boolean ownDisks, SystemFiles system) {
+    private record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDisks, SystemFiles system) {
     }
 
     /**
@@ -173,9 +173,9 @@ public final class Sandbox {
         } catch (IOException | UnsupportedOperationException e) {
             throw new Unavailable("cannot tell which user this is (" + e.getMessage() + ")");
         }
-        Path spaceFilter;
+        Path seccompFilter;
         try {
-            spaceFilter = SpaceFilter.writeForThisMachine();
+            seccompFilter = SeccompFilter.writeForThisMachine();
         } catch (IOException e) {
             throw new Unavailable("cannot write the sandbox's seccomp filter (" + e.getMessage() + ")");
         }
@@ -188,7 +188,7 @@ public final class Sandbox {
             throw new Unavailable("cannot list the files of the JDK and the libraries java loads (" + e.getMessage()
                     + ")");
         }
-        Host host = new Host(bwrap, Cgroup.find(), spaceFilter, root
+        Host host = new Host(bwrap, Cgroup.find(), seccompFilter, root
                 && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks(), system);
         Sandbox sandbox = new Sandbox(host,
                 root ? FIRST_UID + RUN_USERS.nextInt(JOB_UID_STEP) : -1, 0);
@@ -217,7 +217,7 @@ public final class Sandbox {
     /** What this sandbox holds the code to: results graded under other rules are graded again. */
     public Enforcement enforcement() {
         return new Enforcement(confined, uid >= 0, confined && host.cgroups() != null,
-                confined && host.spaceFilter() != null, confined && host.ownDisks());
+                confined && host.seccompFilter() != null, confined && host.ownDisks());
     }
 
     /**
@@ -231,13 +231,16 @@ public final class Sandbox {
     }
 
     /**
-     * Null when the sandbox refuses the calls that reserve disk space a size does not show
-     * ({@link SpaceFilter}); else the one line that says it does not, on this machine.
+     * Null when the sandbox refuses the calls that reserve disk space a size does not show and those
+     * that drop pages from the host's page cache ({@link SeccompFilter}); else the one line that says
+     * it does not, on this machine.
      */
-    public String reservationsNotRefused() {
-        return !confined || host.spaceFilter() != null ? null
+    public String callsNotRefused() {
+        return !confined || host.seccompFilter() != null ? null
                 : "tick1 has no seccomp filter for this machine (" + System.getProperty("os.arch") + "): disk space "
-                        + "the code reserves with fallocate is not counted in its output folder's limit";
+                        + "the code reserves with fallocate is not counted in its output folder's limit, and a run "
+                        + "can drop the JDK's files from the page cache while another run going at the same time "
+                        + "times its reads";
     }
 
     /**
@@ -372,7 +375,7 @@ public final class Sandbox {
                 "--die-with-parent", "--new-session", "--cap-drop", "ALL",
                 "--clearenv", "--setenv", "PATH", "/usr/bin", "--setenv", "LANG", "C.UTF-8",
                 "--setenv", "MALLOC_ARENA_MAX", "2"));
-        if (host.spaceFilter() != null) {
+        if (host.seccompFilter() != null) {
             wrapped.addAll(List.of("--seccomp", Integer.toString(FILTER_FD)));
         }
         // Of the host's files, the JDK and the libraries it loads, each on its own: no folder of the host's,
@@ -424,18 +427,18 @@ public final class Sandbox {
 
     /**
      * The shell that starts the sandbox: it moves itself into the run's control group (when there
-     * is one; it fails with status 125 rather than run outside it), opens the {@link SpaceFilter}
+     * is one; it fails with status 125 rather than run outside it), opens the {@link SeccompFilter}
      * on descriptor {@value #FILTER_FD} for bwrap (the one way to hand bwrap a descriptor through
      * Java's ProcessBuilder), and becomes the run's first program. Empty when there is neither.
      */
     private List<String> startCommand(Cgroup cgroup) {
-        if (cgroup == null && host.spaceFilter() == null) {
+        if (cgroup == null && host.seccompFilter() == null) {
             return List.of();
         }
         List<String> command = new ArrayList<>(List.of(SH.toString(), "-c",
                 "f=$1; shift; while [ \"$1\" != -- ]; do echo $$ > \"$1/cgroup.procs\" || exit 125; shift; done; "
                         + "shift; if [ -n \"$f\" ]; then exec \"$@\" " + FILTER_FD + "<\"$f\"; else exec \"$@\"; fi",
-                "sh", host.spaceFilter() == null ? "" : host.spaceFilter().toString()));
+                "sh", host.seccompFilter() == null ? "" : host.seccompFilter().toString()));
         if (cgroup != null) {
             cgroup.folders().forEach(group -> command.add(group.toString()));
         }

@@ -1,0 +1,187 @@
+package gfx.tick1.command.shared.grader.sandbox;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The seccomp filter bubblewrap installs on everything the sandbox runs ({@code bwrap --seccomp}).
+ * It refuses the system calls that take disk space a file's size does not show, so that the
+ * output folder's count of sizes ({@link OutputCount}) bounds what a run holds on the host's disk:
+ *
+ * <ul>
+ *   <li>{@code fallocate(2)}: {@code fallocate --keep-size} reserves any amount with a size of 0;
+ *   <li>the {@code ioctl}s of type {@code 'X'}: {@code FS_IOC_RESVSP}, {@code FS_IOC_RESVSP64}
+ *       and {@code FS_IOC_ZERO_RANGE} reserve space as fallocate does (Linux's fs/ioctl.c), and
+ *       XFS's own ({@code XFS_IOC_ALLOCSP}) did;
+ *   <li>{@code setxattr}, {@code lsetxattr}, {@code fsetxattr}, {@code setxattrat}: an extended
+ *       attribute takes a block of its own;
+ *   <li>{@code io_uring_setup}, {@code io_uring_enter}, {@code io_uring_register}: io_uring
+ *       runs fallocate (and fadvise, below) without a system call the filter could see.
+ * </ul>
+ *
+ * And it refuses the calls that drop a file's pages from the host's page cache, which every run
+ * shares: the grader reads the files a run sees into memory before it starts, but a run going at
+ * the same time as another could drop pages of the JDK's files while the other times its reads.
+ *
+ * <ul>
+ *   <li>{@code fadvise64} ({@code posix_fadvise}'s {@code POSIX_FADV_DONTNEED}, as
+ *       {@code dd iflag=nocache} gives it);
+ *   <li>{@code madvise} with {@code MADV_PAGEOUT} on a mapping of the file; the JVM gives madvise
+ *       other advice ({@code MADV_DONTNEED}, {@code MADV_HUGEPAGE}, ...), which stays allowed;
+ *   <li>{@code process_madvise}, which gives the same advice for a process's memory.
+ * </ul>
+ *
+ * Each is answered {@code EOPNOTSUPP} ("Operation not supported"), which glibc's
+ * {@code posix_fallocate} meets by writing the bytes (counted by their size). A system call of
+ * another architecture than the host's (a 32-bit program, or x32's) kills the process: its
+ * numbers are not those below. The JVM and javac use none of the calls refused.
+ */
+final class SeccompFilter {
+
+    /** Classic BPF as seccomp reads it (linux/filter.h, linux/bpf_common.h). */
+    private static final int LOAD_WORD = 0x20, JUMP_EQUAL = 0x15, JUMP_AT_LEAST = 0x35, AND = 0x54, RETURN = 0x06;
+    /** seccomp's answers (linux/seccomp.h) and the errno refused calls get. */
+    private static final int ALLOW = 0x7fff0000, KILL_PROCESS = 0x80000000, ERRNO = 0x00050000, EOPNOTSUPP = 95;
+    /**
+     * Offsets in struct seccomp_data: the call's number, the architecture, and the low words of the
+     * second and third arguments (both machines are little-endian).
+     */
+    private static final int NUMBER = 0, ARCHITECTURE = 4, SECOND_ARGUMENT = 24, THIRD_ARGUMENT = 32;
+    /** x86-64's x32 calls have this bit in their number. */
+    private static final int X32_BIT = 0x40000000;
+    /** An ioctl's type is the second byte of its request: 'X' for the space reservations. */
+    private static final int IOCTL_TYPE = 0xff00, RESERVATIONS = 'X' << 8;
+    /**
+     * madvise's advice that reclaims the pages (linux/mman-common.h). The kernel reads the advice
+     * as an int, so the low word is all of it.
+     */
+    private static final int MADV_PAGEOUT = 21;
+
+    /**
+     * One architecture's numbers: AUDIT_ARCH_* (linux/audit.h), ioctl's and madvise's, and those of
+     * the calls refused outright.
+     */
+    private record Architecture(int audit, int ioctl, int madvise, int[] refused) {
+    }
+
+    // The numbers are the kernel's: x86-64's arch/x86/entry/syscalls/syscall_64.tbl, AArch64's
+    // include/uapi/asm-generic/unistd.h (ioctl 16 and 29, madvise 28 and 233). Refused outright:
+    // fallocate, setxattr, lsetxattr, fsetxattr, io_uring_setup, io_uring_enter, io_uring_register, setxattrat,
+    // fadvise64, process_madvise.
+    private static final Architecture X86_64 = new Architecture(0xc000003e, 16, 28,
+            new int[] {285, 188, 189, 190, 425, 426, 427, 463, 221, 440});
+    private static final Architecture AARCH64 = new Architecture(0xc00000b7, 29, 233,
+            new int[] {47, 5, 6, 7, 425, 426, 427, 463, 223, 440});
+
+    private SeccompFilter() {
+    }
+
+    /** The filter for the host's architecture, or null where tick1 has none (it then warns). */
+    static byte[] forThisMachine() {
+        return forArchitecture(System.getProperty("os.arch", ""));
+    }
+
+    /** The filter for an architecture as Java names it ({@code os.arch}), or null where tick1 has none. */
+    static byte[] forArchitecture(String name) {
+        return switch (name) {
+            case "amd64", "x86_64" -> program(X86_64);
+            case "aarch64" -> program(AARCH64);
+            default -> null;
+        };
+    }
+
+    /**
+     * The filter as bwrap reads it: struct sock_filter ({@code u16 code; u8 jt, jf; u32 k}) in the
+     * machine's byte order, both of whose architectures are little-endian.
+     */
+    private static byte[] program(Architecture architecture) {
+        Program code = new Program();
+        code.add(LOAD_WORD, ARCHITECTURE);
+        code.jump(JUMP_EQUAL, architecture.audit(), "number", null);
+        code.add(RETURN, KILL_PROCESS);
+        code.label("number");
+        code.add(LOAD_WORD, NUMBER);
+        code.jump(JUMP_AT_LEAST, X32_BIT, "refuse", null);
+        for (int refused : architecture.refused()) {
+            code.jump(JUMP_EQUAL, refused, "refuse", null);
+        }
+        code.jump(JUMP_EQUAL, architecture.ioctl(), "ioctl", null);
+        code.jump(JUMP_EQUAL, architecture.madvise(), "madvise", "allow");
+        code.label("ioctl");
+        code.add(LOAD_WORD, SECOND_ARGUMENT);
+        code.add(AND, IOCTL_TYPE);
+        code.jump(JUMP_EQUAL, RESERVATIONS, "refuse", "allow");
+        code.label("madvise");
+        code.add(LOAD_WORD, THIRD_ARGUMENT);
+        code.jump(JUMP_EQUAL, MADV_PAGEOUT, "refuse", "allow");
+        code.label("allow");
+        code.add(RETURN, ALLOW);
+        code.label("refuse");
+        code.add(RETURN, ERRNO | EOPNOTSUPP);
+        return code.bytes();
+    }
+
+    /** A program being written, whose jumps name the place they go to (null: the next instruction). */
+    private static final class Program {
+        private record Instruction(int code, int k, String ifTrue, String ifFalse) {
+        }
+
+        private final List<Instruction> instructions = new ArrayList<>();
+        private final Map<String, Integer> labels = new HashMap<>();
+
+        void add(int code, int k) {
+            jump(code, k, null, null);
+        }
+
+        void jump(int code, int k, String ifTrue, String ifFalse) {
+            instructions.add(new Instruction(code, k, ifTrue, ifFalse));
+        }
+
+        void label(String name) {
+            labels.put(name, instructions.size());
+        }
+
+        /** The instructions, each jump counted, as the kernel counts it, from the instruction after it. */
+        byte[] bytes() {
+            ByteBuffer bytes = ByteBuffer.allocate(instructions.size() * 8).order(ByteOrder.LITTLE_ENDIAN);
+            for (int i = 0; i < instructions.size(); i++) {
+                Instruction instruction = instructions.get(i);
+                bytes.putShort((short) instruction.code()).put(offset(instruction.ifTrue(), i))
+                        .put(offset(instruction.ifFalse(), i)).putInt(instruction.k());
+            }
+            return bytes.array();
+        }
+
+        private byte offset(String label, int from) {
+            int offset = label == null ? 0 : labels.get(label) - (from + 1);
+            if (offset < 0 || offset > 0xff) {
+                throw new IllegalStateException("a jump to " + label + " of " + offset + " instructions");
+            }
+            return (byte) offset;
+        }
+    }
+
+    /**
+     * The filter written to a new file of the grader's alone, deleted when this program ends, for
+     * the shell that starts each sandbox to open for bwrap; null where there is no filter.
+     */
+    static Path writeForThisMachine() throws IOException {
+        byte[] program = forThisMachine();
+        if (program == null) {
+            return null;
+        }
+        Path file = Files.createTempFile("tick1-seccomp-", ".bpf",
+                PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------")));
+        file.toFile().deleteOnExit();
+        Files.write(file, program);
+        return file;
+    }
+}

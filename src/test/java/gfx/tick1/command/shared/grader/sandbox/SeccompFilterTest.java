@@ -1,0 +1,146 @@
+package gfx.tick1.command.shared.grader.sandbox;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.util.stream.Stream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * What the sandbox's seccomp filter answers each call, read by running its program as the kernel
+ * would on the call's {@code struct seccomp_data}, for each architecture tick1 has a filter for.
+ */
+class SeccompFilterTest {
+
+    /** seccomp's answers (linux/seccomp.h): the call goes on, fails with EOPNOTSUPP, or kills its process. */
+    private static final int ALLOW = 0x7fff0000, REFUSED = 0x00050000 | 95, KILL_PROCESS = 0x80000000;
+    /** madvise's advice (linux/mman-common.h). */
+    private static final int MADV_DONTNEED = 4, MADV_HUGEPAGE = 14, MADV_PAGEOUT = 21;
+    /** AUDIT_ARCH_I386 (linux/audit.h): a 32-bit program's calls, on either machine. */
+    private static final int I386 = 0x40000003;
+
+    /**
+     * The numbers of the calls the tests make, from the kernel's tables: x86-64's
+     * arch/x86/entry/syscalls/syscall_64.tbl, AArch64's include/uapi/asm-generic/unistd.h.
+     */
+    record Machine(String osArch, int audit, int read, int openat, int mmap, int ioctl, int fallocate,
+            int fadvise64, int madvise, int processMadvise) {
+
+        /** What the filter answers this machine's call {@code number} with these arguments. */
+        int answer(int number, long... arguments) {
+            return answerOf(audit, number, arguments);
+        }
+
+        int answerOf(int architecture, int number, long... arguments) {
+            return run(SeccompFilter.forArchitecture(osArch), architecture, number, arguments);
+        }
+
+        @Override
+        public String toString() {
+            return osArch;
+        }
+    }
+
+    static Stream<Machine> machines() {
+        return Stream.of(new Machine("amd64", 0xc000003e, 0, 257, 9, 16, 285, 221, 28, 440),
+                new Machine("aarch64", 0xc00000b7, 63, 56, 222, 29, 47, 223, 233, 440));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void droppingAFilesPagesFromThePageCacheWithFadviseIsRefused(Machine machine) {
+        assertThat(machine.answer(machine.fadvise64, 3, 0, 0, 4 /* POSIX_FADV_DONTNEED */))
+                .as("fadvise64 (posix_fadvise, dd iflag=nocache)").isEqualTo(REFUSED);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void adviceOnAnotherProcesssMemoryIsRefused(Machine machine) {
+        assertThat(machine.answer(machine.processMadvise, 3, 0x1000, 1, MADV_PAGEOUT, 0))
+                .as("process_madvise").isEqualTo(REFUSED);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void pagingOutAMappingIsRefused(Machine machine) {
+        assertThat(machine.answer(machine.madvise, 0x7f0000000000L, 1 << 20, MADV_PAGEOUT))
+                .as("madvise(MADV_PAGEOUT)").isEqualTo(REFUSED);
+        // The kernel reads madvise's advice as an int: the high word of the register is not looked at.
+        assertThat(machine.answer(machine.madvise, 0x7f0000000000L, 1 << 20, 0xffffffffL << 32 | MADV_PAGEOUT))
+                .as("madvise(MADV_PAGEOUT) with the high word set").isEqualTo(REFUSED);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void theAdviceTheJvmGivesIsAllowed(Machine machine) {
+        assertThat(machine.answer(machine.madvise, 0x7f0000000000L, 1 << 20, MADV_DONTNEED))
+                .as("madvise(MADV_DONTNEED)").isEqualTo(ALLOW);
+        assertThat(machine.answer(machine.madvise, 0x7f0000000000L, 1 << 21, MADV_HUGEPAGE))
+                .as("madvise(MADV_HUGEPAGE)").isEqualTo(ALLOW);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void readingAndMappingFilesIsAllowed(Machine machine) {
+        assertThat(machine.answer(machine.read, 3, 0x1000, 4096)).as("read").isEqualTo(ALLOW);
+        assertThat(machine.answer(machine.openat, -100, 0x1000, 0)).as("openat").isEqualTo(ALLOW);
+        assertThat(machine.answer(machine.mmap, 0, 4096, 1, 2, 3, 0)).as("mmap").isEqualTo(ALLOW);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void reservingDiskSpaceWithFallocateIsRefused(Machine machine) {
+        assertThat(machine.answer(machine.fallocate, 3, 1 /* FALLOC_FL_KEEP_SIZE */, 0, 1L << 30))
+                .as("fallocate --keep-size").isEqualTo(REFUSED);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void theIoctlsThatReserveDiskSpaceAreRefusedAndOthersAllowed(Machine machine) {
+        assertThat(machine.answer(machine.ioctl, 3, 0x4030582b /* FS_IOC_RESVSP64 */, 0))
+                .as("ioctl FS_IOC_RESVSP64").isEqualTo(REFUSED);
+        assertThat(machine.answer(machine.ioctl, 0, 0x5401 /* TCGETS */, 0)).as("ioctl TCGETS").isEqualTo(ALLOW);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void aCallOfAnotherArchitectureKillsItsProcess(Machine machine) {
+        assertThat(machine.answerOf(I386, 3 /* i386's read */, 3, 0x1000, 4096))
+                .as("a 32-bit program's read").isEqualTo(KILL_PROCESS);
+    }
+
+    /** Offsets in struct seccomp_data (linux/seccomp.h): int nr; u32 arch; u64 instruction_pointer; u64 args[6]. */
+    private static final int NUMBER = 0, ARCHITECTURE = 4, ARGUMENTS = 16;
+
+    /**
+     * Runs a classic BPF program (struct sock_filter, little-endian) on one call's seccomp_data, as
+     * the kernel would, for the instructions the filter uses; any other fails the test.
+     */
+    static int run(byte[] program, int architecture, int number, long... arguments) {
+        ByteBuffer data = ByteBuffer.allocate(ARGUMENTS + 6 * Long.BYTES).order(ByteOrder.LITTLE_ENDIAN);
+        data.putInt(NUMBER, number).putInt(ARCHITECTURE, architecture);
+        for (int i = 0; i < arguments.length; i++) {
+            data.putLong(ARGUMENTS + i * Long.BYTES, arguments[i]);
+        }
+        ByteBuffer code = ByteBuffer.wrap(program).order(ByteOrder.LITTLE_ENDIAN);
+        int accumulator = 0;
+        for (int pc = 0; pc < program.length / 8; pc++) {
+            int op = code.getShort(pc * 8) & 0xffff, ifTrue = code.get(pc * 8 + 2) & 0xff;
+            int ifFalse = code.get(pc * 8 + 3) & 0xff, k = code.getInt(pc * 8 + 4);
+            switch (op) {
+                case 0x20 -> accumulator = data.getInt(k);                           // BPF_LD | BPF_W | BPF_ABS
+                case 0x54 -> accumulator &= k;                                       // BPF_ALU | BPF_AND | BPF_K
+                case 0x15 -> pc += accumulator == k ? ifTrue : ifFalse;              // BPF_JMP | BPF_JEQ | BPF_K
+                case 0x35 -> pc += Integer.compareUnsigned(accumulator, k) >= 0 ? ifTrue : ifFalse; // BPF_JGE
+                case 0x06 -> {                                                       // BPF_RET | BPF_K
+                    return k;
+                }
+                default -> throw new AssertionError("instruction " + pc + ": opcode 0x" + Integer.toHexString(op)
+                        + " is not one the filter uses");
+            }
+        }
+        throw new AssertionError("the program ran off its end");
+    }
+}
