@@ -529,6 +529,45 @@ class GradeAttackTest {
                 .isLessThan(7 * secret.length());
     }
 
+    /**
+     * Two grades, one after the other (two submissions of one student's, or two students' of a
+     * cohort, even with --jobs 1), of code that needs no program of the host's: in each, tick1.xml's
+     * run reads the inode number the kernel gives the next pipe (one count for the whole machine,
+     * shown in the pipe's name under /proc/self/fd) and quotes it in the report; the hidden scene's
+     * run opens (v + 1) x 100,000 pipes, v the last hex digit of the scene's secret. The second
+     * report's count less the first's, in steps of 100,000, would be v (the rest of the machine
+     * moves the count by thousands, not by hundreds of thousands), but a run that renders hidden
+     * scenes cannot open a pipe.
+     */
+    @Test
+    void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheKernelsCountOfInodes() throws Exception {
+        Path scenes = Files.createDirectory(dir.resolve("scenes"));
+        Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml", null)
+                .replace("<scene>", "<scene><!-- " + secret + " -->"));
+        int digit = Character.digit(secret.charAt(secret.length() - 1), 16);
+
+        Grade first = grade("inode-counter", "--scenes", scenes.toString(), "--time-limit", "30");
+        Grade second = grade("inode-counter", "--scenes", scenes.toString(), "--time-limit", "30");
+
+        assertFailedAndHarmedNothing(first);
+        assertFailedAndHarmedNothing(second);
+        Long before = quotedCount(first), after = quotedCount(second);
+        if (before != null && after != null && before >= 0 && after >= 0) {
+            long read = Math.round((double) ((after - before) & 0xFFFF_FFFFL) / INODE_STEP) - 1;
+            assertThat(read).as("the hidden scene's digit, " + digit + ", read back from the counts " + before
+                    + " and " + after + " (the code can still read the count and move it)").isNotEqualTo(digit);
+        }
+    }
+
+    /** The pipes the inode-counter attack opens for each step of the digit it carries. */
+    private static final int INODE_STEP = 100_000;
+
+    /** The count tick1.xml's report quotes ("count: [N]"), or null where the report quotes none. */
+    private static Long quotedCount(Grade grade) {
+        Matcher count = Pattern.compile("count: \\[(-?\\d+)]").matcher(grade.output());
+        return count.find() ? Long.valueOf(count.group(1)) : null;
+    }
+
     /** How many of the bits of {@code expected} are the same in {@code read}. */
     private static int bitsInCommon(byte[] read, byte[] expected) {
         int same = 0;

@@ -84,7 +84,7 @@ public final class CodeProbe {
         Path output = Files.createDirectory(work.resolve("output"));
         sandbox.share(output, true);
         StudentProcess.CompiledAndRendered run = process.compileAndRender(sources,
-                new StudentProcess.Batch(scenes, List.of(), 1, 1, true), output, "Sphere.java", "Renderer.java",
+                new StudentProcess.Batch(scenes, List.of(), 1, 1, true, false), output, "Sphere.java", "Renderer.java",
                 TIME_LIMIT);
         if (!run.compiled().compiled()) {
             return Lines.none("behaviour could not be checked: it comes from running your "

@@ -60,8 +60,8 @@ final class SceneRuns {
             }
             StudentProcess.Result result = process.render(started.classes(), new StudentProcess.Batch(
                     Grading.batchScenes(scenes, hidden), sceneFiles(batch.size()), limits.width(), limits.height(),
-                    !hidden), CompileStep.childFolder(sandbox, work, (hidden ? "hidden" : "public") + "-run"), left,
-                    limits.timeLimit());
+                    !hidden, hidden), CompileStep.childFolder(sandbox, work, (hidden ? "hidden" : "public") + "-run"),
+                    left, limits.timeLimit());
             outcomes.addAll(result.outcomes());
             traces.addAll(result.traces());
             if (!hidden) {

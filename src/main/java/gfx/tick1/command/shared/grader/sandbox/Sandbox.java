@@ -113,9 +113,11 @@ public final class Sandbox {
     /**
      * What this machine gives every sandbox made here: the bwrap (null for none), where control
      * groups are made (or null), the seccomp filter's file (or null), and whether each run's output
-     * folder can be a file system of its own, and the host's files the runs see (null for none).
+     * folder can be a file system of its own, the host's files the runs see (null for none), and
+     * the stricter filter's file of the runs that render hidden scenes (null with no filter).
      */
-    private record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDisks, SystemFiles system) {
+    private record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDisks, SystemFiles system,
+            Path hiddenRunFilter) {
     }
 
     /**
@@ -153,7 +155,7 @@ public final class Sandbox {
 
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
     public static Sandbox unconfined() {
-        return new Sandbox(new Host(null, null, null, false, null), -1, 0);
+        return new Sandbox(new Host(null, null, null, false, null, null), -1, 0);
     }
 
     /**
@@ -174,8 +176,10 @@ public final class Sandbox {
             throw new Unavailable("cannot tell which user this is (" + e.getMessage() + ")");
         }
         Path seccompFilter;
+        Path hiddenRunFilter;
         try {
-            seccompFilter = SeccompFilter.writeForThisMachine();
+            seccompFilter = SeccompFilter.writeForThisMachine(false);
+            hiddenRunFilter = SeccompFilter.writeForThisMachine(true);
         } catch (IOException e) {
             throw new Unavailable("cannot write the sandbox's seccomp filter (" + e.getMessage() + ")");
         }
@@ -189,7 +193,8 @@ public final class Sandbox {
                     + ")");
         }
         Host host = new Host(bwrap, Cgroup.find(), seccompFilter, root
-                && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks(), system);
+                && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks(), system,
+                hiddenRunFilter);
         Sandbox sandbox = new Sandbox(host,
                 root ? FIRST_UID + RUN_USERS.nextInt(JOB_UID_STEP) : -1, 0);
         sandbox.selfTest();
@@ -361,14 +366,16 @@ public final class Sandbox {
     /**
      * The command that runs {@code command} inside the sandbox, with {@code binds}, at most
      * {@code cpuSeconds} of processor time and {@code addressSpaceMiB} of address space, and, if
-     * {@code oneCore}, on one processor core only.
+     * {@code oneCore}, on one processor core only; with {@code hiddenScenes}, under the hidden runs'
+     * stricter seccomp filter.
      */
     List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB, boolean oneCore,
-            Cgroup cgroup) {
+            Cgroup cgroup, boolean hiddenScenes) {
         if (!confined) {
             return command;
         }
-        List<String> wrapped = new ArrayList<>(startCommand(cgroup));
+        List<String> wrapped = new ArrayList<>(startCommand(cgroup,
+                hiddenScenes ? host.hiddenRunFilter() : host.seccompFilter()));
         wrapped.addAll(limits(cpuSeconds, addressSpaceMiB, oneCore));
         wrapped.addAll(List.of("--", host.bwrap().toString(),
                 "--unshare-all", "--unshare-user", "--disable-userns",
@@ -429,16 +436,17 @@ public final class Sandbox {
      * The shell that starts the sandbox: it moves itself into the run's control group (when there
      * is one; it fails with status 125 rather than run outside it), opens the {@link SeccompFilter}
      * on descriptor {@value #FILTER_FD} for bwrap (the one way to hand bwrap a descriptor through
-     * Java's ProcessBuilder), and becomes the run's first program. Empty when there is neither.
+     * Java's ProcessBuilder), and becomes the run's first program: {@code filter}'s file, or null
+     * for none. Empty when there is neither.
      */
-    private List<String> startCommand(Cgroup cgroup) {
-        if (cgroup == null && host.seccompFilter() == null) {
+    private List<String> startCommand(Cgroup cgroup, Path filter) {
+        if (cgroup == null && filter == null) {
             return List.of();
         }
         List<String> command = new ArrayList<>(List.of(SH.toString(), "-c",
                 "f=$1; shift; while [ \"$1\" != -- ]; do echo $$ > \"$1/cgroup.procs\" || exit 125; shift; done; "
                         + "shift; if [ -n \"$f\" ]; then exec \"$@\" " + FILTER_FD + "<\"$f\"; else exec \"$@\"; fi",
-                "sh", host.seccompFilter() == null ? "" : host.seccompFilter().toString()));
+                "sh", filter == null ? "" : filter.toString()));
         if (cgroup != null) {
             cgroup.folders().forEach(group -> command.add(group.toString()));
         }
@@ -639,7 +647,7 @@ public final class Sandbox {
     private void selfTest() throws Unavailable, InterruptedException {
         try {
             Process process = processFor(wrap(List.of(TRUE.toString()),
-                    List.of(new Bind(TRUE, TRUE.toString(), false)), 5, 256, false, null))
+                    List.of(new Bind(TRUE, TRUE.toString(), false)), 5, 256, false, null, false))
                     .redirectErrorStream(true).start();
             process.getOutputStream().close();
             byte[] said = process.getInputStream().readNBytes(4096);

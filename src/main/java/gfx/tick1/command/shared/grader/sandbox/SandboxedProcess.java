@@ -35,16 +35,17 @@ final class SandboxedProcess {
      * What to run: the harness's arguments; the folders bound in; the file system of the output
      * folder among them, whose caps the run is held to (or null: none is); the time limit, which for
      * a run that compiles first starts again when the harness logs "compiled" in {@code progress}
-     * (null for any other run); and its JVM.
+     * (null for any other run); its JVM; and whether it renders the organiser's hidden scenes (then
+     * under the stricter seccomp filter: {@link SeccompFilter}).
      * Made by {@link #of} and the methods that return a changed copy, in the order the folders are bound.
      */
     record Request(List<String> harnessArguments, List<Bind> binds, OutputDisk output, Duration timeLimit,
             Path progress,
-            Jvm jvm) {
+            Jvm jvm, boolean hiddenScenes) {
 
         /** The harness run with {@code harnessArguments} in {@code jvm} within {@code timeLimit}, nothing bound in. */
         static Request of(List<String> harnessArguments, Duration timeLimit, Jvm jvm) {
-            return new Request(List.copyOf(harnessArguments), List.of(), null, timeLimit, null, jvm);
+            return new Request(List.copyOf(harnessArguments), List.of(), null, timeLimit, null, jvm, false);
         }
 
         /** The same run with {@code folder} bound in, read-only, at {@code inside}. */
@@ -60,17 +61,22 @@ final class SandboxedProcess {
         /** The same run with {@code disk}'s folder bound in, writable, at {@code inside}, as its output folder. */
         Request output(OutputDisk disk, String inside) {
             return new Request(harnessArguments, plus(new Bind(disk.folder(), inside, true)), disk, timeLimit,
-                    progress, jvm);
+                    progress, jvm, hiddenScenes);
         }
 
         /** The same run compiling first: its time limit starts again when {@code progress} says it compiled. */
         Request compilingFirst(Path progress) {
-            return new Request(harnessArguments, binds, output, timeLimit, progress, jvm);
+            return new Request(harnessArguments, binds, output, timeLimit, progress, jvm, hiddenScenes);
+        }
+
+        /** The same run rendering the organiser's hidden scenes, under the stricter filter, or not. */
+        Request hidingScenes(boolean hidden) {
+            return new Request(harnessArguments, binds, output, timeLimit, progress, jvm, hidden);
         }
 
         /** The same run with {@code all} bound in instead. */
         Request withBinds(List<Bind> all) {
-            return new Request(harnessArguments, List.copyOf(all), output, timeLimit, progress, jvm);
+            return new Request(harnessArguments, List.copyOf(all), output, timeLimit, progress, jvm, hiddenScenes);
         }
 
         /** How long the run may go on once the harness logs that it compiled: none for a run that does not compile. */
@@ -121,7 +127,8 @@ final class SandboxedProcess {
             throw new InterruptedException("the grade was stopped");
         }
         int cpuSeconds = (int) Math.ceil(request.timeLimit().plus(request.thenLimit()).toMillis() / 1000.0) + 1;
-        try (Started started = start(sandbox, command, request.binds(), cpuSeconds, request.jvm())) {
+        try (Started started = start(sandbox, command, request.binds(), cpuSeconds, request.jvm(),
+                request.hiddenScenes())) {
             Process process = started.process();
             running = process;
             try {
@@ -174,9 +181,11 @@ final class SandboxedProcess {
     /**
      * Starts {@code command} in {@code sandbox} with {@code binds}, at most {@code cpuSeconds} of
      * processor time, the heap of {@code jvm} and the address space and totals that go with it; on
-     * one core when it says so. Its standard streams are the caller's to use.
+     * one core when it says so; with {@code hiddenScenes}, under the hidden runs' filter. Its
+     * standard streams are the caller's to use.
      */
-    static Started start(Sandbox sandbox, List<String> command, List<Bind> binds, int cpuSeconds, Jvm jvm)
+    static Started start(Sandbox sandbox, List<String> command, List<Bind> binds, int cpuSeconds, Jvm jvm,
+            boolean hiddenScenes)
             throws IOException {
         int heapMegabytes = jvm.heapMegabytes();
         boolean oneCore = jvm.oneCore();
@@ -185,7 +194,8 @@ final class SandboxedProcess {
         try {
             sandbox.warm(binds);
             Process process = Sandbox.processFor(sandbox.wrap(command, binds, cpuSeconds,
-                    heapMegabytes + NON_HEAP_MEGABYTES, oneCore, cgroup)).redirectErrorStream(true).start();
+                    heapMegabytes + NON_HEAP_MEGABYTES, oneCore, cgroup, hiddenScenes))
+                    .redirectErrorStream(true).start();
             return new Started(process, cgroup);
         } catch (IOException | RuntimeException e) {
             if (cgroup != null) {

@@ -39,7 +39,17 @@ import java.util.Map;
  *   <li>{@code process_madvise}, which gives the same advice for a process's memory.
  * </ul>
  *
- * Each is answered {@code EOPNOTSUPP} ("Operation not supported"), which glibc's
+ * A run that renders the organiser's hidden scenes has a stricter filter, which also refuses the
+ * calls that make an object the kernel numbers from a count of the whole machine's, and whose
+ * number any later run can read: a pipe or a socket (the inode number in its name,
+ * {@code pipe:[N]} in /proc/self/fd), a memfd, System V shared memory, a POSIX message queue, an
+ * AIO context, userfaultfd. Opening (v + 1) x 100,000 pipes, a hidden run could otherwise leave v
+ * for the next grade's public run to read. The render needs none of them; the public run, which
+ * compiles, keeps them. Not {@code socketpair}: the JVM makes one as its file I/O starts
+ * (sun.nio.ch.FileDispatcherImpl), so native code can still move the count with it; Java alone
+ * cannot, as starting a process needs pipes.
+ *
+ * <p>Each is answered {@code EOPNOTSUPP} ("Operation not supported"), which glibc's
  * {@code posix_fallocate} meets by writing the bytes (counted by their size). A system call of
  * another architecture than the host's (a 32-bit program, or x32's) kills the process: its
  * numbers are not those below. The JVM and javac use none of the calls refused.
@@ -69,31 +79,42 @@ final class SeccompFilter {
      * One architecture's numbers: AUDIT_ARCH_* (linux/audit.h), ioctl's and madvise's, and those of
      * the calls refused outright.
      */
-    private record Architecture(int audit, int ioctl, int madvise, int[] refused) {
+    private record Architecture(int audit, int ioctl, int madvise, int[] refused, int[] numbering) {
     }
 
     // The numbers are the kernel's: x86-64's arch/x86/entry/syscalls/syscall_64.tbl, AArch64's
     // include/uapi/asm-generic/unistd.h (ioctl 16 and 29, madvise 28 and 233). Refused outright:
     // fallocate, setxattr, lsetxattr, fsetxattr, io_uring_setup, io_uring_enter, io_uring_register, setxattrat,
-    // fadvise64, process_madvise.
+    // fadvise64, process_madvise. Refused in hidden runs (the kernel's counts of numbered objects): pipe
+    // (x86-64 only), pipe2, socket, memfd_create, memfd_secret, io_setup, shmget, mq_open, userfaultfd.
     private static final Architecture X86_64 = new Architecture(0xc000003e, 16, 28,
-            new int[] {285, 188, 189, 190, 425, 426, 427, 463, 221, 440});
+            new int[] {285, 188, 189, 190, 425, 426, 427, 463, 221, 440},
+            new int[] {22, 293, 41, 319, 447, 206, 29, 240, 323});
     private static final Architecture AARCH64 = new Architecture(0xc00000b7, 29, 233,
-            new int[] {47, 5, 6, 7, 425, 426, 427, 463, 223, 440});
+            new int[] {47, 5, 6, 7, 425, 426, 427, 463, 223, 440},
+            new int[] {59, 198, 279, 447, 0, 194, 180, 282});
 
     private SeccompFilter() {
     }
 
-    /** The filter for the host's architecture, or null where tick1 has none (it then warns). */
-    static byte[] forThisMachine() {
-        return forArchitecture(System.getProperty("os.arch", ""));
+    /**
+     * The filter for the host's architecture, or null where tick1 has none (it then warns); with
+     * {@code hiddenScenes}, a hidden run's.
+     */
+    static byte[] forThisMachine(boolean hiddenScenes) {
+        return forArchitecture(System.getProperty("os.arch", ""), hiddenScenes);
     }
 
     /** The filter for an architecture as Java names it ({@code os.arch}), or null where tick1 has none. */
     static byte[] forArchitecture(String name) {
+        return forArchitecture(name, false);
+    }
+
+    /** The filter for an architecture, a hidden run's with {@code hiddenScenes}, or null where tick1 has none. */
+    static byte[] forArchitecture(String name, boolean hiddenScenes) {
         return switch (name) {
-            case "amd64", "x86_64" -> program(X86_64);
-            case "aarch64" -> program(AARCH64);
+            case "amd64", "x86_64" -> program(X86_64, hiddenScenes);
+            case "aarch64" -> program(AARCH64, hiddenScenes);
             default -> null;
         };
     }
@@ -102,7 +123,7 @@ final class SeccompFilter {
      * The filter as bwrap reads it: struct sock_filter ({@code u16 code; u8 jt, jf; u32 k}) in the
      * machine's byte order, both of whose architectures are little-endian.
      */
-    private static byte[] program(Architecture architecture) {
+    private static byte[] program(Architecture architecture, boolean hiddenScenes) {
         Program code = new Program();
         code.add(LOAD_WORD, ARCHITECTURE);
         code.jump(JUMP_EQUAL, architecture.audit(), "number", null);
@@ -112,6 +133,9 @@ final class SeccompFilter {
         code.jump(JUMP_AT_LEAST, X32_BIT, "refuse", null);
         for (int refused : architecture.refused()) {
             code.jump(JUMP_EQUAL, refused, "refuse", null);
+        }
+        for (int numbering : hiddenScenes ? architecture.numbering() : new int[0]) {
+            code.jump(JUMP_EQUAL, numbering, "refuse", null);
         }
         code.jump(JUMP_EQUAL, architecture.ioctl(), "ioctl", null);
         code.jump(JUMP_EQUAL, architecture.madvise(), "madvise", "allow");
@@ -171,10 +195,11 @@ final class SeccompFilter {
 
     /**
      * The filter written to a new file of the grader's alone, deleted when this program ends, for
-     * the shell that starts each sandbox to open for bwrap; null where there is no filter.
+     * the shell that starts each sandbox to open for bwrap; null where there is no filter. With
+     * {@code hiddenScenes}, a hidden run's.
      */
-    static Path writeForThisMachine() throws IOException {
-        byte[] program = forThisMachine();
+    static Path writeForThisMachine(boolean hiddenScenes) throws IOException {
+        byte[] program = forThisMachine(hiddenScenes);
         if (program == null) {
             return null;
         }

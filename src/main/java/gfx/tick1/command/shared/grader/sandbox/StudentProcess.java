@@ -92,9 +92,10 @@ public final class StudentProcess implements AutoCloseable {
 
     /**
      * The scenes one run renders: the files {@code sceneFiles} in the folder {@code scenes}, at
-     * {@code width} x {@code height}; with {@code probes}, the harness also runs the probes.
+     * {@code width} x {@code height}; with {@code probes}, the harness also runs the probes. The
+     * organiser's hidden scenes ({@code hidden}) render under the stricter seccomp filter.
      */
-    public record Batch(Path scenes, List<String> sceneFiles, int width, int height, boolean probes) {
+    public record Batch(Path scenes, List<String> sceneFiles, int width, int height, boolean probes, boolean hidden) {
     }
 
     private final Sandbox sandbox;
@@ -217,7 +218,8 @@ public final class StudentProcess implements AutoCloseable {
         // the JIT's and the collector's work between them.
         int cpuSeconds = ((int) Math.ceil(timeLimit.toMillis() / 1000.0) + 1) * CompileServer.COMPILES_PER_START;
         Launch launch = launch(request);
-        return SandboxedProcess.start(compilerSandbox, launch.command(), launch.binds(), cpuSeconds, request.jvm());
+        return SandboxedProcess.start(compilerSandbox, launch.command(), launch.binds(), cpuSeconds, request.jvm(),
+                false);
     }
 
     private int compilerHeap() {
@@ -316,7 +318,8 @@ public final class StudentProcess implements AutoCloseable {
             throws IOException, InterruptedException {
         try (OutputDisk disk = sandbox.outputDisk(output)) {
             Run run = run(Request.of(renderArguments(batch, List.of(CLASSES)), timeLeft, studentJvm())
-                    .reading(classes, CLASSES).reading(batch.scenes(), SCENES).output(disk, OUTPUT));
+                    .reading(classes, CLASSES).reading(batch.scenes(), SCENES).output(disk, OUTPUT)
+                    .hidingScenes(batch.hidden()));
             return rendered(run, output, batch, timeLimit);
         }
     }
@@ -407,7 +410,7 @@ public final class StudentProcess implements AutoCloseable {
         try (OutputDisk disk = sandbox.outputDisk(output)) {
             // With the probes, so that the classes they load are in the archive too.
             List<String> code = List.of(StudentHarness.COMPILE_FIRST, SOURCES, "Sphere.java", "Renderer.java");
-            Run run = run(Request.of(renderArguments(new Batch(scenes, List.of("0.xml"), 8, 6, true), code),
+            Run run = run(Request.of(renderArguments(new Batch(scenes, List.of("0.xml"), 8, 6, true, false), code),
                     ARCHIVE_TIME_LIMIT, new Jvm(compilerHeap(), false,
                             List.of("-XX:ArchiveClassesAtExit=" + inside(output, OUTPUT) + "/" + SHARED_ARCHIVE)))
                     .reading(sources, SOURCES).reading(scenes, SCENES).output(disk, OUTPUT));

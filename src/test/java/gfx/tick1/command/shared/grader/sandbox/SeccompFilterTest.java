@@ -26,7 +26,7 @@ class SeccompFilterTest {
      * arch/x86/entry/syscalls/syscall_64.tbl, AArch64's include/uapi/asm-generic/unistd.h.
      */
     record Machine(String osArch, int audit, int read, int openat, int mmap, int ioctl, int fallocate,
-            int fadvise64, int madvise, int processMadvise) {
+            int fadvise64, int madvise, int processMadvise, int pipe2, int socket, int socketpair, int memfdCreate) {
 
         /** What the filter answers this machine's call {@code number} with these arguments. */
         int answer(int number, long... arguments) {
@@ -44,8 +44,31 @@ class SeccompFilterTest {
     }
 
     static Stream<Machine> machines() {
-        return Stream.of(new Machine("amd64", 0xc000003e, 0, 257, 9, 16, 285, 221, 28, 440),
-                new Machine("aarch64", 0xc00000b7, 63, 56, 222, 29, 47, 223, 233, 440));
+        return Stream.of(new Machine("amd64", 0xc000003e, 0, 257, 9, 16, 285, 221, 28, 440, 293, 41, 53, 319),
+                new Machine("aarch64", 0xc00000b7, 63, 56, 222, 29, 47, 223, 233, 440, 59, 198, 199, 279));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void aHiddenRunCannotMakeThePipesSocketsAndMemfdsTheKernelNumbersForTheWholeMachine(Machine machine) {
+        byte[] hidden = SeccompFilter.forArchitecture(machine.osArch(), true);
+        assertThat(run(hidden, machine.audit(), machine.pipe2(), 0, 0)).as("pipe2 in a hidden run").isEqualTo(REFUSED);
+        assertThat(run(hidden, machine.audit(), machine.socket(), 1, 1, 0)).as("socket in a hidden run")
+                .isEqualTo(REFUSED);
+        assertThat(run(hidden, machine.audit(), machine.memfdCreate(), 0, 0)).as("memfd_create in a hidden run")
+                .isEqualTo(REFUSED);
+        // The JVM's file I/O makes one socket pair as it starts.
+        assertThat(run(hidden, machine.audit(), machine.socketpair(), 1, 1, 0, 0)).as("socketpair in a hidden run")
+                .isEqualTo(ALLOW);
+        assertThat(run(hidden, machine.audit(), machine.read(), 3, 0, 4096)).as("read in a hidden run")
+                .isEqualTo(ALLOW);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void theOtherRunsMayMakePipesAndSockets(Machine machine) {
+        assertThat(machine.answer(machine.pipe2(), 0, 0)).as("pipe2").isEqualTo(ALLOW);
+        assertThat(machine.answer(machine.socket(), 1, 1, 0)).as("socket").isEqualTo(ALLOW);
     }
 
     @ParameterizedTest(name = "{0}")
