@@ -541,23 +541,45 @@ class GradeAttackTest {
      */
     @Test
     void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheKernelsCountOfInodes() throws Exception {
+        assertTheHiddenDigitIsNotCarried("inode-counter", INODE_STEP);
+    }
+
+    /**
+     * The same, through the same count, with no pipe nor socket: /proc numbers a process's files
+     * from it as they are first looked at, so the hidden scene's run starts threads that each look
+     * at their own files in /proc until the count has moved (v + 1) x 50,000, and tick1.xml's run
+     * reads it as the highest inode number of the /proc files of threads it starts.
+     */
+    @Test
+    void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheInodeNumbersOfProc() throws Exception {
+        assertTheHiddenDigitIsNotCarried("proc-inode-counter", PROC_INODE_STEP);
+    }
+
+    /**
+     * Two grades of {@code attack} with a scene whose secret's last hex digit is v: the second
+     * report's count less the first's, in steps of {@code step}, less one, is not v.
+     */
+    private void assertTheHiddenDigitIsNotCarried(String attack, int step) throws Exception {
         Path scenes = Files.createDirectory(dir.resolve("scenes"));
         Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml", null)
                 .replace("<scene>", "<scene><!-- " + secret + " -->"));
         int digit = Character.digit(secret.charAt(secret.length() - 1), 16);
 
-        Grade first = grade("inode-counter", "--scenes", scenes.toString(), "--time-limit", "30");
-        Grade second = grade("inode-counter", "--scenes", scenes.toString(), "--time-limit", "30");
+        Grade first = grade(attack, "--scenes", scenes.toString(), "--time-limit", "30");
+        Grade second = grade(attack, "--scenes", scenes.toString(), "--time-limit", "30");
 
         assertFailedAndHarmedNothing(first);
         assertFailedAndHarmedNothing(second);
         Long before = quotedCount(first), after = quotedCount(second);
         if (before != null && after != null && before >= 0 && after >= 0) {
-            long read = Math.round((double) ((after - before) & 0xFFFF_FFFFL) / INODE_STEP) - 1;
+            long read = Math.round((double) ((after - before) & 0xFFFF_FFFFL) / step) - 1;
             assertThat(read).as("the hidden scene's digit, " + digit + ", read back from the counts " + before
                     + " and " + after + " (the code can still read the count and move it)").isNotEqualTo(digit);
         }
     }
+
+    /** How far the proc-inode-counter attack moves the count for each step of the digit it carries. */
+    private static final int PROC_INODE_STEP = 50_000;
 
     /** The pipes the inode-counter attack opens for each step of the digit it carries. */
     private static final int INODE_STEP = 100_000;

@@ -366,7 +366,7 @@ public final class Sandbox {
     /**
      * The command that runs {@code command} inside the sandbox, with {@code binds}, at most
      * {@code cpuSeconds} of processor time and {@code addressSpaceMiB} of address space, and, if
-     * {@code oneCore}, on one processor core only; with {@code hiddenScenes}, under the hidden runs'
+     * {@code oneCore}, on one processor core only; with {@code hiddenScenes}, with no /proc and under the hidden runs'
      * stricter seccomp filter.
      */
     List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB, boolean oneCore,
@@ -389,9 +389,18 @@ public final class Sandbox {
         // so neither tick1, nor the grader's temporary folder, nor any scene of the organiser's.
         wrapped.addAll(host.system().bwrapArguments());
         // Every tmpfs has a size, and / and /dev (bwrap's own, of half the host's memory) are read-only.
-        wrapped.addAll(List.of("--proc", "/proc"));
-        for (Path counters : MACHINE_COUNTERS) {
-            wrapped.addAll(List.of("--ro-bind", "/dev/null", counters.toString()));
+        if (hiddenScenes) {
+            // No /proc at all: it numbers a process's files, as they are first looked at, from the count the kernel
+            // numbers pipes and sockets by, one for the whole machine, so a run that looked at many could leave a
+            // number for a later run to read. Without /proc the loader cannot find the launcher's libraries from
+            // where java is ($ORIGIN), so it is told.
+            wrapped.addAll(List.of("--dir", "/proc", "--setenv", "LD_LIBRARY_PATH",
+                    Path.of(System.getProperty("java.home"), "lib").toString()));
+        } else {
+            wrapped.addAll(List.of("--proc", "/proc"));
+            for (Path counters : MACHINE_COUNTERS) {
+                wrapped.addAll(List.of("--ro-bind", "/dev/null", counters.toString()));
+            }
         }
         wrapped.addAll(List.of("--dev", "/dev",
                 "--size", Long.toString(SHM_BYTES), "--perms", "1777", "--tmpfs", "/dev/shm",
