@@ -330,18 +330,7 @@ public final class Sandbox {
         if (!confined) {
             return;
         }
-        host.system().warm();
-        java.nio.ByteBuffer buffer = java.nio.ByteBuffer.allocateDirect(1 << 20);
-        for (Bind bind : binds) {
-            if (!bind.writable()) {
-                try (var files = Files.walk(bind.outside())) {
-                    files.filter(file -> Files.isRegularFile(file, java.nio.file.LinkOption.NOFOLLOW_LINKS))
-                            .forEach(file -> SystemFiles.readWhole(file, buffer));
-                } catch (IOException | java.io.UncheckedIOException e) {
-                    // A folder the grader made for this run: what cannot be listed, the run cannot read either.
-                }
-            }
-        }
+        host.system().warm(binds.stream().filter(bind -> !bind.writable()).map(Bind::outside).toList());
     }
 
     /**
@@ -395,7 +384,7 @@ public final class Sandbox {
             // number for a later run to read. Without /proc the loader cannot find the launcher's libraries from
             // where java is ($ORIGIN), so it is told.
             wrapped.addAll(List.of("--dir", "/proc", "--setenv", "LD_LIBRARY_PATH",
-                    Path.of(System.getProperty("java.home"), "lib").toString()));
+                    javaHome().resolve("lib").toString()));
         } else {
             wrapped.addAll(List.of("--proc", "/proc"));
             for (Path counters : MACHINE_COUNTERS) {

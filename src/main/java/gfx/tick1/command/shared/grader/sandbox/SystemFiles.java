@@ -171,12 +171,22 @@ final class SystemFiles {
      * skipped: the run will find it missing too). Which pages are in memory the kernel tells
      * ({@code mincore}, through {@link MappedByteBuffer#isLoaded}) only for files this grader could
      * write (as root): those are read only when one of their pages is out; the others always are.
+     * And every file of {@code folders} (a run's own, bound read-only: the harness's jar, the class
+     * data archive, its scenes), whole: what cannot be listed, the run cannot read either.
      */
-    void warm() {
+    void warm(List<Path> folders) {
         ByteBuffer buffer = ByteBuffer.allocateDirect(1 << 20);
         for (Pages file : pages()) {
             if (file.mapped() == null || !file.mapped().isLoaded()) {
                 readWhole(file.file(), buffer);
+            }
+        }
+        for (Path folder : folders) {
+            try (var inside = Files.walk(folder)) {
+                inside.filter(file -> Files.isRegularFile(file, LinkOption.NOFOLLOW_LINKS))
+                        .forEach(file -> readWhole(file, buffer));
+            } catch (IOException | java.io.UncheckedIOException e) {
+                // A folder the grader made for this run, gone or unreadable: nothing of it to time.
             }
         }
     }
@@ -207,7 +217,7 @@ final class SystemFiles {
     }
 
     /** Reads {@code file} to its end through {@code buffer}, and forgets what it read. */
-    static void readWhole(Path file, ByteBuffer buffer) {
+    private static void readWhole(Path file, ByteBuffer buffer) {
         try (FileChannel channel = FileChannel.open(file)) {
             do {
                 buffer.clear();

@@ -118,7 +118,7 @@ class SystemFilesTest {
             MappedByteBuffer pages = channel.map(FileChannel.MapMode.READ_ONLY, 0, noise.length);
             assumeThat(pages.isLoaded()).as("the file's pages were dropped from memory").isFalse();
 
-            SystemFiles.following(List.of(file)).warm();
+            SystemFiles.following(List.of(file)).warm(List.of());
 
             assertThat(pages.isLoaded()).as("every page of the file in memory after warming").isTrue();
         }
