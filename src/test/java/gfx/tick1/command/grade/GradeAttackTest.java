@@ -428,8 +428,7 @@ class GradeAttackTest {
         assumeThat(Files.isWritable(Path.of("/usr"))).as("a folder can be made in /usr (as root)").isTrue();
         Path scenes = Files.createDirectory(ORGANISERS_SCENES);
         try {
-            Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml", null)
-                    .replace("<scene>", "<scene><!-- " + secret + " -->"));
+            Files.writeString(scenes.resolve("secret-scene.xml"), secretScene());
             Grade grade = grade("read-the-organisers-scenes", "--scenes", scenes.toString());
             assertFailedAndHarmedNothing(grade);
             assertThat(grade.output()).as("what the code found in the folder: no folder at all")
@@ -453,8 +452,7 @@ class GradeAttackTest {
         assumeThat(Files.isWritable(Path.of("/usr"))).as("a file can be made in /usr (as root)").isTrue();
         Path scenes = Files.createDirectory(dir.resolve("scenes"));
         try {
-            Files.writeString(HIDDEN_SCENE_IN_USR, resourceOr("/gfx/tick1/scenes/hidden.xml", null)
-                    .replace("<scene>", "<scene><!-- " + secret + " -->"));
+            Files.writeString(HIDDEN_SCENE_IN_USR, secretScene());
             Files.createSymbolicLink(scenes.resolve("secret-scene.xml"), HIDDEN_SCENE_IN_USR);
             Grade grade = grade("read-a-scene-in-usr", "--scenes", scenes.toString());
             assertFailedAndHarmedNothing(grade);
@@ -478,9 +476,8 @@ class GradeAttackTest {
     @Test
     void aSceneWithAHardLinkInUsrIsHiddenFromTheCode() throws Exception {
         assumeThat(Files.isWritable(Path.of("/usr"))).as("a file can be made in /usr (as root)").isTrue();
-        Path scenes = Files.createDirectory(dir.resolve("scenes"));
-        Path scene = Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml",
-                null).replace("<scene>", "<scene><!-- " + secret + " -->"));
+        Path scenes = secretScenes();
+        Path scene = scenes.resolve("secret-scene.xml");
         try {
             try {
                 Files.createLink(HIDDEN_SCENE_IN_USR, scene);
@@ -507,9 +504,7 @@ class GradeAttackTest {
      */
     @Test
     void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheHostsPageCache() throws Exception {
-        Path scenes = Files.createDirectory(dir.resolve("scenes"));
-        Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml", null)
-                .replace("<scene>", "<scene><!-- " + secret + " -->"));
+        Path scenes = secretScenes();
         // Out of memory, so that only the first grade's reads would bring pages of it back.
         Process drop = new ProcessBuilder("/bin/dd", "if=" + PAGE_CACHE_FILE, "iflag=nocache", "count=0")
                 .redirectErrorStream(true).start();
@@ -560,9 +555,7 @@ class GradeAttackTest {
      * report's count less the first's, in steps of {@code step}, less one, is not v.
      */
     private void assertTheHiddenDigitIsNotCarried(String attack, int step) throws Exception {
-        Path scenes = Files.createDirectory(dir.resolve("scenes"));
-        Files.writeString(scenes.resolve("secret-scene.xml"), resourceOr("/gfx/tick1/scenes/hidden.xml", null)
-                .replace("<scene>", "<scene><!-- " + secret + " -->"));
+        Path scenes = secretScenes();
         int digit = Character.digit(secret.charAt(secret.length() - 1), 16);
 
         Grade first = grade(attack, "--scenes", scenes.toString(), "--time-limit", "30");
@@ -588,6 +581,18 @@ class GradeAttackTest {
     private static Long quotedCount(Grade grade) {
         Matcher count = Pattern.compile("count: \\[(-?\\d+)]").matcher(grade.output());
         return count.find() ? Long.valueOf(count.group(1)) : null;
+    }
+
+    /** The organiser's hidden scene with this test's secret in a comment its scene element begins with. */
+    private String secretScene() throws IOException {
+        return resourceOr("/gfx/tick1/scenes/hidden.xml", null).replace("<scene>", "<scene><!-- " + secret + " -->");
+    }
+
+    /** A --scenes folder of the test's, holding {@link #secretScene()} as secret-scene.xml. */
+    private Path secretScenes() throws IOException {
+        Path scenes = Files.createDirectory(dir.resolve("scenes"));
+        Files.writeString(scenes.resolve("secret-scene.xml"), secretScene());
+        return scenes;
     }
 
     /** How many of the bits of {@code expected} are the same in {@code read}. */
