@@ -51,7 +51,7 @@ class GradeCohortTest {
     static Path shared;
 
     /** One student of the generated cohort: the folder Moodle gives them, their files, and the grade they must get. */
-    private record Student(String name, int id, Map<String, byte[]> files, boolean passes) {
+    record Student(String name, int id, Map<String, byte[]> files, boolean passes) {
         String folder() {
             return name + "_" + id + "_assignsubmission_file_";
         }
@@ -155,7 +155,7 @@ class GradeCohortTest {
                 .resolve("feedback.txt"));
     }
 
-    private static Map<String, byte[]> files(StudentSolution solution) {
+    static Map<String, byte[]> files(StudentSolution solution) {
         return files("", solution);
     }
 
@@ -166,7 +166,7 @@ class GradeCohortTest {
         return files;
     }
 
-    private static String resource(String name) throws IOException {
+    static String resource(String name) throws IOException {
         try (var in = GradeCohortTest.class.getResourceAsStream(name)) {
             assertThat(in).as(name).isNotNull();
             return new String(in.readAllBytes(), StandardCharsets.UTF_8);

@@ -21,7 +21,9 @@ import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Queue;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -195,23 +197,23 @@ public final class CohortGrade {
             Progress progress = new Progress(todo.size());
             ExecutorService pool = Executors.newFixedThreadPool(count, new JobThreads());
             try {
-                List<Future<?>> graded = new ArrayList<>();
+                // Every public run before any hidden one: the runs a student's report quotes then never come
+                // after a run that had a hidden scene, nor run beside one, so none can time it or feel it use
+                // the processor, whatever order the jobs take the submissions in.
+                List<Future<?>> begun = new ArrayList<>();
                 for (int index : todo) {
-                    graded.add(pool.submit(() -> gradeOne(index, progress)));
+                    begun.add(pool.submit(() -> begin(index, progress)));
                 }
-                for (Future<?> one : graded) {
-                    try {
-                        one.get();
-                    } catch (ExecutionException e) {
-                        // stop() ends the jobs' processes, and a grade it cut short ends with an interruption.
-                        if (!(stopping && e.getCause() instanceof InterruptedException)) {
-                            throw new IllegalStateException("a cohort job failed outside any grade", e.getCause());
-                        }
-                    }
+                awaitAll(begun);
+                List<Future<?>> finished = new ArrayList<>();
+                for (Job job : idle) {
+                    finished.add(pool.submit(() -> finishAll(job, progress)));
                 }
+                awaitAll(finished);
             } finally {
                 pool.shutdownNow();
                 pool.awaitTermination(1, TimeUnit.MINUTES);
+                idle.forEach(Job::forgetWaiting);   // grades stop() cut short between their halves
                 synchronized (processes) {
                     processes.forEach(StudentProcess::close);   // the jobs' warm compilers
                 }
@@ -219,18 +221,50 @@ public final class CohortGrade {
             }
         }
 
-        /**
-         * Grades the {@code index}-th submission with an idle job. Whatever goes wrong in its grade
-         * is that submission's failure, with a reason; the cohort goes on.
-         */
-        private Void gradeOne(int index, Progress progress) throws InterruptedException {
+        private void awaitAll(List<Future<?>> tasks) throws InterruptedException {
+            for (Future<?> one : tasks) {
+                try {
+                    one.get();
+                } catch (ExecutionException e) {
+                    // stop() ends the jobs' processes, and a grade it cut short ends with an interruption.
+                    if (!(stopping && e.getCause() instanceof InterruptedException)) {
+                        throw new IllegalStateException("a cohort job failed outside any grade", e.getCause());
+                    }
+                }
+            }
+        }
+
+        /** Begins the {@code index}-th submission's grade with an idle job: its public scenes. */
+        private Void begin(int index, Progress progress) throws InterruptedException {
             if (stopping) {
                 return null;
             }
             Job job = idle.take();
+            try {
+                guarded(index, progress, () -> job.begin(submissions.get(index), index, this));
+            } finally {
+                idle.add(job);
+            }
+            return null;
+        }
+
+        /** Finishes, one after the other, the grades {@code job} began and left waiting for their hidden scenes. */
+        private Void finishAll(Job job, Progress progress) throws InterruptedException {
+            for (Job.Waiting waiting = job.nextWaiting(); waiting != null && !stopping; waiting = job.nextWaiting()) {
+                Job.Waiting grade = waiting;
+                guarded(grade.index(), progress, () -> job.finish(grade, this));
+            }
+            return null;
+        }
+
+        /**
+         * Does one step of the {@code index}-th submission's grade. Whatever goes wrong in it is that
+         * submission's failure, with a reason; the cohort goes on.
+         */
+        private void guarded(int index, Progress progress, Step step) throws InterruptedException {
             Submission submission = submissions.get(index);
             try {
-                StudentResult result = job.grade(submission, index, this);
+                StudentResult result = step.run();
                 if (result != null) {
                     progress.done(result.passed());
                 }
@@ -244,10 +278,7 @@ public final class CohortGrade {
                     results[index] = notGraded(submission, why);
                     progress.done(false);
                 }
-            } finally {
-                idle.add(job);
             }
-            return null;
         }
 
         void storeResult(int index, Submission submission, SubmissionGrader.Graded graded, Path entry)
@@ -266,6 +297,12 @@ public final class CohortGrade {
         }
     }
 
+    /** One step of a grade: its result, or null when there is none yet or stop() cut it short. */
+    @FunctionalInterface
+    private interface Step {
+        StudentResult run() throws IOException, InterruptedException;
+    }
+
     /** The most characters of why a submission could not be graded. */
     private static final int WHY_CAP = 200;
 
@@ -282,6 +319,7 @@ public final class CohortGrade {
         private final int number;
         private final Path folder;
         private final StudentProcess shared;
+        private final Queue<Waiting> waiting = new ConcurrentLinkedQueue<>();
         private SubmissionGrader grader;
 
         Job(int number, Path folder, StudentProcess shared) {
@@ -315,23 +353,54 @@ public final class CohortGrade {
             }
         }
 
-        /** Grades {@code submission} and stores its result; null when the grade was cut short by stop(). */
-        StudentResult grade(Submission submission, int index, CohortRun run) throws IOException,
+        /**
+         * Begins {@code submission}'s grade: stores its result when the grade ends there, else
+         * leaves it waiting for {@link #finish}. The result, or null when the grade waits or was
+         * cut short by stop().
+         */
+        StudentResult begin(Submission submission, int index, CohortRun run) throws IOException,
                 InterruptedException {
             if (grader == null) {
                 setUp();
             }
             Path submissionWork = Files.createDirectory(folder.resolve("submission-" + index));
             Path entry = store.newEntry();
-            SubmissionGrader.Graded graded;
+            boolean waits = false;
             try {
-                graded = grader.grade(submission, submissionWork, entry, new PrintWriter(Writer.nullWriter()), err);
+                SubmissionGrader.Begun begun = grader.begin(submission, submissionWork, entry,
+                        new PrintWriter(Writer.nullWriter()), err);
+                if (begun instanceof SubmissionGrader.Halfway halfway) {
+                    waiting.add(new Waiting(index, submissionWork, entry, halfway.setAside(submissionWork)));
+                    waits = true;
+                    return null;
+                }
+                return stored(((SubmissionGrader.Finished) begun).graded(), index, entry, run);
             } catch (IOException | RuntimeException | Error e) {
                 WorkFolder.delete(entry);
                 throw e;
             } finally {
-                WorkFolder.delete(submissionWork);
+                if (!waits) {
+                    WorkFolder.delete(submissionWork);
+                }
             }
+        }
+
+        /** Finishes a grade {@link #begin} left waiting, and stores its result; null when stop() cut it short. */
+        StudentResult finish(Waiting grade, CohortRun run) throws IOException, InterruptedException {
+            try {
+                return stored(grader.finish(grade.halfway(), grade.work(), new PrintWriter(Writer.nullWriter())),
+                        grade.index(), grade.entry(), run);
+            } catch (IOException | RuntimeException | Error e) {
+                WorkFolder.delete(grade.entry());
+                throw e;
+            } finally {
+                WorkFolder.delete(grade.work());
+            }
+        }
+
+        /** Stores a grade's result in {@code entry}; null, with nothing stored, when stop() cut it short. */
+        private StudentResult stored(SubmissionGrader.Graded graded, int index, Path entry, CohortRun run)
+                throws IOException, InterruptedException {
             String diskShort = graded.result().passed() ? null : GraderDisk.shortOfSpace(folder);
             if (diskShort != null) {
                 WorkFolder.delete(entry);
@@ -342,8 +411,25 @@ public final class CohortGrade {
                 WorkFolder.delete(entry);
                 return null;
             }
-            run.storeResult(index, submission, graded, entry);
+            run.storeResult(index, run.submissions.get(index), graded, entry);
             return graded.result();
+        }
+
+        /** The next grade waiting for its hidden scenes, or null. */
+        Waiting nextWaiting() {
+            return waiting.poll();
+        }
+
+        /** Deletes what the grades still waiting would have stored: stop() cut them short. */
+        void forgetWaiting() {
+            for (Waiting grade = waiting.poll(); grade != null; grade = waiting.poll()) {
+                WorkFolder.delete(grade.entry());
+                WorkFolder.delete(grade.work());
+            }
+        }
+
+        /** A grade begun and waiting for its hidden scenes: its submission, folders and first half. */
+        record Waiting(int index, Path work, Path entry, SubmissionGrader.Halfway halfway) {
         }
     }
 

@@ -69,16 +69,18 @@ final class SceneJudge {
         this.out = out;
     }
 
-    /** Every scene judged, in grading order: the public ones, then the hidden ones. */
-    List<Judged> judgeAll(SceneRuns.Rendered rendered) {
-        List<CourseScene> ordered = new ArrayList<>(grading.batch(false));
-        ordered.addAll(grading.batch(true));
+    /**
+     * The scenes of one batch judged, in grading order (the public ones come first, then the
+     * hidden ones); {@code probesShown}: an earlier scene's explanation has the findings.
+     */
+    List<Judged> judgeBatch(boolean hidden, SceneRuns.Ran ran, boolean probesShown) {
+        List<CourseScene> batch = grading.batch(hidden);
+        int before = hidden ? grading.batch(false).size() : 0;
         List<Judged> judged = new ArrayList<>();
-        boolean probesShown = false;
-        for (int i = 0; i < ordered.size(); i++) {
-            Judged scene = judge(i + 1, ordered.get(i), rendered.outcomes().get(i), rendered.traces().get(i),
-                    probesShown);
-            probesShown |= scene.showedProbes();
+        boolean shown = probesShown;
+        for (int i = 0; i < batch.size(); i++) {
+            Judged scene = judge(before + i + 1, batch.get(i), ran.outcomes().get(i), ran.traces().get(i), shown);
+            shown |= scene.showedProbes();
             judged.add(scene);
         }
         return judged;

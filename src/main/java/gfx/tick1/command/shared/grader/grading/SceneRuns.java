@@ -13,19 +13,26 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 
 /**
- * The grade's run step: the public scenes (with the probes), then the hidden ones in a JVM of
+ * The grade's run steps: the public scenes (with the probes), then the hidden ones in a JVM of
  * their own, so that what the student's code prints while it has a hidden scene open is never
- * shown. All within the one time limit.
+ * shown. Both share the one time limit, which the public run's time counts against, whenever the
+ * hidden run starts: a cohort runs every public run before any hidden one.
  */
 final class SceneRuns {
 
-    /**
-     * Every scene's outcome and traced samples in grading order, what the behaviour comparison
-     * found (judged while the hidden scenes render), and what the code printed.
-     */
-    record Rendered(List<Outcome> outcomes, List<String> traces, CompletableFuture<ProbeFindings> probes,
-            String publicPrinted) {
+    /** One run's outcomes and traced samples, in grading order, and how long it took. */
+    record Ran(List<Outcome> outcomes, List<String> traces, Duration took) {
     }
+
+    /**
+     * The public run: what {@link Ran} holds, what the behaviour comparison found (judged in the
+     * grader while the run's images are read), and the last of what the code printed.
+     */
+    record PublicRun(Ran ran, CompletableFuture<ProbeFindings> probes, String printed) {
+    }
+
+    /** The public run's output folder in a grade's work folder. */
+    static final String PUBLIC_RUN = "public-run";
 
     private final Grading grading;
     private final Sandbox sandbox;
@@ -39,40 +46,54 @@ final class SceneRuns {
         this.scenes = scenes;
     }
 
-    Rendered run(CompileStep.Started started, Path work) throws IOException, InterruptedException {
-        Grading.Limits limits = grading.limits();
-        long deadline = started.renderStart() + limits.timeLimit().toNanos();
-        List<Outcome> outcomes = new ArrayList<>();
-        List<String> traces = new ArrayList<>();
-        CompletableFuture<ProbeFindings> probes = null;
-        String publicPrinted = "";
-        for (boolean hidden : new boolean[] {false, true}) {
-            List<CourseScene> batch = grading.batch(hidden);
-            if (batch.isEmpty()) {
-                continue;
-            }
-            Duration left = Duration.ofNanos(deadline - System.nanoTime());
-            if (left.toMillis() < 1) {
-                batch.forEach(scene -> outcomes.add(new Outcome.Failed(NoImage.TIME_LIMIT,
-                        "not rendered: the time limit was used up by the earlier scenes")));
-                batch.forEach(scene -> traces.add(null));
-                continue;
-            }
-            StudentProcess.Result result = process.render(started.classes(), new StudentProcess.Batch(
-                    Grading.batchScenes(scenes, hidden), sceneFiles(batch.size()), limits.width(), limits.height(),
-                    !hidden, hidden), CompileStep.childFolder(sandbox, work, (hidden ? "hidden" : "public") + "-run"),
-                    left, limits.timeLimit());
-            outcomes.addAll(result.outcomes());
-            traces.addAll(result.traces());
-            if (!hidden) {
-                publicPrinted = result.outputTail();
-                // The answers are judged in the grader while the hidden scenes render in their own JVM.
-                String log = result.probes();
-                probes = CompletableFuture.supplyAsync(() -> ProbeFindings.of(log));
-            }
+    /** Runs the public scenes and the probes, within the whole time limit, which starts as compiling ends. */
+    PublicRun runPublic(CompileStep.Started started, Path work) throws IOException, InterruptedException {
+        StudentProcess.Result result = run(false, started, work, grading.limits().timeLimit());
+        if (result == null) {
+            return new PublicRun(new Ran(List.of(), List.of(), Duration.ZERO),
+                    CompletableFuture.completedFuture(ProbeFindings.of(null)), "");
         }
-        return new Rendered(outcomes, traces, probes == null ? CompletableFuture.completedFuture(ProbeFindings.of(null))
-                : probes, publicPrinted);
+        String log = result.probes();
+        return new PublicRun(ran(result, started), CompletableFuture.supplyAsync(() -> ProbeFindings.of(log)),
+                result.outputTail());
+    }
+
+    /** Runs the hidden scenes in what the public run, which took {@code used}, left of the time limit. */
+    Ran runHidden(CompileStep.Started started, Path work, Duration used) throws IOException, InterruptedException {
+        long start = System.nanoTime();
+        Duration left = grading.limits().timeLimit().minus(used);
+        List<CourseScene> batch = grading.batch(true);
+        if (batch.isEmpty()) {
+            return new Ran(List.of(), List.of(), Duration.ZERO);
+        }
+        if (left.toMillis() < 1) {
+            List<Outcome> outcomes = new ArrayList<>();
+            List<String> traces = new ArrayList<>();
+            batch.forEach(scene -> outcomes.add(new Outcome.Failed(NoImage.TIME_LIMIT,
+                    "not rendered: the time limit was used up by the earlier scenes")));
+            batch.forEach(scene -> traces.add(null));
+            return new Ran(outcomes, traces, Duration.ZERO);
+        }
+        StudentProcess.Result result = run(true, started, work, left);
+        return new Ran(result.outcomes(), result.traces(), Duration.ofNanos(System.nanoTime() - start));
+    }
+
+    /** One batch's run in {@code left} of the time limit; null when the batch has no scene. */
+    private StudentProcess.Result run(boolean hidden, CompileStep.Started started, Path work, Duration left)
+            throws IOException, InterruptedException {
+        List<CourseScene> batch = grading.batch(hidden);
+        if (batch.isEmpty()) {
+            return null;
+        }
+        Grading.Limits limits = grading.limits();
+        return process.render(started.classes(), new StudentProcess.Batch(Grading.batchScenes(scenes, hidden),
+                sceneFiles(batch.size()), limits.width(), limits.height(), !hidden, hidden),
+                CompileStep.childFolder(sandbox, work, hidden ? "hidden-run" : PUBLIC_RUN), left,
+                limits.timeLimit());
+    }
+
+    private static Ran ran(StudentProcess.Result result, CompileStep.Started started) {
+        return new Ran(result.outcomes(), result.traces(), Duration.ofNanos(System.nanoTime() - started.renderStart()));
     }
 
     /** The names the scenes of a batch have inside the sandbox: 0.xml, 1.xml, ... */

@@ -5,9 +5,16 @@ import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
+import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.FileVisitResult;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.SimpleFileVisitor;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -23,6 +30,10 @@ public final class SubmissionGrader {
 
     /** Where a grade's time went: JVM starts and javac, the student's code, the comparing and images. */
     public record Phases(long compileNanos, long renderNanos, long compareNanos) {
+
+        Phases plus(long compile, long render, long compare) {
+            return new Phases(compileNanos + compile, renderNanos + render, compareNanos + compare);
+        }
     }
 
     /**
@@ -64,27 +75,163 @@ public final class SubmissionGrader {
      */
     public Graded grade(Submission submission, Path work, Path images, PrintWriter out, PrintWriter err)
             throws IOException, InterruptedException {
-        Explainer explainer = new Explainer(grading, submission, System.nanoTime(), out);
+        Begun begun = begin(submission, work, images, out, err);
+        return begun instanceof Halfway halfway ? finish(halfway, work, out) : ((Finished) begun).graded();
+    }
+
+    /**
+     * The first half of a grade: checks and compiles the files, runs the public scenes and the
+     * probes, and judges them, printing what the tester prints for them. It ends there when the
+     * code fails before any hidden scene could run; else {@link #finish} runs the hidden scenes,
+     * whenever the caller chooses. A cohort begins every grade before it finishes any, so that no
+     * run that a student's report quotes comes after a run that had a hidden scene, and none of
+     * them can time one or feel it use the processor.
+     */
+    public Begun begin(Submission submission, Path work, Path images, PrintWriter out, PrintWriter err)
+            throws IOException, InterruptedException {
+        long start = System.nanoTime();
+        Explainer explainer = new Explainer(grading, submission, start, out);
         SourceCheck.Checked checked = SourceCheck.check(submission);
         if (checked instanceof SourceCheck.Problem problem) {
-            return explainer.failed(problem.category(), problem.reason(), new Phases(0, 0, 0));
+            return new Finished(explainer.failed(problem.category(), problem.reason(), new Phases(0, 0, 0)));
         }
-        CompileStep.Started started = compiler.compile(submission, (SourceCheck.Sources) checked, work);
+        SourceCheck.Sources sources = (SourceCheck.Sources) checked;
+        CompileStep.Started started = compiler.compile(submission, sources, work);
         long compileNanos = started.renderStart() - started.compileStart();
         if (!started.compiled().compiled()) {
-            return explainer.didNotCompile(started.compiled(), new Phases(compileNanos, 0, 0));
+            return new Finished(explainer.didNotCompile(started.compiled(), new Phases(compileNanos, 0, 0)));
         }
         out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
                 + " with the starter code.");
-        SceneRuns.Rendered rendered = runs.run(started, work);
+        SceneRuns.PublicRun run = runs.runPublic(started, work);
         long compareStart = System.nanoTime();
-        ProbeFindings probes = rendered.probes().join();
+        ProbeFindings probes = run.probes().join();
         List<Judged> judged = new SceneJudge(grading, probes, new FeedbackImages(images, out, err), out)
-                .judgeAll(rendered);
-        explainer.lastLinesPrinted(judged, rendered.publicPrinted());
-        Phases phases = new Phases(compileNanos, compareStart - started.renderStart(),
-                System.nanoTime() - compareStart);
-        return explainer.verdict(judged, probes, phases);
+                .judgeBatch(false, run.ran(), false);
+        long now = System.nanoTime();
+        return new Halfway(submission, sources, started, judged, probes, run.printed(), run.ran().took(),
+                new Phases(compileNanos, run.ran().took().toNanos(), now - compareStart), now - start);
+    }
+
+    /**
+     * The second half of a grade {@link #begin} left halfway: runs the hidden scenes in what the
+     * public run left of the time limit, judges them, and gives the verdict. {@code work} is the
+     * folder the grade began in, or, after {@link Halfway#setAside}, an empty one.
+     */
+    public Graded finish(Halfway halfway, Path work, PrintWriter out) throws IOException, InterruptedException {
+        long start = System.nanoTime();
+        Explainer explainer = new Explainer(grading, halfway.submission, start - halfway.elapsedNanos, out);
+        CompileStep.Started started = halfway.started;
+        long compileNanos = 0;
+        if (halfway.classesDeleted) {
+            started = compiler.compile(halfway.submission, halfway.sources, work);
+            compileNanos = started.renderStart() - started.compileStart();
+            if (!started.compiled().compiled()) {
+                return explainer.didNotCompile(started.compiled(), halfway.phases.plus(compileNanos, 0, 0));
+            }
+        }
+        SceneRuns.Ran hidden = runs.runHidden(started, work, halfway.publicRun);
+        long compareStart = System.nanoTime();
+        List<Judged> judged = new ArrayList<>(halfway.judged);
+        judged.addAll(new SceneJudge(grading, halfway.probes, new FeedbackImages(null, out, out), out)
+                .judgeBatch(true, hidden, halfway.judged.stream().anyMatch(Judged::showedProbes)));
+        explainer.lastLinesPrinted(judged, halfway.printed);
+        return explainer.verdict(judged, halfway.probes, halfway.phases.plus(compileNanos, hidden.took().toNanos(),
+                System.nanoTime() - compareStart));
+    }
+
+    /** What {@link #begin} gave: a whole grade, or one {@link Halfway} done. */
+    public sealed interface Begun permits Finished, Halfway {
+    }
+
+    /** A grade that ended before any hidden scene could run. */
+    public record Finished(Graded graded) implements Begun {
+    }
+
+    /**
+     * A grade whose public scenes are run and judged, and whose hidden ones are not yet: what
+     * {@link #finish} needs, and nothing of the public run's images.
+     */
+    public static final class Halfway implements Begun {
+        /**
+         * The most bytes of compiled classes a grade set aside keeps on the grader's disk: far more
+         * than any solution's, far less than a compile may make.
+         */
+        static final long KEPT_CLASS_BYTES = 4L << 20;
+        /** The most class files a grade set aside keeps, as {@link #KEPT_CLASS_BYTES}. */
+        static final int KEPT_CLASS_FILES = 200;
+
+        private final Submission submission;
+        private final SourceCheck.Sources sources;
+        private final CompileStep.Started started;
+        private final List<Judged> judged;
+        private final ProbeFindings probes;
+        private final String printed;
+        private final Duration publicRun;
+        private final Phases phases;
+        private final long elapsedNanos;
+        private final boolean classesDeleted;
+
+        Halfway(Submission submission, SourceCheck.Sources sources, CompileStep.Started started, List<Judged> judged,
+                ProbeFindings probes, String printed, Duration publicRun, Phases phases, long elapsedNanos) {
+            this(submission, sources, started, judged, probes, printed, publicRun, phases, elapsedNanos, false);
+        }
+
+        private Halfway(Submission submission, SourceCheck.Sources sources, CompileStep.Started started,
+                List<Judged> judged, ProbeFindings probes, String printed, Duration publicRun, Phases phases,
+                long elapsedNanos, boolean classesDeleted) {
+            this.submission = submission;
+            this.sources = sources;
+            this.started = started;
+            this.judged = List.copyOf(judged);
+            this.probes = probes;
+            this.printed = printed;
+            this.publicRun = publicRun;
+            this.phases = phases;
+            this.elapsedNanos = elapsedNanos;
+            this.classesDeleted = classesDeleted;
+        }
+
+        /**
+         * This grade as it waits for its hidden scenes: with the public run's folder deleted from
+         * {@code work}, and, when the classes are more than a solution's, {@code work} emptied, so
+         * that {@link #finish} compiles them again. What waits on the grader's disk is then small
+         * whatever the code made.
+         */
+        public Halfway setAside(Path work) throws IOException {
+            deleted(work.resolve(SceneRuns.PUBLIC_RUN));
+            if (small(started.classes())) {
+                return this;
+            }
+            try (var entries = Files.list(work)) {
+                for (Path entry : entries.toList()) {
+                    deleted(entry);
+                }
+            }
+            return new Halfway(submission, sources, null, judged, probes, printed, publicRun, phases, elapsedNanos,
+                    true);
+        }
+
+        private static void deleted(Path folder) throws IOException {
+            String failed = WorkFolder.delete(folder);
+            if (failed != null) {
+                throw new IOException(failed);
+            }
+        }
+
+        /** Whether {@code classes} holds at most the kept bytes and files, by a walk that follows no link. */
+        private static boolean small(Path classes) throws IOException {
+            long[] bytesAndFiles = new long[2];
+            Files.walkFileTree(classes, new SimpleFileVisitor<>() {
+                @Override
+                public FileVisitResult visitFile(Path file, BasicFileAttributes attributes) {
+                    bytesAndFiles[0] += attributes.size();
+                    return ++bytesAndFiles[1] > KEPT_CLASS_FILES || bytesAndFiles[0] > KEPT_CLASS_BYTES
+                            ? FileVisitResult.TERMINATE : FileVisitResult.CONTINUE;
+                }
+            });
+            return bytesAndFiles[1] <= KEPT_CLASS_FILES && bytesAndFiles[0] <= KEPT_CLASS_BYTES;
+        }
     }
 
     public static String count(int n, String noun) {
