@@ -1,6 +1,7 @@
 package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
+import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
@@ -53,6 +54,10 @@ public final class SubmissionGrader {
     public static final String CONGRATULATIONS = "Congratulations! Your code passed the tester.";
     /** The words of a matching image that their methods do not give. */
     public static final String NOT_FROM_THE_CODE = "the image does not come from your Sphere and Renderer";
+
+    /** Why a grade whose classes were too many to keep could not run its hidden scenes. */
+    static final String COMPILED_ONCE_ONLY = "its classes, too many to keep while the other submissions ran, could "
+            + "not be compiled again for the hidden scenes";
 
     private final Grading grading;
     private final CompileStep compiler;
@@ -127,7 +132,9 @@ public final class SubmissionGrader {
             started = compiler.compile(halfway.submission, halfway.sources, work);
             compileNanos = started.renderStart() - started.compileStart();
             if (!started.compiled().compiled()) {
-                return explainer.didNotCompile(started.compiled(), halfway.phases.plus(compileNanos, 0, 0));
+                // In fixed words: this compile ran beside hidden runs, whose use of the machine may have decided it.
+                return explainer.failed(Category.Outcome.DOES_NOT_COMPILE, COMPILED_ONCE_ONLY,
+                        halfway.phases.plus(compileNanos, 0, 0));
             }
         }
         SceneRuns.Ran hidden = runs.runHidden(started, work, halfway.publicRun);
