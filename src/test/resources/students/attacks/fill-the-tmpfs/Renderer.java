@@ -6,7 +6,7 @@ import java.io.OutputStream;
 
 /**
  * Tries to fill the host's memory through the sandbox's file systems held in memory: shared
- * memory (/dev/shm, in files of 32 MiB, under the limit on one file's size), the sandbox's own
+ * memory (/dev/shm, where there is one, in files of 32 MiB, under the limit on one file's size), the sandbox's own
  * root (/) and /dev, a MiB at a time, and says how far it got.
  */
 public class Renderer {

@@ -250,8 +250,8 @@ class GradeAttackTest {
     void codeThatStealsSecretsFindsNoneAndCannotSendThem() throws Exception {
         Grade grade = grade("steal-secrets");
         assertFailedAndHarmedNothing(grade);
-        assertThat(grade.output()).contains("/tmp/tick1-attack-secret.txt: NoSuchFileException",
-                "ConnectException", "/proc/1/environ: ").doesNotContain("HOME=", "USER=", "TICK1_ATTACK_TOKEN");
+        assertThat(grade.output()).contains("/tmp/tick1-attack-secret.txt: NoSuchFileException", "ConnectException")
+                .doesNotContain("/proc/1/environ", "HOME=", "USER=", "TICK1_ATTACK_TOKEN");
     }
 
     @Test
@@ -536,6 +536,8 @@ class GradeAttackTest {
      */
     @Test
     void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheKernelsCountOfInodes() throws Exception {
+        // No run has /proc now, where Java read the count, so tick1.xml's run quotes -1: the test
+        // stands for the day the count can be read again, and then asserts the hidden run cannot move it.
         assertTheHiddenDigitIsNotCarried("inode-counter", INODE_STEP);
     }
 
@@ -547,6 +549,8 @@ class GradeAttackTest {
      */
     @Test
     void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheInodeNumbersOfProc() throws Exception {
+        // No run has /proc now: the attack's reading quotes -1 and its moving fails, and this test
+        // stands for the day either becomes possible again.
         assertTheHiddenDigitIsNotCarried("proc-inode-counter", PROC_INODE_STEP);
     }
 
@@ -636,15 +640,34 @@ class GradeAttackTest {
             "classes_nocoops.jsa");
 
     @Test
-    void theSandboxsFileSystemsInMemoryAreSizedOrReadOnly() throws Exception {
+    void theSandboxsOwnFileSystemsInMemoryAreReadOnly() throws Exception {
         Grade grade = grade("fill-the-tmpfs");
         assertFailedAndHarmedNothing(grade);
-        assertThat(grade.output()).containsPattern("/dev/shm: (\\d|[1-5]\\d|6[0-4]) MiB in all "
-                + "\\(No space left on device\\)")
+        assertThat(grade.output()).contains("/dev/shm: 0 MiB in all (/dev/shm/fill-0 (Read-only file system))")
                 .containsPattern("; /fill: stopped after 0 MiB \\(/fill \\((Read-only file system|Permission "
                         + "denied)\\)")
                 .containsPattern("/dev/fill: stopped after 0 MiB \\(/dev/fill \\((Read-only file system|Permission "
                         + "denied)\\)");
+    }
+
+    /**
+     * Machine code of the student's choosing would read the machine in ways no Java call can (its
+     * counters, its timers, calls Java never makes). From Java alone, a run can write a library or
+     * a program into its output folder, but neither loads nor starts (as root the folder is a file
+     * system on which nothing executes), and it has no /proc in which to write its own code. The
+     * attack renders as the correct solution does only when all three are refused, in tick1.xml's
+     * run and in the hidden scene's.
+     */
+    @Test
+    void aRunCannotRunMachineCodeFromFilesItWroteNorWriteItsOwnCode() throws Exception {
+        assumeThat(Sandbox.confined().diskNotEnforced()).as("the output folder is a file system of its own (as root)")
+                .isNull();
+        Grade grade = grade("native-code-from-its-own-files");
+        assertThat(grade.output()).as("what the attack did").doesNotContain("native code:");
+        assertThat(grade.status()).as("tick1.xml's run and the hidden scene's both refused it:\n" + grade.output())
+                .isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(Files.readString(VICTIM)).as("a file outside the work folder").isEqualTo(VICTIM_TEXT);
+        assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
     }
 
     @Test

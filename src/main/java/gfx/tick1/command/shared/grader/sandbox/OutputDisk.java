@@ -23,7 +23,8 @@ import java.util.concurrent.ThreadLocalRandom;
  * <p>The tmpfs is a little larger than the caps of {@link OutputCount}, so that the harness's own
  * files (images, logs) have room while the code keeps below them; a run found holding more than a
  * cap, by the walk or by the file system's own count, is stopped with the cap's words. Its pages
- * are memory, which the kernel charges to the run's control group, within the run's total.
+ * are memory, which the kernel charges to the run's control group, within the run's total. Nothing
+ * on it can be executed or mapped executable: a library or program the code writes there stays data.
  *
  * <p>A cohort job's warm compiler has one of the same size on its folder ({@link #mountReadable}),
  * for the class files javac writes there.
@@ -80,7 +81,9 @@ final class OutputDisk implements AutoCloseable {
     }
 
     private static OutputDisk mount(Path folder, String owner) throws IOException {
-        String options = "size=" + BYTES + ",nr_inodes=" + INODES + "," + owner + ",nosuid,nodev";
+        // noexec: nothing written there can be run or mapped as machine code (System.load of a
+        // library the code wrote, a program it wrote), so Java code cannot bring native code in that way.
+        String options = "size=" + BYTES + ",nr_inodes=" + INODES + "," + owner + ",nosuid,nodev,noexec";
         if (!Commands.run(List.of(MOUNT.toString(), "-t", "tmpfs", "-o", options, SOURCE, folder.toString()))) {
             throw new IOException("cannot mount a file system of its own on " + folder);
         }

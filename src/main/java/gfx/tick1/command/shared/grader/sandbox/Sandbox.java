@@ -17,8 +17,9 @@ import java.util.concurrent.TimeUnit;
  *   <li>sees of the host's files only the JDK and the libraries it loads ({@link SystemFiles}),
  *       read-only, each in memory when the run starts, the folders {@code grade} binds in
  *       (read-only but for its output folder, which is a file system of
- *       its own when {@code grade} runs as root: {@link OutputDisk}) and nothing else: no home
- *       folder, no {@code /tmp}, no other process, none of the organiser's scenes but its own;
+ *       its own when {@code grade} runs as root, where nothing can be executed: {@link OutputDisk})
+ *       and nothing else: no home folder, no {@code /tmp}, no {@code /dev/shm}, no {@code /proc},
+ *       no other process, none of the organiser's scenes but its own;
  *   <li>has no network (a network namespace with nothing in it, not even the host's loopback),
  *       an empty environment, and a session and PID namespace of its own, so that it cannot
  *       type into the grader's terminal and everything it starts dies with it
@@ -58,21 +59,6 @@ public final class Sandbox {
     /** Threads count as processes: the JVM needs about 20; the student's code one. */
     static final int PROCESSES_LIMIT = 96;
 
-    /**
-     * The files of /proc that count what the whole machine did (CPU time, processes started,
-     * page faults, interrupts, pressure) or hold what it has (memory, files, dentries), those this
-     * machine has: none can be read in the runs' /proc (/dev/null is bound over each, in a mount
-     * without devices). A run could move these counters by
-     * amounts it chooses and a later run read them, so carrying a hidden scene from one grade to
-     * the next; the JVM reads two of them (stat, meminfo) and starts without them.
-     */
-    private static final List<Path> MACHINE_COUNTERS = java.util.stream.Stream.of("stat", "vmstat", "meminfo",
-            "interrupts", "softirqs", "diskstats", "schedstat", "loadavg", "uptime", "zoneinfo", "buddyinfo",
-            "pagetypeinfo", "vmallocinfo", "slabinfo", "key-users", "keys", "locks", "swaps", "pressure/cpu",
-            "pressure/io", "pressure/memory", "pressure/irq", "sys/fs/dentry-state", "sys/fs/inode-nr",
-            "sys/fs/inode-state", "sys/fs/file-nr", "sys/kernel/random/entropy_avail")
-            .map(name -> Path.of("/proc", name)).filter(Files::exists).toList();
-
     /** The first of the user ids the student's code runs as when the grader is root. */
     static final int FIRST_UID = 1_900_000_000;
     /**
@@ -91,9 +77,6 @@ public final class Sandbox {
     public static final int MOST_JOBS = 64;
     /** The distance between the user ids of two jobs: more than the process ids the first one's id is made of. */
     private static final int JOB_UID_STEP = 1_000_000;
-
-    /** The size of the sandbox's shared memory, /dev/shm (its / and /dev are read-only). */
-    static final long SHM_BYTES = 64L << 20;
 
     /** What this machine gives the sandbox: its bwrap, control groups, seccomp filter and output disks. */
     private final Host host;
@@ -256,7 +239,8 @@ public final class Sandbox {
         return !confined || host.ownDisks() ? null
                 : (uid < 0 ? "grading as a normal user" : "no file system can be mounted here")
                         + ": the output folder of each run is on the host's disk, held to its limit by a count of "
-                        + "its files' names, which misses files the code deletes while it holds them open; a cohort's "
+                        + "its files' names, which misses files the code deletes while it holds them open, and the "
+                        + "code can load what it writes there as machine code; a cohort's "
                         + "compiler writes its class files there too, counted only once it has compiled";
     }
 
@@ -355,8 +339,8 @@ public final class Sandbox {
     /**
      * The command that runs {@code command} inside the sandbox, with {@code binds}, at most
      * {@code cpuSeconds} of processor time and {@code addressSpaceMiB} of address space, and, if
-     * {@code oneCore}, on one processor core only; with {@code hiddenScenes}, with no /proc and under the hidden runs'
-     * stricter seccomp filter.
+     * {@code oneCore}, on one processor core only; with {@code hiddenScenes}, under the hidden runs' stricter
+     * seccomp filter.
      */
     List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB, boolean oneCore,
             Cgroup cgroup, boolean hiddenScenes) {
@@ -377,23 +361,16 @@ public final class Sandbox {
         // Of the host's files, the JDK and the libraries it loads, each on its own: no folder of the host's,
         // so neither tick1, nor the grader's temporary folder, nor any scene of the organiser's.
         wrapped.addAll(host.system().bwrapArguments());
-        // Every tmpfs has a size, and / and /dev (bwrap's own, of half the host's memory) are read-only.
-        if (hiddenScenes) {
-            // No /proc at all: it numbers a process's files, as they are first looked at, from the count the kernel
-            // numbers pipes and sockets by, one for the whole machine, so a run that looked at many could leave a
-            // number for a later run to read. Without /proc the loader cannot find the launcher's libraries from
-            // where java is ($ORIGIN), so it is told.
-            wrapped.addAll(List.of("--dir", "/proc", "--setenv", "LD_LIBRARY_PATH",
-                    javaHome().resolve("lib").toString()));
-        } else {
-            wrapped.addAll(List.of("--proc", "/proc"));
-            for (Path counters : MACHINE_COUNTERS) {
-                wrapped.addAll(List.of("--ro-bind", "/dev/null", counters.toString()));
-            }
-        }
-        wrapped.addAll(List.of("--dev", "/dev",
-                "--size", Long.toString(SHM_BYTES), "--perms", "1777", "--tmpfs", "/dev/shm",
-                "--remount-ro", "/dev"));
+        // No file system a run can write but its output folder, which is sized and, as root, noexec: / and /dev
+        // (bwrap's own, of half the host's memory) are read-only, and there is no /dev/shm.
+        // No /proc at all. It numbers a process's files, as they are first looked at, from the count the kernel
+        // numbers pipes and sockets by, one for the whole machine, so a run that looked at many could leave a
+        // number for a later run to read; its files count what the whole machine did (stat, meminfo, pressure);
+        // and a process may write its own memory through /proc/self/mem, code included, which would bring
+        // native code into a run in Java alone. Without /proc the loader cannot find the launcher's libraries
+        // from where java is ($ORIGIN), so it is told.
+        wrapped.addAll(List.of("--dir", "/proc", "--setenv", "LD_LIBRARY_PATH", javaHome().resolve("lib").toString(),
+                "--dev", "/dev", "--remount-ro", "/dev"));
         for (Bind bind : binds) {
             wrapped.addAll(List.of(bind.writable() ? "--bind" : "--ro-bind", bind.outside().toString(), bind.inside()));
         }
@@ -536,8 +513,8 @@ public final class Sandbox {
     /**
      * A process for {@link #wrap}'s command, started with an environment of PATH alone. bwrap's
      * {@code --clearenv} empties the environment of the command it runs, but not its own: and
-     * bwrap's first process inside the sandbox runs as the student's user, where
-     * {@code /proc/1/environ} shows it. So the grader's environment (tokens, paths, names) must
+     * bwrap's first process inside the sandbox runs as the student's user, whose memory holds it
+     * (and a process of the same user may read another's). So the grader's environment (tokens, paths, names) must
      * never reach bwrap, nor taskset, setpriv and prlimit before it.
      */
     static ProcessBuilder processFor(List<String> wrappedCommand) {

@@ -84,6 +84,17 @@ class OutputDiskTest {
     }
 
     @Test
+    void aProgramWrittenThereCannotBeStarted() throws IOException {
+        try (OutputDisk disk = OutputDisk.mount(folder, 0)) {
+            Path program = Files.copy(Path.of("/bin/true"), disk.folder().resolve("true"));
+            assertThat(program.toFile().setExecutable(true)).as("the copy marked executable").isTrue();
+            assertThatThrownBy(() -> new ProcessBuilder(program.toString()).start().waitFor())
+                    .as("starting a program written there").isInstanceOf(IOException.class)
+                    .hasMessageContaining("Permission denied");
+        }
+    }
+
+    @Test
     void unmountingLeavesTheFolderEmptyOnTheHostsDisk() throws IOException {
         Object hostDevice = Files.getAttribute(dir, "unix:dev");
         try (OutputDisk mounted = OutputDisk.mount(folder, 0)) {
