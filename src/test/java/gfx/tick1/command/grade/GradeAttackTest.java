@@ -670,6 +670,22 @@ class GradeAttackTest {
         assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
     }
 
+    /**
+     * A JVM the code starts takes any option: with -XX:+EnableJVMCI (experimental, on in this JDK),
+     * JVMCI's code cache installs bytes of the code's choosing as a method's compiled code and runs
+     * them, with no sun.misc.Unsafe, no class in a package of the JDK's and no file that executes.
+     * The attack renders as the correct solution does only when no machine code of its own ran, in
+     * tick1.xml's run and in the hidden scene's.
+     */
+    @Test
+    void aRunCannotRunMachineCodeOfItsOwnThroughAJvmItStartsWithJvmci() throws Exception {
+        Grade grade = grade("machine-code-through-jvmci");
+        assertThat(grade.output()).as("what the attack did").doesNotContain("machine code of its own");
+        assertThat(grade.status()).as("tick1.xml's run and the hidden scene's both refused it:\n" + grade.output())
+                .isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(workFolders()).as("grade work folders left in the temporary folder").isEmpty();
+    }
+
     @Test
     void memorySpreadOverManyProcessesIsHeldToOneTotal() throws Exception {
         assumeThat(totalsEnforced()).as("a control group can be made here").isTrue();
