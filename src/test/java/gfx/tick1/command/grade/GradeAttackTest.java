@@ -26,6 +26,7 @@ import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.HexFormat;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -113,12 +114,23 @@ class GradeAttackTest {
             StudentSolution attacking = StudentSolution.correct().editRenderer(RENDER, RENDER + first);
             Files.writeString(sphere, attacking.sphere());
             Files.writeString(renderer, attacking.renderer());
-            return gradeFiles(sphere, renderer, options);
+            return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary,
+                    STARTS_PROGRAMS.contains(attack), sphere, renderer, options);
         }
         Files.writeString(sphere, resourceOr(folder + "Sphere.java", StarterKit.source("Sphere")));
         Files.writeString(renderer, resourceOr(folder + "Renderer.java", null));
-        return gradeFiles(sphere, renderer, options);
+        return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary,
+                STARTS_PROGRAMS.contains(attack), sphere, renderer, options);
     }
+
+    /**
+     * The attacks that start programs to test a limit against what they can do (those of the host's
+     * {@link #ATTACK_TOOLS} shows, or a program the code wrote): their grades let the runs start
+     * processes, which a real grade refuses.
+     */
+    private static final Set<String> STARTS_PROGRAMS = Set.of("deep-tree", "drop-the-page-cache", "fifo-progress",
+            "memory-in-many-processes", "outlive-the-grade", "reserve-the-disk", "unreadable-progress",
+            "native-code-from-its-own-files");
 
     /**
      * The host's programs the attacks start, which the sandbox shows them (a real grade shows none
@@ -137,17 +149,19 @@ class GradeAttackTest {
     private static final String RENDER = "    public BufferedImage render(Scene scene) {\n";
 
     private Grade gradeFiles(Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
-        return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary, sphere, renderer, options);
+        return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary, false, sphere, renderer,
+                options);
     }
 
     /** A grade started by {@code launcher} (setpriv: as another user), with this class path and temporary folder. */
-    private Grade gradeFilesAs(List<String> launcher, String classPath, Path temporaryFolder, Path sphere,
-            Path renderer, String... options) throws IOException, InterruptedException {
+    private Grade gradeFilesAs(List<String> launcher, String classPath, Path temporaryFolder, boolean processes,
+            Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(launcher);
         command.addAll(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporaryFolder,
                 "-Dtick1.grade.sandboxAlsoShows=" + String.join(File.pathSeparator, ATTACK_TOOLS),
+                "-Dtick1.grade.sandboxAllowsProcesses=" + processes,
                 "-cp", classPath,
                 Tick1.class.getName(), "grade", "--sphere", sphere.toString(), "--renderer", renderer.toString()));
         if (!List.of(options).contains("--report")) {
@@ -728,7 +742,7 @@ class GradeAttackTest {
         }
         Files.setPosixFilePermissions(home, PosixFilePermissions.fromString("rwx--x--x"));
         Grade grade = gradeFilesAs(List.of("/usr/bin/setpriv", "--reuid=" + NORMAL_USER, "--regid=" + NORMAL_USER,
-                "--clear-groups"), String.join(java.io.File.pathSeparator, entries), tmp,
+                "--clear-groups"), String.join(java.io.File.pathSeparator, entries), tmp, true,
                 student.resolve("Sphere.java"), student.resolve("Renderer.java"), "--report",
                 home.resolve("report").toString());
         assertThat(grade.status()).as(grade.output()).isEqualTo(GradeCommand.EXIT_FAIL);

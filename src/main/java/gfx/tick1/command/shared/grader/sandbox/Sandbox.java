@@ -24,6 +24,8 @@ import java.util.concurrent.TimeUnit;
  *       an empty environment, and a session and PID namespace of its own, so that it cannot
  *       type into the grader's terminal and everything it starts dies with it
  *       ({@code --die-with-parent});
+ *   <li>starts no process, and makes no call that takes disk space a size does not show, under
+ *       a seccomp filter ({@link SeccompFilter});
  *   <li>has limits ({@code prlimit}) on CPU seconds, address space, file size, open files and,
  *       under its own user, processes; the student's code runs on one core ({@code taskset}).
  * </ul>
@@ -41,6 +43,12 @@ public final class Sandbox {
      * holds the runs to their limits is tested against them too.
      */
     private static final String ALSO_SHOWN_PROPERTY = "tick1.grade.sandboxAlsoShows";
+    /**
+     * "true" lets the runs start processes, which a grade never does (see {@link SeccompFilter}): for
+     * the tests whose attacks start the programs {@link #ALSO_SHOWN_PROPERTY} shows, so that what
+     * holds the runs to their limits is tested against them.
+     */
+    private static final String PROCESSES_PROPERTY = "tick1.grade.sandboxAllowsProcesses";
     /** Debian's bwrap; the system property tick1.grade.bwrap names another (the tests name a missing one). */
     private static final String BWRAP_PROPERTY = "tick1.grade.bwrap";
     /** "host" keeps each run's output folder on the host's disk, as where no tmpfs can be mounted (for the tests). */
@@ -161,8 +169,9 @@ public final class Sandbox {
         Path seccompFilter;
         Path hiddenRunFilter;
         try {
-            seccompFilter = SeccompFilter.writeForThisMachine(false);
-            hiddenRunFilter = SeccompFilter.writeForThisMachine(true);
+            boolean processes = Boolean.getBoolean(PROCESSES_PROPERTY);
+            seccompFilter = SeccompFilter.writeForThisMachine(false, processes);
+            hiddenRunFilter = SeccompFilter.writeForThisMachine(true, processes);
         } catch (IOException e) {
             throw new Unavailable("cannot write the sandbox's seccomp filter (" + e.getMessage() + ")");
         }

@@ -49,7 +49,15 @@ import java.util.Map;
  * (sun.nio.ch.FileDispatcherImpl), so native code can still move the count with it; Java alone
  * cannot, as starting a process needs pipes.
  *
- * <p>Each is answered {@code EOPNOTSUPP} ("Operation not supported"), which glibc's
+ * <p>And no run starts a process: a JVM a run started with options of its own (JVMCI's, to
+ * install machine code of its choosing in its code cache; a class data archive it wrote) would
+ * run code the harness never chose. Refused with {@code EPERM} ("Operation not permitted"):
+ * {@code fork}, {@code vfork} (x86-64 only), {@code clone} whose flags do not make a thread of the
+ * same process ({@code CLONE_THREAD}) or that asks for a pidfd ({@code CLONE_PIDFD}), and
+ * {@code pidfd_open}; {@code clone3}, whose flags are in memory the filter cannot read, is
+ * answered {@code ENOSYS}, on which glibc makes its threads with {@code clone} instead.
+ *
+ * <p>The rest are answered {@code EOPNOTSUPP} ("Operation not supported"), which glibc's
  * {@code posix_fallocate} meets by writing the bytes (counted by their size). A system call of
  * another architecture than the host's (a 32-bit program, or x32's) kills the process: its
  * numbers are not those below. The JVM and javac use none of the calls refused.
@@ -59,12 +67,16 @@ final class SeccompFilter {
     /** Classic BPF as seccomp reads it (linux/filter.h, linux/bpf_common.h). */
     private static final int LOAD_WORD = 0x20, JUMP_EQUAL = 0x15, JUMP_AT_LEAST = 0x35, AND = 0x54, RETURN = 0x06;
     /** seccomp's answers (linux/seccomp.h) and the errno refused calls get. */
-    private static final int ALLOW = 0x7fff0000, KILL_PROCESS = 0x80000000, ERRNO = 0x00050000, EOPNOTSUPP = 95;
+    private static final int ALLOW = 0x7fff0000, KILL_PROCESS = 0x80000000, ERRNO = 0x00050000, EOPNOTSUPP = 95,
+            EPERM = 1, ENOSYS = 38;
     /**
      * Offsets in struct seccomp_data: the call's number, the architecture, and the low words of the
      * second and third arguments (both machines are little-endian).
      */
-    private static final int NUMBER = 0, ARCHITECTURE = 4, SECOND_ARGUMENT = 24, THIRD_ARGUMENT = 32;
+    private static final int NUMBER = 0, ARCHITECTURE = 4, FIRST_ARGUMENT = 16, SECOND_ARGUMENT = 24,
+            THIRD_ARGUMENT = 32;
+    /** clone's flags (linux/sched.h), its first argument on both machines: a thread, and a pidfd for the child. */
+    private static final int CLONE_THREAD = 0x00010000, CLONE_PIDFD = 0x00001000;
     /** x86-64's x32 calls have this bit in their number. */
     private static final int X32_BIT = 0x40000000;
     /** An ioctl's type is the second byte of its request: 'X' for the space reservations. */
@@ -79,30 +91,33 @@ final class SeccompFilter {
      * One architecture's numbers: AUDIT_ARCH_* (linux/audit.h), ioctl's and madvise's, and those of
      * the calls refused outright.
      */
-    private record Architecture(int audit, int ioctl, int madvise, int[] refused, int[] numbering) {
+    private record Architecture(int audit, int ioctl, int madvise, int[] refused, int[] numbering, int cloneCall,
+            int clone3Call, int[] starting) {
     }
 
     // The numbers are the kernel's: x86-64's arch/x86/entry/syscalls/syscall_64.tbl, AArch64's
     // include/uapi/asm-generic/unistd.h (ioctl 16 and 29, madvise 28 and 233). Refused outright:
     // fallocate, setxattr, lsetxattr, fsetxattr, io_uring_setup, io_uring_enter, io_uring_register, setxattrat,
     // fadvise64, process_madvise. Refused in hidden runs (the kernel's counts of numbered objects): pipe
-    // (x86-64 only), pipe2, socket, memfd_create, memfd_secret, io_setup, shmget, mq_open, userfaultfd.
+    // (x86-64 only), pipe2, socket, memfd_create, memfd_secret, io_setup, shmget, mq_open, userfaultfd. Then
+    // clone (56 and 220) and clone3 (435); refused as starting a process: fork and vfork (x86-64 only), pidfd_open.
     private static final Architecture X86_64 = new Architecture(0xc000003e, 16, 28,
             new int[] {285, 188, 189, 190, 425, 426, 427, 463, 221, 440},
-            new int[] {22, 293, 41, 319, 447, 206, 29, 240, 323});
+            new int[] {22, 293, 41, 319, 447, 206, 29, 240, 323}, 56, 435, new int[] {57, 58, 434});
     private static final Architecture AARCH64 = new Architecture(0xc00000b7, 29, 233,
             new int[] {47, 5, 6, 7, 425, 426, 427, 463, 223, 440},
-            new int[] {59, 198, 279, 447, 0, 194, 180, 282});
+            new int[] {59, 198, 279, 447, 0, 194, 180, 282}, 220, 435, new int[] {434});
 
     private SeccompFilter() {
     }
 
     /**
      * The filter for the host's architecture, or null where tick1 has none (it then warns); with
-     * {@code hiddenScenes}, a hidden run's.
+     * {@code hiddenScenes}, a hidden run's; with {@code processes}, one that lets a run start
+     * processes (for the tests that hold the limits against what other programs can do).
      */
-    static byte[] forThisMachine(boolean hiddenScenes) {
-        return forArchitecture(System.getProperty("os.arch", ""), hiddenScenes);
+    static byte[] forThisMachine(boolean hiddenScenes, boolean processes) {
+        return forArchitecture(System.getProperty("os.arch", ""), hiddenScenes, processes);
     }
 
     /** The filter for an architecture as Java names it ({@code os.arch}), or null where tick1 has none. */
@@ -112,9 +127,14 @@ final class SeccompFilter {
 
     /** The filter for an architecture, a hidden run's with {@code hiddenScenes}, or null where tick1 has none. */
     static byte[] forArchitecture(String name, boolean hiddenScenes) {
+        return forArchitecture(name, hiddenScenes, false);
+    }
+
+    /** {@link #forArchitecture(String, boolean)}, letting a run start processes with {@code processes}. */
+    static byte[] forArchitecture(String name, boolean hiddenScenes, boolean processes) {
         return switch (name) {
-            case "amd64", "x86_64" -> program(X86_64, hiddenScenes);
-            case "aarch64" -> program(AARCH64, hiddenScenes);
+            case "amd64", "x86_64" -> program(X86_64, hiddenScenes, processes);
+            case "aarch64" -> program(AARCH64, hiddenScenes, processes);
             default -> null;
         };
     }
@@ -123,7 +143,7 @@ final class SeccompFilter {
      * The filter as bwrap reads it: struct sock_filter ({@code u16 code; u8 jt, jf; u32 k}) in the
      * machine's byte order, both of whose architectures are little-endian.
      */
-    private static byte[] program(Architecture architecture, boolean hiddenScenes) {
+    private static byte[] program(Architecture architecture, boolean hiddenScenes, boolean processes) {
         Program code = new Program();
         code.add(LOAD_WORD, ARCHITECTURE);
         code.jump(JUMP_EQUAL, architecture.audit(), "number", null);
@@ -137,6 +157,13 @@ final class SeccompFilter {
         for (int numbering : hiddenScenes ? architecture.numbering() : new int[0]) {
             code.jump(JUMP_EQUAL, numbering, "refuse", null);
         }
+        if (!processes) {
+            for (int starting : architecture.starting()) {
+                code.jump(JUMP_EQUAL, starting, "not permitted", null);
+            }
+            code.jump(JUMP_EQUAL, architecture.clone3Call(), "no such call", null);
+            code.jump(JUMP_EQUAL, architecture.cloneCall(), "clone", null);
+        }
         code.jump(JUMP_EQUAL, architecture.ioctl(), "ioctl", null);
         code.jump(JUMP_EQUAL, architecture.madvise(), "madvise", "allow");
         code.label("ioctl");
@@ -146,10 +173,19 @@ final class SeccompFilter {
         code.label("madvise");
         code.add(LOAD_WORD, THIRD_ARGUMENT);
         code.jump(JUMP_EQUAL, MADV_PAGEOUT, "refuse", "allow");
+        code.label("clone");
+        // A thread of this process, and no pidfd: (flags & (CLONE_THREAD | CLONE_PIDFD)) == CLONE_THREAD.
+        code.add(LOAD_WORD, FIRST_ARGUMENT);
+        code.add(AND, CLONE_THREAD | CLONE_PIDFD);
+        code.jump(JUMP_EQUAL, CLONE_THREAD, "allow", "not permitted");
         code.label("allow");
         code.add(RETURN, ALLOW);
         code.label("refuse");
         code.add(RETURN, ERRNO | EOPNOTSUPP);
+        code.label("not permitted");
+        code.add(RETURN, ERRNO | EPERM);
+        code.label("no such call");
+        code.add(RETURN, ERRNO | ENOSYS);
         return code.bytes();
     }
 
@@ -196,10 +232,10 @@ final class SeccompFilter {
     /**
      * The filter written to a new file of the grader's alone, deleted when this program ends, for
      * the shell that starts each sandbox to open for bwrap; null where there is no filter. With
-     * {@code hiddenScenes}, a hidden run's.
+     * {@code hiddenScenes}, a hidden run's; with {@code processes}, one that lets runs start processes.
      */
-    static Path writeForThisMachine(boolean hiddenScenes) throws IOException {
-        byte[] program = forThisMachine(hiddenScenes);
+    static Path writeForThisMachine(boolean hiddenScenes, boolean processes) throws IOException {
+        byte[] program = forThisMachine(hiddenScenes, processes);
         if (program == null) {
             return null;
         }

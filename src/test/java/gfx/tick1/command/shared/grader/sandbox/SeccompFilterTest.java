@@ -26,7 +26,8 @@ class SeccompFilterTest {
      * arch/x86/entry/syscalls/syscall_64.tbl, AArch64's include/uapi/asm-generic/unistd.h.
      */
     record Machine(String osArch, int audit, int read, int openat, int mmap, int ioctl, int fallocate,
-            int fadvise64, int madvise, int processMadvise, int pipe2, int socket, int socketpair, int memfdCreate) {
+            int fadvise64, int madvise, int processMadvise, int pipe2, int socket, int socketpair, int memfdCreate,
+            int cloneCall, int clone3Call, int pidfdOpen, int fork) {
 
         /** What the filter answers this machine's call {@code number} with these arguments. */
         int answer(int number, long... arguments) {
@@ -44,8 +45,45 @@ class SeccompFilterTest {
     }
 
     static Stream<Machine> machines() {
-        return Stream.of(new Machine("amd64", 0xc000003e, 0, 257, 9, 16, 285, 221, 28, 440, 293, 41, 53, 319),
-                new Machine("aarch64", 0xc00000b7, 63, 56, 222, 29, 47, 223, 233, 440, 59, 198, 199, 279));
+        return Stream.of(new Machine("amd64", 0xc000003e, 0, 257, 9, 16, 285, 221, 28, 440, 293, 41, 53, 319, 56, 435,
+                        434, 57),
+                new Machine("aarch64", 0xc00000b7, 63, 56, 222, 29, 47, 223, 233, 440, 59, 198, 199, 279, 220, 435, 434,
+                        -1));
+    }
+
+    /** The answers to starting a process (EPERM) and to clone3 (ENOSYS, on which glibc uses clone). */
+    private static final int NOT_PERMITTED = 0x00050000 | 1, NO_SUCH_CALL = 0x00050000 | 38;
+    /** clone's flags as glibc's pthread_create gives them (a thread), and as its posix_spawn does (a process). */
+    private static final long THREAD = 0x3d0f00, SPAWN = 0x4111, CLONE_PIDFD = 0x1000;
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void noRunCanStartAProcessButEveryRunMayStartThreads(Machine machine) {
+        for (boolean hidden : new boolean[] {false, true}) {
+            byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), hidden);
+            String run = hidden ? " in a hidden run" : " in a public run";
+            assertThat(run(filter, machine.audit(), machine.cloneCall(), THREAD)).as("clone of a thread" + run)
+                    .isEqualTo(ALLOW);
+            assertThat(run(filter, machine.audit(), machine.cloneCall(), SPAWN)).as("clone of a process" + run)
+                    .isEqualTo(NOT_PERMITTED);
+            assertThat(run(filter, machine.audit(), machine.cloneCall(), THREAD | CLONE_PIDFD))
+                    .as("clone of a thread with a pidfd" + run).isEqualTo(NOT_PERMITTED);
+            assertThat(run(filter, machine.audit(), machine.clone3Call(), 0, 88)).as("clone3" + run)
+                    .isEqualTo(NO_SUCH_CALL);
+            assertThat(run(filter, machine.audit(), machine.pidfdOpen(), 1, 0)).as("pidfd_open" + run)
+                    .isEqualTo(NOT_PERMITTED);
+            if (machine.fork() >= 0) {
+                assertThat(run(filter, machine.audit(), machine.fork())).as("fork" + run).isEqualTo(NOT_PERMITTED);
+            }
+        }
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("machines")
+    void aFilterThatLetsRunsStartProcessesAllowsCloneOfAProcess(Machine machine) {
+        byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), false, true);
+        assertThat(run(filter, machine.audit(), machine.cloneCall(), SPAWN)).as("clone of a process").isEqualTo(ALLOW);
+        assertThat(run(filter, machine.audit(), machine.clone3Call(), 0, 88)).as("clone3").isEqualTo(ALLOW);
     }
 
     @ParameterizedTest(name = "{0}")
