@@ -666,14 +666,16 @@ class GradeAttackTest {
 
     /**
      * Machine code of the student's choosing would read the machine in ways no Java call can (its
-     * counters, its timers, calls Java never makes). From Java alone, a run can write a library or
-     * a program into its output folder, but neither loads nor starts (as root the folder is a file
-     * system on which nothing executes), and it has no /proc in which to write its own code. The
-     * attack renders as the correct solution does only when all three are refused, in tick1.xml's
-     * run and in the hidden scene's.
+     * counters, its timers, calls Java never makes). From Java alone, a run can write a library
+     * with code or a program into its output folder, but neither is mapped as code (as root the
+     * folder is a file system on which nothing executes: the program is started here with
+     * processes allowed, so that it is noexec that refuses it), and it has no /proc in which to
+     * write its own code. The attack renders as the correct solution does only when all three are
+     * refused, in tick1.xml's run and in the hidden scene's. (A library with no code in it still
+     * loads, and its relocations write where it asks: docs/grading.md's trust model says so.)
      */
     @Test
-    void aRunCannotRunMachineCodeFromFilesItWroteNorWriteItsOwnCode() throws Exception {
+    void aRunCannotMapFilesItWroteAsCodeNorWriteItsCodeThroughProc() throws Exception {
         assumeThat(Sandbox.confined().diskNotEnforced()).as("the output folder is a file system of its own (as root)")
                 .isNull();
         Grade grade = grade("native-code-from-its-own-files");
