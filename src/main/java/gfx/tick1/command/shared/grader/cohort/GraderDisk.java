@@ -6,6 +6,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.UUID;
+import java.util.concurrent.TimeUnit;
 
 /**
  * Whether a failed grade may be the grader's own disk's doing rather than the student's: a run
@@ -23,6 +24,8 @@ final class GraderDisk {
 
     /** The system's stat (coreutils, which every Debian has): its file system form prints free and all inodes. */
     private static final Path STAT = Path.of("/usr/bin/stat");
+    /** How long stat may take before the grader asks the file system by making a file instead. */
+    static final int STAT_SECONDS = 5;
     /** The prefix of what is made to see whether the file system still takes files. */
     private static final String PROBE = ".tick1-disk-probe-";
 
@@ -73,8 +76,14 @@ final class GraderDisk {
             Process stat = new ProcessBuilder(program.toString(), "-f", "-c", "%d %c", work.toString())
                     .redirectErrorStream(true).start();
             stat.getOutputStream().close();
+            // A file system that does not answer (a hung network mount) must not hang the grade: its
+            // few bytes of output fit in the pipe, so they are read once it has ended.
+            if (!stat.waitFor(STAT_SECONDS, TimeUnit.SECONDS)) {
+                stat.destroyForcibly();
+                return null;
+            }
             printed = new String(stat.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
-            if (stat.waitFor() != 0) {
+            if (stat.exitValue() != 0) {
                 return null;
             }
         } catch (IOException e) {

@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
@@ -49,6 +50,18 @@ class GraderDiskTest {
     void aRoomyFolderIsRoomyWhenStatFails() throws IOException, InterruptedException {
         assertThat(GraderDisk.shortOfSpace(work, stat("failing-stat", "stat: unrecognized option '--file-system'", 1)))
                 .as("why the disk may be at fault, with a stat that does not know the options").isNull();
+    }
+
+    /** Not a timing check: a bound on how long to wait for an answer that, without the fix, never comes. */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aStatThatDoesNotAnswerIsGivenUpAndTheFolderAskedByMakingAFile() throws IOException, InterruptedException {
+        // It prints a count of too few inodes, then hangs as stat does on a network mount that does not answer.
+        Path hanging = dir.resolve("hanging-stat");
+        Files.writeString(hanging, "#!/bin/sh\necho '12 1000000'\nexec sleep 600\n");
+        Files.setPosixFilePermissions(hanging, PosixFilePermissions.fromString("rwx------"));
+        assertThat(GraderDisk.shortOfSpace(work, hanging))
+                .as("why the disk may be at fault, with a stat that never ends (the folder takes a file)").isNull();
     }
 
     @Test
