@@ -24,7 +24,7 @@ import java.util.concurrent.ThreadLocalRandom;
  * files (images, logs) have room while the code keeps below them; a run found holding more than a
  * cap, by the walk or by the file system's own count, is stopped with the cap's words. Its pages
  * are memory, which the kernel charges to the run's control group, within the run's total. Nothing
- * on it can be executed or mapped executable: a library or program the code writes there stays data.
+ * on it is started as a program or mapped as code ({@code noexec}).
  *
  * <p>A cohort job's warm compiler has one of the same size on its folder ({@link #mountReadable}),
  * for the class files javac writes there.
@@ -81,8 +81,9 @@ final class OutputDisk implements AutoCloseable {
     }
 
     private static OutputDisk mount(Path folder, String owner) throws IOException {
-        // noexec: nothing written there can be run or mapped as machine code (System.load of a
-        // library the code wrote, a program it wrote), so Java code cannot bring native code in that way.
+        // noexec: nothing written there is started as a program or mapped as code, so a library with
+        // code in it that the code wrote does not load. (One with no code in it still loads, and its
+        // relocations write where they ask: docs/grading.md's trust model says so.)
         String options = "size=" + BYTES + ",nr_inodes=" + INODES + "," + owner + ",nosuid,nodev,noexec";
         if (!Commands.run(List.of(MOUNT.toString(), "-t", "tmpfs", "-o", options, SOURCE, folder.toString()))) {
             throw new IOException("cannot mount a file system of its own on " + folder);

@@ -17,8 +17,9 @@ import java.util.concurrent.TimeUnit;
  *   <li>sees of the host's files only the JDK and the libraries it loads ({@link SystemFiles}),
  *       read-only, each in memory when the run starts, the folders {@code grade} binds in
  *       (read-only but for its output folder, which is a file system of
- *       its own when {@code grade} runs as root, where nothing can be executed: {@link OutputDisk})
- *       and nothing else: no home folder, no {@code /tmp}, no {@code /dev/shm}, no {@code /proc},
+ *       its own when {@code grade} runs as root, where nothing is mapped as code: {@link OutputDisk})
+ *       and nothing else: no home folder, no {@code /tmp}, no shared memory ({@code /dev/shm} is an empty
+ *       folder on a read-only {@code /dev}), no {@code /proc} (an empty folder),
  *       no other process, none of the organiser's scenes but its own;
  *   <li>has no network (a network namespace with nothing in it, not even the host's loopback),
  *       an empty environment, and a session and PID namespace of its own, so that it cannot
@@ -371,7 +372,7 @@ public final class Sandbox {
         // so neither tick1, nor the grader's temporary folder, nor any scene of the organiser's.
         wrapped.addAll(host.system().bwrapArguments());
         // No file system a run can write but its output folder, which is sized and, as root, noexec: / and /dev
-        // (bwrap's own, of half the host's memory) are read-only, and there is no /dev/shm.
+        // (bwrap's own, of half the host's memory) are read-only, and /dev/shm is an empty folder on that /dev.
         // No /proc at all. It numbers a process's files, as they are first looked at, from the count the kernel
         // numbers pipes and sockets by, one for the whole machine, so a run that looked at many could leave a
         // number for a later run to read; its files count what the whole machine did (stat, meminfo, pressure);
