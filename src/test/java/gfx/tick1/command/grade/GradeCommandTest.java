@@ -94,6 +94,42 @@ class GradeCommandTest {
         assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS");
     }
 
+    /** No run starts a process, and every run may start threads: the ways Java starts them all work. */
+    @Test
+    void aCorrectSolutionThatRendersBesideThreadsPoolsAndTimersPasses() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer("    public BufferedImage render(Scene scene) {\n",
+                """
+                    public BufferedImage render(Scene scene) {
+                        long sum = java.util.stream.IntStream.range(0, 100_000).parallel().asLongStream().sum();
+                        var pool = java.util.concurrent.Executors.newFixedThreadPool(2);
+                        java.util.concurrent.ForkJoinPool forkJoin = new java.util.concurrent.ForkJoinPool(2);
+                        try {
+                            sum += pool.submit(() -> 1L).get() + forkJoin.submit(() -> 1L).get()
+                                    + java.util.concurrent.CompletableFuture.supplyAsync(() -> 1L).join();
+                            Thread thread = new Thread(() -> { });
+                            thread.start();
+                            thread.join();
+                            java.util.Timer timer = new java.util.Timer(true);
+                            timer.schedule(new java.util.TimerTask() {
+                                @Override
+                                public void run() {
+                                }
+                            }, 1);
+                            timer.cancel();
+                        } catch (InterruptedException | java.util.concurrent.ExecutionException e) {
+                            throw new IllegalStateException(e);
+                        } finally {
+                            pool.shutdown();
+                            forkJoin.shutdown();
+                        }
+                        java.util.logging.Logger.getLogger("render").info(sum + " on "
+                                + Runtime.getRuntime().availableProcessors() + " cores, process "
+                                + ProcessHandle.current().pid());
+                """));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS");
+    }
+
     @Test
     void theCorrectSolutionPassesOnEverySceneOfTheProject() throws IOException {
         CliRun run = grade(StudentSolution.correct(), "--scenes", "scenes");
