@@ -114,11 +114,10 @@ class GradeAttackTest {
             StudentSolution attacking = StudentSolution.correct().editRenderer(RENDER, RENDER + first);
             Files.writeString(sphere, attacking.sphere());
             Files.writeString(renderer, attacking.renderer());
-            return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary,
-                    STARTS_PROGRAMS.contains(attack), sphere, renderer, options);
+        } else {
+            Files.writeString(sphere, resourceOr(folder + "Sphere.java", StarterKit.source("Sphere")));
+            Files.writeString(renderer, resourceOr(folder + "Renderer.java", null));
         }
-        Files.writeString(sphere, resourceOr(folder + "Sphere.java", StarterKit.source("Sphere")));
-        Files.writeString(renderer, resourceOr(folder + "Renderer.java", null));
         return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary,
                 STARTS_PROGRAMS.contains(attack), sphere, renderer, options);
     }

@@ -46,8 +46,8 @@ import java.util.Map;
  * AIO context, userfaultfd. Opening (v + 1) x 100,000 pipes, a hidden run could otherwise leave v
  * for the next grade's public run to read. The render needs none of them; the public run, which
  * compiles, keeps them. Not {@code socketpair}: the JVM makes one as its file I/O starts
- * (sun.nio.ch.FileDispatcherImpl), so native code can still move the count with it; Java alone
- * cannot, as starting a process needs pipes.
+ * (sun.nio.ch.FileDispatcherImpl), so native code can still move the count with it; Java's own
+ * calls make socket pairs only to start a process, which no run may (below).
  *
  * <p>And no run starts a process: a JVM a run started with options of its own (JVMCI's, to
  * install machine code of its choosing in its code cache; a class data archive it wrote) would
@@ -122,15 +122,13 @@ final class SeccompFilter {
 
     /** The filter for an architecture as Java names it ({@code os.arch}), or null where tick1 has none. */
     static byte[] forArchitecture(String name) {
-        return forArchitecture(name, false);
+        return forArchitecture(name, false, false);
     }
 
-    /** The filter for an architecture, a hidden run's with {@code hiddenScenes}, or null where tick1 has none. */
-    static byte[] forArchitecture(String name, boolean hiddenScenes) {
-        return forArchitecture(name, hiddenScenes, false);
-    }
-
-    /** {@link #forArchitecture(String, boolean)}, letting a run start processes with {@code processes}. */
+    /**
+     * The filter for an architecture, a hidden run's with {@code hiddenScenes}, one that lets a run
+     * start processes with {@code processes}; or null where tick1 has none.
+     */
     static byte[] forArchitecture(String name, boolean hiddenScenes, boolean processes) {
         return switch (name) {
             case "amd64", "x86_64" -> program(X86_64, hiddenScenes, processes);

@@ -60,7 +60,7 @@ class SeccompFilterTest {
     @MethodSource("machines")
     void noRunCanStartAProcessButEveryRunMayStartThreads(Machine machine) {
         for (boolean hidden : new boolean[] {false, true}) {
-            byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), hidden);
+            byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), hidden, false);
             String run = hidden ? " in a hidden run" : " in a public run";
             assertThat(run(filter, machine.audit(), machine.cloneCall(), THREAD)).as("clone of a thread" + run)
                     .isEqualTo(ALLOW);
@@ -89,7 +89,7 @@ class SeccompFilterTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("machines")
     void aHiddenRunCannotMakeThePipesSocketsAndMemfdsTheKernelNumbersForTheWholeMachine(Machine machine) {
-        byte[] hidden = SeccompFilter.forArchitecture(machine.osArch(), true);
+        byte[] hidden = SeccompFilter.forArchitecture(machine.osArch(), true, false);
         assertThat(run(hidden, machine.audit(), machine.pipe2(), 0, 0)).as("pipe2 in a hidden run").isEqualTo(REFUSED);
         assertThat(run(hidden, machine.audit(), machine.socket(), 1, 1, 0)).as("socket in a hidden run")
                 .isEqualTo(REFUSED);
