@@ -15,8 +15,12 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Set;
+import java.util.jar.Attributes;
+import java.util.jar.JarOutputStream;
+import java.util.jar.Manifest;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -24,9 +28,10 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * The commands a newcomer copies from the README and CONTRIBUTING.md: every {@code tick1} line of
- * their code blocks is a command line tick1 accepts, and every {@code gradle} line names a task the
- * build has; and the section for students runs, as written, in the starter kit's folder.
+ * The commands a newcomer copies from the README and CONTRIBUTING.md: every {@code tick1} and
+ * {@code java -jar tick1.jar} line of their code blocks is a command line tick1 accepts, and every
+ * {@code gradle} line names a task the build has; and the section for students runs, as written, in
+ * the starter kit's folder with the students' jar there.
  */
 class ReadmeCommandsTest {
 
@@ -34,6 +39,8 @@ class ReadmeCommandsTest {
     /** Tasks Gradle's java and application plugins make, which build.gradle does not name. */
     private static final Set<String> PLUGIN_TASKS = Set.of("test", "check", "installDist", "build",
             "compileJava");
+    /** How a line runs tick1: the installed launcher, or the students' jar. */
+    private static final Pattern TICK1 = Pattern.compile("^(?:tick1|java -jar tick1\\.jar) ");
 
     /** The lines of the pages' fenced code blocks, without a trailing {@code # comment}. */
     static List<String> commandLines() throws IOException {
@@ -52,7 +59,7 @@ class ReadmeCommandsTest {
     }
 
     static Stream<String> tick1Commands() throws IOException {
-        return commandLines().stream().filter(line -> line.startsWith("tick1 "));
+        return commandLines().stream().filter(line -> TICK1.matcher(line).find());
     }
 
     static Stream<String> gradleCommands() throws IOException {
@@ -62,7 +69,7 @@ class ReadmeCommandsTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("tick1Commands")
     void everyTick1CommandShownIsACommandLineTick1Accepts(String command) {
-        String[] args = Arrays.stream(command.split("\\s+")).skip(1).toArray(String[]::new);
+        String[] args = TICK1.matcher(command).replaceFirst("").strip().split("\\s+");
         assertThatCode(() -> Tick1.commandLine(new RenderCommand()).parseArgs(args)).as(command)
                 .doesNotThrowAnyException();
     }
@@ -78,8 +85,8 @@ class ReadmeCommandsTest {
 
     /**
      * The student section as a student runs it: in a fresh starter kit (holding a correct
-     * solution), line by line in a shell whose {@code tick1} is this build. Every line succeeds;
-     * none finds a file missing.
+     * solution) with {@code tick1.jar} put in it, a jar that runs this build, line by line in a
+     * shell. Every line succeeds; none finds a file missing.
      */
     @Test
     void theStudentSectionWorksAsWrittenInsideTheStarterKit(@TempDir Path dir) throws Exception {
@@ -89,22 +96,36 @@ class ReadmeCommandsTest {
             Files.copy(Path.of("src/test/resources/students/correct", name), kit.resolve("src/gfx/tick1/" + name),
                     StandardCopyOption.REPLACE_EXISTING);
         }
-        Path bin = Files.createDirectories(dir.resolve("bin"));
+        writeJarOfThisBuild(kit.resolve("tick1.jar"));
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Files.writeString(bin.resolve("tick1"), "#!/bin/sh\nexec '" + java + "' -cp '"
-                + System.getProperty("java.class.path") + "' " + MainClass.NAME + " \"$@\"\n");
-        assertThat(bin.resolve("tick1").toFile().setExecutable(true)).isTrue();
         List<String> lines = studentCommands();
-        assertThat(lines).as("the section's commands").hasSizeGreaterThan(3);
+        assertThat(lines).as("the section's commands").hasSizeGreaterThan(3)
+                .anySatisfy(line -> assertThat(line).startsWith("java -jar tick1.jar "));
         for (String line : lines) {
             ProcessBuilder shell = new ProcessBuilder("sh", "-c", line).directory(kit.toFile())
                     .redirectErrorStream(true).redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
-            shell.environment().put("PATH", bin + File.pathSeparator + Path.of(java).getParent() + File.pathSeparator
-                    + System.getenv("PATH"));
+            shell.environment().put("PATH", Path.of(java).getParent() + File.pathSeparator + System.getenv("PATH"));
             Process process = shell.start();
             String output = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
             assertThat(process.waitFor()).as("%s in the kit's folder:%n%s", line, output).isZero();
             assertThat(output).as(line).doesNotContainIgnoringCase("no such file");
+        }
+    }
+
+    /**
+     * A jar that {@code java -jar} runs as tick1: its manifest names tick1's main class and, as its
+     * class path, this build's classes and libraries (the students' jar holds them; this one points
+     * at them, so the test needs no build of that jar).
+     */
+    private static void writeJarOfThisBuild(Path jar) throws IOException {
+        Manifest manifest = new Manifest();
+        manifest.getMainAttributes().put(Attributes.Name.MANIFEST_VERSION, "1.0");
+        manifest.getMainAttributes().put(Attributes.Name.MAIN_CLASS, MainClass.NAME);
+        manifest.getMainAttributes().put(Attributes.Name.CLASS_PATH,
+                Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator))
+                        .map(entry -> Path.of(entry).toUri().toString()).collect(Collectors.joining(" ")));
+        try (JarOutputStream out = new JarOutputStream(Files.newOutputStream(jar), manifest)) {
+            out.flush();
         }
     }
 
@@ -117,7 +138,7 @@ class ReadmeCommandsTest {
         assertThat(CliRun.inFolder(dir, "starter", "--out", "kit").status()).isZero();
         String readme = Files.readString(Path.of("README.md"));
         String section = readme.substring(readme.indexOf("## For students"), readme.indexOf("## For course staff"));
-        Matcher preview = Pattern.compile("`tick1 preview ([^`]+)`").matcher(section);
+        Matcher preview = Pattern.compile("`(?:tick1|java -jar tick1\\.jar) preview ([^`]+)`").matcher(section);
         assertThat(preview.find()).as("the section for students shows tick1 preview").isTrue();
         assertThat(dir.resolve("kit").resolve(preview.group(1))).as("the scene it previews, in the kit's folder")
                 .isRegularFile();
@@ -202,10 +223,13 @@ class ReadmeCommandsTest {
         return new Shell(process.waitFor(), output);
     }
 
+    /** The README's test command: the code block of the staff's section that runs {@code gradle ... check}. */
     @Test
     void ciRunsTheReadmesTestCommand() throws IOException {
         String readme = Files.readString(Path.of("README.md"));
-        String command = readme.substring(readme.indexOf("## Test")).split("```sh\n", 2)[1].split("\n", 2)[0];
+        String staff = readme.substring(readme.indexOf("## For course staff"));
+        String command = staff.lines().filter(line -> line.startsWith("gradle ") && line.endsWith(" check"))
+                .findFirst().orElseThrow(() -> new AssertionError("the staff's section shows no test command"));
         String ci = Files.readString(Path.of(".ci/run"));
 
         assertThat(ci).as(".ci/run's test command").contains("TEST_CMD=(" + command + ")");

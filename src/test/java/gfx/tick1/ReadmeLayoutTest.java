@@ -8,8 +8,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Deque;
 import java.util.List;
+import java.util.Locale;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.regex.Matcher;
@@ -19,7 +21,11 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * The README's "Source layout" and the documentation name the tree as it is. The layout's block is a tree: a line
+ * The README is for the people who use tick1, in at most 150 lines: its set-up, then students, then
+ * course staff. The documentation in docs/ says what they need in at most 18,000 words, each page
+ * opening with what its reader does with it, and every relative link of the pages reaches a file
+ * and heading that exist. CONTRIBUTING.md's "Source layout" and the documentation name the tree as
+ * it is. The layout's block is a tree: a line
  * whose first words are paths ({@code engine/}, {@code Tick1.java}, {@code compare/ diff/}) names them inside the
  * nearest folder above it that is indented less; any other line goes on describing the line before. Every path of
  * it exists, and every package of the program has its line. Elsewhere (README.md, CONTRIBUTING.md, docs/*.md), a
@@ -42,16 +48,14 @@ class ReadmeLayoutTest {
 
     private static List<Path> pages() throws IOException {
         List<Path> pages = new ArrayList<>(List.of(Path.of("README.md"), Path.of("CONTRIBUTING.md")));
-        try (DirectoryStream<Path> docs = Files.newDirectoryStream(Path.of("docs"), "*.md")) {
-            docs.forEach(pages::add);
-        }
+        pages.addAll(docsPages());
         return pages;
     }
 
-    /** The README from its section "Source layout" up to the next section. */
+    /** CONTRIBUTING.md from its section "Source layout" up to the next section. */
     private static String layoutSection() throws IOException {
-        String readme = Files.readString(Path.of("README.md"));
-        String section = readme.substring(readme.indexOf("## Source layout"));
+        String contributing = Files.readString(Path.of("CONTRIBUTING.md"));
+        String section = contributing.substring(contributing.indexOf("## Source layout"));
         int next = section.indexOf("\n## ", 1);
         return next < 0 ? section : section.substring(0, next);
     }
@@ -102,8 +106,8 @@ class ReadmeLayoutTest {
     void everyPathOfTheSourceLayoutExists() throws IOException {
         List<String> paths = layoutPaths();
 
-        assertThat(paths).as("the paths of the README's source layout").contains("src/main/java/gfx/tick1/")
-                .allSatisfy(path -> assertThat(Path.of(path)).as("%s, in the README's source layout", path)
+        assertThat(paths).as("the paths of CONTRIBUTING.md's source layout").contains("src/main/java/gfx/tick1/")
+                .allSatisfy(path -> assertThat(Path.of(path)).as("%s, in CONTRIBUTING.md's source layout", path)
                         .exists());
     }
 
@@ -117,7 +121,7 @@ class ReadmeLayoutTest {
                     .filter(folder -> !layout.contains(folder)).sorted().toList();
         }
 
-        assertThat(missing).as("the package folders the README's source layout leaves out").isEmpty();
+        assertThat(missing).as("the package folders CONTRIBUTING.md's source layout leaves out").isEmpty();
     }
 
     /** The folder names of the program's packages, at any depth: "engine", "scene", "grader", ... */
@@ -197,7 +201,7 @@ class ReadmeLayoutTest {
             }
         }
 
-        assertThat(named).as("the classes the README's source layout section names").isNotEmpty()
+        assertThat(named).as("the classes CONTRIBUTING.md's source layout section names").isNotEmpty()
                 .allSatisfy(name -> assertThat(classes).as("the classes of src/main and src/test").contains(name));
     }
 
@@ -226,5 +230,117 @@ class ReadmeLayoutTest {
         Path testClass = Path.of(path.getParent() + ".java");
         return Files.isRegularFile(testClass)
                 && Files.readString(testClass).contains(" " + path.getFileName() + "(");
+    }
+
+    /** The documentation's pages: docs/*.md. */
+    private static List<Path> docsPages() throws IOException {
+        List<Path> pages = new ArrayList<>();
+        try (DirectoryStream<Path> docs = Files.newDirectoryStream(Path.of("docs"), "*.md")) {
+            docs.forEach(pages::add);
+        }
+        return pages;
+    }
+
+    @Test
+    void theReadmeIsAtMost150Lines() throws IOException {
+        assertThat(Files.readAllLines(Path.of("README.md"))).as("README.md's lines").hasSizeLessThanOrEqualTo(150);
+    }
+
+    @Test
+    void theReadmeGivesTheSetUpThenTheStudentsSectionThenTheStaffs() throws IOException {
+        List<String> sections = Files.readAllLines(Path.of("README.md")).stream()
+                .filter(line -> line.startsWith("## ")).toList();
+
+        assertThat(sections).as("README.md's sections").startsWith("## Build and render", "## For students",
+                "## For course staff");
+    }
+
+    @Test
+    void theStudentsSectionStartsFromTheStudentsJar() throws IOException {
+        String readme = Files.readString(Path.of("README.md"));
+        String section = readme.substring(readme.indexOf("## For students") + "## For students".length()).strip();
+
+        assertThat(section).as("the README's section for students").startsWith("Download `tick1.jar` from Moodle")
+                .contains("`java -jar tick1.jar ...`");
+    }
+
+    /** Words as {@code wc -w} counts them: runs of anything but white space. */
+    @Test
+    void theDocumentationIsAtMost18000Words() throws IOException {
+        long words = 0;
+        for (Path page : docsPages()) {
+            words += Arrays.stream(Files.readString(page).split("\\s+")).filter(word -> !word.isEmpty()).count();
+        }
+
+        assertThat(words).as("the words of docs/*.md").isPositive().isLessThanOrEqualTo(18_000);
+    }
+
+    /**
+     * Under its title, a page first says in a sentence or two what its reader does with it: a short paragraph of
+     * prose, not a table, list, code block or heading.
+     */
+    @Test
+    void everyDocumentationPageOpensWithASentenceOrTwoOfWhatItIsFor() throws IOException {
+        for (Path page : docsPages()) {
+            List<String> lines = Files.readAllLines(page);
+            assertThat(lines.get(0)).as("%s's first line", page).startsWith("# ");
+            String opening = lines.stream().skip(1).dropWhile(String::isBlank).takeWhile(line -> !line.isBlank())
+                    .collect(Collectors.joining(" "));
+
+            assertThat(opening).as("%s's opening paragraph", page).doesNotStartWithIgnoringCase("|")
+                    .matches("[A-Za-z`*].*\\.").satisfies(text -> assertThat(text.split("\\s+"))
+                            .as("the words of %s's opening paragraph", page).hasSizeLessThanOrEqualTo(60));
+        }
+    }
+
+    /** The anchors GitHub gives a page's headings: lower case, punctuation dropped, spaces made hyphens. */
+    private static Set<String> anchors(Path page) throws IOException {
+        Set<String> anchors = new TreeSet<>();
+        boolean inBlock = false;
+        for (String line : Files.readAllLines(page)) {
+            if (line.startsWith("```")) {
+                inBlock = !inBlock;
+            } else if (!inBlock && line.matches("#{1,6} .*")) {
+                String slug = line.replaceFirst("^#+ ", "").strip().toLowerCase(Locale.ROOT)
+                        .replaceAll("[^\\p{L}\\p{N} _-]", "").replace(' ', '-');
+                String anchor = slug;
+                for (int n = 1; anchors.contains(anchor); n++) {
+                    anchor = slug + "-" + n;
+                }
+                anchors.add(anchor);
+            }
+        }
+        return anchors;
+    }
+
+    @Test
+    void everyRelativeLinkOfThePagesReachesAFileAndHeadingThatExist() throws IOException {
+        List<String> broken = new ArrayList<>();
+        int links = 0;
+        for (Path page : pages()) {
+            List<String> lines = Files.readAllLines(page);
+            for (int i = 0; i < lines.size(); i++) {
+                Matcher matcher = LINK.matcher(lines.get(i));
+                while (matcher.find()) {
+                    String target = matcher.group(1);
+                    if (target.matches("[a-z]+:.*")) {
+                        continue;
+                    }
+                    links++;
+                    String file = target.replaceFirst("#.*$", "");
+                    Path linked = file.isEmpty() ? page : page.resolveSibling(file).normalize();
+                    String anchor = target.contains("#") ? target.substring(target.indexOf('#') + 1) : "";
+                    boolean headingFound = anchor.isEmpty()
+                            || linked.toString().endsWith(".md") && Files.isRegularFile(linked)
+                            && anchors(linked).contains(anchor);
+                    if (!Files.exists(linked) || linked.startsWith("..") || !headingFound) {
+                        broken.add(page + ":" + (i + 1) + ": " + target);
+                    }
+                }
+            }
+        }
+
+        assertThat(links).as("the relative links of the pages").isGreaterThan(20);
+        assertThat(broken).as("relative links of README.md, CONTRIBUTING.md or docs/*.md that reach nothing").isEmpty();
     }
 }

@@ -29,7 +29,7 @@ import java.nio.file.Path;
  * <p>In the ordinary test run ("regression mode") each test runs once on every seed: the files of
  * the bad-input corpus and the example scenes, which the build copies into the resource folder
  * gfx/tick1/fuzz/SceneFuzzTestInputs, plus any crash Jazzer saved there. With JAZZER_FUZZ set, one
- * of them is fuzzed for as long as asked; see docs/hostile-input.md for the command.
+ * of them is fuzzed for as long as asked; see CONTRIBUTING.md for the command.
  *
  * <p>The property fuzzed: whatever the bytes, the loader either returns a scene that respects every
  * documented bound or throws a {@link SceneException} with one printable line naming the file;
