@@ -2,7 +2,6 @@ package gfx.tick1.command.bench;
 
 import gfx.tick1.command.shared.cli.ExitStatus;
 import gfx.tick1.engine.fast.FastRenderer;
-import gfx.tick1.command.shared.grader.cohort.CohortTiming;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.image.PngOutput;

@@ -1,6 +1,5 @@
 package gfx.tick1.command.bench;
 
-import gfx.tick1.command.shared.grader.cohort.CohortTiming;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;

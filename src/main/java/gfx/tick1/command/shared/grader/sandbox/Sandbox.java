@@ -535,94 +535,37 @@ public final class Sandbox {
     }
 
     /**
-     * What a control group adds to one run in the sandbox, in seconds: the median of {@code runs}
-     * times making, limiting and removing one, plus the median extra time of starting a program
-     * through the shell that joins it; NaN where no group can be made. (The kernel's accounting
-     * while the code runs is not in it. Whole sandbox runs with and without a group differ by
-     * less than their own noise on a shared machine, so the parts are timed.)
+     * Makes the control group of one run, held to a run's totals, and removes it: what each run's
+     * group costs beyond the run. Only where {@link Enforcement#totals} holds.
      */
-    public double cgroupSeconds(int runs) throws IOException, InterruptedException {
-        if (!confined || host.cgroups() == null) {
-            return Double.NaN;
-        }
-        long[] group = new long[runs], shell = new long[runs];
-        for (int i = 0; i < runs; i++) {
-            long start = System.nanoTime();
-            cgroupFor(new Cgroup.Totals(256L << 20, PROCESSES_LIMIT, true)).close();
-            group[i] = System.nanoTime() - start;
-            shell[i] = timeStart("/bin/sh", "-c", "exec /usr/bin/true") - timeStart("/usr/bin/true");
-        }
-        return (median(group) + median(shell)) / 1e9;
+    public void makeAndRemoveRunGroup() throws IOException {
+        cgroupFor(new Cgroup.Totals(256L << 20, PROCESSES_LIMIT, true)).close();
     }
 
     /**
-     * What its own output file system adds to one run in the sandbox, in seconds: the median of
-     * {@code runs} times mounting one, counting it once as a run's end does, and unmounting it; NaN
-     * where the runs' output folders are on the host's disk.
+     * Mounts an output file system of its own on {@code folder}, an empty folder, counts it once
+     * as a run's end does, and unmounts it: what each run's output disk costs beyond the run. Only
+     * where {@link Enforcement#ownDisks} holds.
      */
-    public double outputDiskSeconds(int runs) throws IOException {
-        if (!confined || !host.ownDisks()) {
-            return Double.NaN;
-        }
-        Path folder = Files.createTempDirectory("tick1-disk-");
-        try {
-            long[] times = new long[runs];
-            for (int i = 0; i < runs; i++) {
-                long start = System.nanoTime();
-                try (OutputDisk disk = outputDisk(folder)) {
-                    disk.overCap();
-                }
-                times[i] = System.nanoTime() - start;
-            }
-            return median(times) / 1e9;
-        } finally {
-            WorkFolder.delete(folder);
+    public void mountCountAndUnmountOutputDisk(Path folder) throws IOException {
+        try (OutputDisk disk = outputDisk(folder)) {
+            disk.overCap();
         }
     }
 
-    /**
-     * What showing a run the host's files one by one ({@link SystemFiles}) adds to it, in seconds:
-     * reading them into memory before it ({@link #warm}), and starting bwrap with each bound on its
-     * own rather than all of /usr bound at once (each start runs {@code true}, without limits); the
-     * medians of {@code runs} times each. NaN without a sandbox.
-     */
-    public double systemFilesSeconds(int runs) throws IOException, InterruptedException {
-        if (!confined) {
-            return Double.NaN;
-        }
-        List<String> start = List.of(host.bwrap().toString(), "--unshare-all", "--die-with-parent", "--proc", "/proc",
-                "--dev", "/dev");
-        List<String> eachFile = new ArrayList<>(start);
-        eachFile.addAll(host.system().bwrapArguments());
-        eachFile.addAll(List.of("--ro-bind", TRUE.toString(), TRUE.toString(), "--", TRUE.toString()));
-        List<String> allOfUsr = new ArrayList<>(start);
-        allOfUsr.addAll(List.of("--ro-bind", "/usr", "/usr", "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64",
-                "/lib64", "--", TRUE.toString()));
-        long[] warming = new long[runs], filesStart = new long[runs], usrStart = new long[runs];
-        for (int i = 0; i < runs; i++) {
-            long before = System.nanoTime();
-            warm(List.of());
-            warming[i] = System.nanoTime() - before;
-            filesStart[i] = timeStart(eachFile.toArray(String[]::new));
-            usrStart[i] = timeStart(allOfUsr.toArray(String[]::new));
-        }
-        return (median(warming) + median(filesStart) - median(usrStart)) / 1e9;
+    /** The bwrap a confined sandbox starts. */
+    public Path bwrap() {
+        return host.bwrap();
     }
 
-    private static long timeStart(String... command) throws IOException, InterruptedException {
-        long start = System.nanoTime();
-        Process process = processFor(List.of(command)).redirectErrorStream(true)
-                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-        process.getOutputStream().close();
-        process.waitFor();
-        return System.nanoTime() - start;
+    /** bwrap's arguments that show a run the host's files one by one ({@link SystemFiles}), in a confined sandbox. */
+    public List<String> hostFileArguments() {
+        return host.system().bwrapArguments();
     }
 
-    private static double median(long[] values) {
-        long[] sorted = values.clone();
-        java.util.Arrays.sort(sorted);
-        int middle = sorted.length / 2;
-        return sorted.length % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2.0;
+    /** Reads into memory every file of the host's that a run sees, as each run's start does ({@link #warm}). */
+    public void warmHostFiles() {
+        warm(List.of());
     }
 
     /**
