@@ -164,7 +164,7 @@ public final class SubmissionGrader {
      * A grade whose public scenes are run and judged, and whose hidden ones are not yet: what
      * {@link #finish} needs, and nothing of the public run's images.
      */
-    public static final class Halfway implements Begun {
+    public record Halfway(Compiled code, PublicScenes publicScenes, Spent spent) implements Begun {
         /**
          * The most bytes of compiled classes a grade set aside keeps on the grader's disk: far more
          * than any solution's, far less than a compile may make.
@@ -189,16 +189,6 @@ public final class SubmissionGrader {
 
         /** The grade's time so far: by phase, and in all. */
         record Spent(Phases phases, long elapsedNanos) {
-        }
-
-        private final Compiled code;
-        private final PublicScenes publicScenes;
-        private final Spent spent;
-
-        Halfway(Compiled code, PublicScenes publicScenes, Spent spent) {
-            this.code = code;
-            this.publicScenes = publicScenes;
-            this.spent = spent;
         }
 
         /**
