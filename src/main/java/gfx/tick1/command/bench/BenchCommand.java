@@ -2,10 +2,10 @@ package gfx.tick1.command.bench;
 
 import gfx.tick1.command.shared.cli.ExitStatus;
 import gfx.tick1.engine.fast.FastRenderer;
-import gfx.tick1.command.shared.grader.cohort.CohortTiming;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.image.PngOutput;
+import gfx.tick1.engine.io.Counted;
 import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.io.OnExit;
 import gfx.tick1.engine.render.ReferenceRenderer;
@@ -106,7 +106,7 @@ public final class BenchCommand implements Callable<Integer> {
         Scene tick1 = load(tick1File);
 
         List<Result> results = new ArrayList<>();
-        log.printf("tick1 bench (%s): %s, Java %s%n", quick ? "quick" : "full", count(cores, "core"),
+        log.printf("tick1 bench (%s): %s, Java %s%n", quick ? "quick" : "full", Counted.of(cores, "core"),
                 System.getProperty("java.version"));
 
         BufferedImage truth = new TruthRenderer(plan.errorWidth(), plan.errorHeight()).render(tick1);
@@ -193,15 +193,10 @@ public final class BenchCommand implements Callable<Integer> {
                 timing, errorAgainst, ImageDifference.between(reference, small), reference.getWidth(),
                 reference.getHeight());
         log.printf("  %-45s %-16s %-11s %9.1f ms %8.1f Mrays/s  max error %s%n", setting.name(), sceneName,
-                count(setting.threads(), "thread"), timing.median(), result.megaRaysPerSecond(),
-                count(result.error().maxDifference(), "level"));
+                Counted.of(setting.threads(), "thread"), timing.median(), result.megaRaysPerSecond(),
+                Counted.of(result.error().maxDifference(), "level"));
         log.flush();
         return result;
-    }
-
-    /** "1 thread", "2 threads": a count and its noun, in the number English gives it. */
-    static String count(int n, String noun) {
-        return n + " " + noun + (n == 1 ? "" : "s");
     }
 
     /** ImageIO's PNG writer at several deflate levels on the benchmark's largest tick1 frame: time and size. */

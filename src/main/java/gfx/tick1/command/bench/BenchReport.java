@@ -1,5 +1,6 @@
 package gfx.tick1.command.bench;
 
+import gfx.tick1.engine.io.Counted;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -38,7 +39,7 @@ final class BenchReport {
     private String machine() {
         return String.format(Locale.ROOT, "%s %s (%s), %s, %s %s, %s", System.getProperty("java.vm.name"),
                 System.getProperty("java.version"), System.getProperty("java.vendor"),
-                BenchCommand.count(cores, "core"),
+                Counted.of(cores, "core"),
                 System.getProperty("os.name"), System.getProperty("os.arch"),
                 ZonedDateTime.now().format(DateTimeFormatter.ISO_OFFSET_DATE_TIME));
     }

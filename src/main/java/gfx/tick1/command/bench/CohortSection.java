@@ -1,6 +1,5 @@
 package gfx.tick1.command.bench;
 
-import gfx.tick1.command.shared.grader.cohort.CohortTiming;
 import gfx.tick1.command.shared.kit.StarterKit;
 import java.io.IOException;
 import java.io.PrintWriter;

@@ -1,6 +1,6 @@
 package gfx.tick1.command.bench;
 
-import gfx.tick1.command.shared.grader.cohort.CohortTiming;
+import gfx.tick1.engine.io.Counted;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
@@ -54,13 +54,13 @@ final class Goals {
         goals.add(new Goal("tick1.xml at 640 x 480, whole run: tick1's time / the course code's",
                 whole.courseCode() == null ? Double.NaN : whole.startup().median() / whole.courseCode().median(),
                 0.8, "", whole.courseCodeMissing(), String.format(Locale.ROOT, "%s each, not %d",
-                        BenchCommand.count(plan.pairedRuns(), "run"), full.pairedRuns())));
+                        Counted.of(plan.pairedRuns(), "run"), full.pairedRuns())));
         goals.add(new Goal("tick1.xml at " + whole.endToEndSize() + " with 4 samples, whole run: tick1's time / "
                 + "single-core scalar C's", whole.scalarC() == null ? Double.NaN
                         : whole.endToEnd().median() / whole.scalarC().median(), 0.8, "", whole.scalarCMissing(),
                 String.format(Locale.ROOT, "%d x %d, not %d x %d, where tick1's start weighs more; %s each, not %d",
                         plan.bigWidth(), plan.bigHeight(), full.bigWidth(), full.bigHeight(),
-                        BenchCommand.count(plan.bigRuns(), "run"), full.bigRuns())));
+                        Counted.of(plan.bigRuns(), "run"), full.bigRuns())));
         goals.add(new Goal("grading a cohort: wall time a submission", cohort == null ? Double.NaN
                 : cohort.wallPerSubmission(), 0.5, " s", "see the cohort section", String.format(Locale.ROOT,
                         "a cohort of %d, not %d, over which the grade's set-up is shared", plan.cohort(),

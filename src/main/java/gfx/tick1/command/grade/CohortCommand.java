@@ -5,7 +5,6 @@ import gfx.tick1.command.shared.cli.ExitStatuses;
 import gfx.tick1.command.shared.grader.cohort.CohortGrade;
 import gfx.tick1.command.shared.grader.cohort.ResultStore;
 import gfx.tick1.command.shared.grader.grading.Grading;
-import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.intake.Submissions;
 import gfx.tick1.command.shared.grader.lookalike.Lookalikes;
 import gfx.tick1.command.shared.grader.model.CohortInputException;
@@ -18,6 +17,7 @@ import gfx.tick1.command.shared.grader.report.Worksheet;
 import gfx.tick1.command.shared.grader.sandbox.ChildOutput;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import gfx.tick1.engine.io.Counted;
 import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.io.OnExit;
 import gfx.tick1.engine.scene.SceneException;
@@ -185,7 +185,7 @@ final class CohortCommand {
         long passed = results.stream().filter(StudentResult::passed).count();
         // A submission with a problem (a missing file, ...) is never run, so neither now nor earlier.
         long problems = results.stream().filter(result -> result.submission().problem() != null).count();
-        out.println("Graded " + SubmissionGrader.count(results.size(), "submission") + " ("
+        out.println("Graded " + Counted.of(results.size(), "submission") + " ("
                 + (results.size() - done.stored() - problems) + " now, " + done.stored() + " from earlier runs"
                 + (problems > 0 ? ", " + problems + " not run: a problem with their files" : "") + "): "
                 + passed + " passed, " + (results.size() - passed) + " failed.");

@@ -132,14 +132,43 @@ public final class GradeCommand implements Callable<Integer> {
         if (usage != null) {
             throw new ParameterException(spec.commandLine(), usage);
         }
-        if (format == Format.vpl) {
-            return new VplGrade(this, out, err).call();
+        return format == Format.vpl ? vplEvaluation(out, err) : call(out, err);
+    }
+
+    /**
+     * {@code --format vpl}: one student's grade as VPL's evaluation. Where tick1 cannot grade (no sandbox can be
+     * made, a file or a scene cannot be read), the report says so and proposes no grade, and the reason goes, as
+     * ever, to the standard error, which the activity's vpl_evaluate.sh shows to staff. It never runs the code
+     * without the sandbox: its hidden scenes and its report would be in the student's reach.
+     */
+    private Integer vplEvaluation(PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
+        try {
+            return call(out, err);
+        } catch (CommandFailure | IOException e) {
+            out.print(VplReport.notSetUp());
+            out.flush();
+            throw e;
         }
-        return call(out, err);
+    }
+
+    /** Why the options do not go with --format vpl, or null. */
+    private String vplOptionsProblem() {
+        if (target == null || target.student == null) {
+            return "--format vpl grades one student: give --sphere and --renderer";
+        }
+        if (noSandbox) {
+            return "--format vpl never runs a student's code without the sandbox: leave out --no-sandbox";
+        }
+        try {
+            GradeRange.parse(gradeRange);
+        } catch (IllegalArgumentException e) {
+            return "--grade-range " + gradeRange + ": " + e.getMessage();
+        }
+        return null;
     }
 
     /** The grade, with the checks of the options done: in tick1's own format, or with --format vpl's sandbox. */
-    Integer call(PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
+    private Integer call(PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
         Sandbox sandbox;
         if (noSandbox) {
             err.println("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions; it can "
@@ -221,7 +250,7 @@ public final class GradeCommand implements Callable<Integer> {
         if (problem != null) {
             return problem;
         }
-        return format == Format.vpl ? VplGrade.checkOptions(this) : null;
+        return format == Format.vpl ? vplOptionsProblem() : null;
     }
 
     private int grade(Path work, Sandbox sandbox, StudentProcess process, PrintWriter out, PrintWriter err)
@@ -259,18 +288,6 @@ public final class GradeCommand implements Callable<Integer> {
 
     boolean vpl() {
         return format == Format.vpl;
-    }
-
-    boolean noSandbox() {
-        return noSandbox;
-    }
-
-    boolean oneStudent() {
-        return target != null && target.student != null;
-    }
-
-    String gradeRangeText() {
-        return gradeRange;
     }
 
     /** The --grade-range, checked by {@link #checkOptions()} first. */

@@ -3,6 +3,7 @@ package gfx.tick1.command.vpl;
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
 import gfx.tick1.command.shared.grader.vpl.GradeRange;
+import gfx.tick1.command.shared.grader.vpl.VplFiles;
 import gfx.tick1.command.shared.grader.vpl.VplReport;
 import gfx.tick1.engine.io.IoErrors;
 import java.io.IOException;
@@ -44,10 +45,10 @@ public final class VplCommand implements Callable<Integer> {
     public static final int EXIT_CANNOT_WRITE = 3;
 
     /** The execution file VPL runs for Evaluate. */
-    public static final String EVALUATE = "vpl_evaluate.sh";
+    public static final String EVALUATE = VplFiles.EVALUATE;
     /** How a hidden scene's execution file is named: this, then its number and .xml. */
     public static final String HIDDEN_PREFIX = "tick1-hidden-";
-    static final String README = "README.txt";
+    static final String README = VplFiles.README;
 
     @Spec
     private CommandSpec spec;

@@ -30,7 +30,7 @@ record Frame(int width, int height, SamplePattern samples, double widthM, double
      * for step: {@code castRay} and {@code Vector3.normalised}. {@code column} holds x as a
      * double; reading it from memory rather than using the loop counter lets C2 vectorise the
      * loop (JDK 17 cannot vectorise a use of the counter as a number), which makes this pass
-     * about seven times faster.
+     * much faster (docs/benchmark.md).
      */
     void rayDirections(double offsetX, double sampleY, double[] column, double[] dx, double[] dy, double[] dz) {
         double py = planeY(sampleY), pySquared = py * py;

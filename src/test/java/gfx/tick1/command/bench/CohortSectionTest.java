@@ -2,7 +2,6 @@ package gfx.tick1.command.bench;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.command.shared.grader.cohort.CohortTiming;
 import org.junit.jupiter.api.Test;
 
 /** The benchmark's cohort section says what was measured, with every phase, and sets no target. */

@@ -21,9 +21,7 @@ import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Queue;
 import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -59,18 +57,11 @@ public final class CohortGrade {
     }
 
 
-    /**
-     * From how many submissions to grade a class data sharing archive is made: it takes about as
-     * long as grading one, and saves each scene's JVM about a fifteenth of its processor time
-     * (0.29 against 0.31 CPU seconds at 640 x 480) and each warm compiler's start more.
-     */
-    private static final int ARCHIVE_PAYS_FROM = 8;
-
-    private final Grading grading;
-    private final Sandbox sandbox;
+    final Grading grading;
+    final Sandbox sandbox;
     private final int jobs;
-    private final ResultStore store;
-    private final PrintWriter err;
+    final ResultStore store;
+    final PrintWriter err;
     private final boolean showProgress;
     private final List<StudentProcess> processes = Collections.synchronizedList(new ArrayList<>());
     private volatile boolean stopping;
@@ -105,13 +96,26 @@ public final class CohortGrade {
         }
     }
 
+    /** Counts {@code process} among those {@link #stop()} stops, and stops it if stop() came first. */
+    void started(StudentProcess process) {
+        processes.add(process);
+        if (stopping) {
+            process.stop();   // stop() came before this process was there to stop
+        }
+    }
+
+    /** No longer counts {@code process} among those {@link #stop()} stops. */
+    void ended(StudentProcess process) {
+        processes.remove(process);
+    }
+
     /** Grades {@code submissions} in {@code work}, a folder of the grader's own. */
     public Done run(List<Submission> submissions, Path work) throws IOException, InterruptedException {
         return new CohortRun(submissions, work).grade();
     }
 
     /** One run's state: what is to grade, what is known, and the jobs that grade it. */
-    private final class CohortRun {
+    private final class CohortRun implements CohortJob.Results {
         private final List<Submission> submissions;
         private final Path work;
         private final StudentResult[] results;
@@ -123,7 +127,7 @@ public final class CohortGrade {
         private final List<SubmissionGrader.Phases> phases = Collections.synchronizedList(new ArrayList<>());
         private final List<Ungraded> ungraded = Collections.synchronizedList(new ArrayList<>());
         /** The jobs not grading just now: each has its own folder, sandbox user and process. */
-        private final BlockingQueue<Job> idle = new LinkedBlockingQueue<>();
+        private final BlockingQueue<CohortJob> idle = new LinkedBlockingQueue<>();
         private int stored;
 
         CohortRun(List<Submission> submissions, Path work) {
@@ -189,10 +193,10 @@ public final class CohortGrade {
         private void gradeTodo() throws IOException, InterruptedException {
             // The sandboxes' users must be able to pass through the work folder to their own folders in it.
             Files.setPosixFilePermissions(work, PosixFilePermissions.fromString("rwx--x--x"));
-            StudentProcess shared = process(work, todo.size());
+            StudentProcess shared = CohortJob.harness(CohortGrade.this, work, todo.size());
             int count = Math.min(jobs, todo.size());
             for (int job = 0; job < count; job++) {
-                idle.add(new Job(job, work.resolve("job-" + job), shared));
+                idle.add(new CohortJob(CohortGrade.this, job, work.resolve("job-" + job), shared));
             }
             Progress progress = new Progress(todo.size());
             ExecutorService pool = Executors.newFixedThreadPool(count, new JobThreads());
@@ -206,14 +210,14 @@ public final class CohortGrade {
                 }
                 awaitAll(begun);
                 List<Future<?>> finished = new ArrayList<>();
-                for (Job job : idle) {
+                for (CohortJob job : idle) {
                     finished.add(pool.submit(() -> finishAll(job, progress)));
                 }
                 awaitAll(finished);
             } finally {
                 pool.shutdownNow();
                 pool.awaitTermination(1, TimeUnit.MINUTES);
-                idle.forEach(Job::forgetWaiting);   // grades stop() cut short between their halves
+                idle.forEach(CohortJob::forgetWaiting);   // grades stop() cut short between their halves
                 synchronized (processes) {
                     processes.forEach(StudentProcess::close);   // the jobs' warm compilers
                 }
@@ -239,7 +243,7 @@ public final class CohortGrade {
             if (stopping) {
                 return null;
             }
-            Job job = idle.take();
+            CohortJob job = idle.take();
             try {
                 guarded(index, progress, () -> job.begin(submissions.get(index), index, this));
             } finally {
@@ -249,9 +253,9 @@ public final class CohortGrade {
         }
 
         /** Finishes, one after the other, the grades {@code job} began and left waiting for their hidden scenes. */
-        private Void finishAll(Job job, Progress progress) throws InterruptedException {
-            for (Job.Waiting waiting = job.nextWaiting(); waiting != null && !stopping; waiting = job.nextWaiting()) {
-                Job.Waiting grade = waiting;
+        private Void finishAll(CohortJob job, Progress progress) throws InterruptedException {
+            for (CohortJob.Waiting next = job.nextWaiting(); next != null && !stopping; next = job.nextWaiting()) {
+                CohortJob.Waiting grade = next;
                 guarded(grade.index(), progress, () -> job.finish(grade, this));
             }
             return null;
@@ -275,14 +279,15 @@ public final class CohortGrade {
                             .replace('\n', ' ').lines().findFirst().orElse("") + ")";
                     why = why.length() > WHY_CAP ? why.substring(0, WHY_CAP) + "...)" : why;
                     ungraded.add(new Ungraded(submission.folder(), why, true));
-                    results[index] = notGraded(submission, why);
+                    results[index] = StudentResult.notGraded(submission, why);
                     progress.done(false);
                 }
             }
         }
 
-        void storeResult(int index, Submission submission, SubmissionGrader.Graded graded, Path entry)
-                throws IOException {
+        @Override
+        public void storeResult(int index, SubmissionGrader.Graded graded, Path entry) throws IOException {
+            Submission submission = submissions.get(index);
             if (graded.imagesUnwritable()) {
                 ungraded.add(new Ungraded(submission.folder(), "its images could not be stored in",
                         false));
@@ -306,133 +311,6 @@ public final class CohortGrade {
     /** The most characters of why a submission could not be graded. */
     private static final int WHY_CAP = 200;
 
-    /** The failing result of a submission that could not be graded: a row that says so. */
-    private StudentResult notGraded(Submission submission, String why) {
-        return StudentResult.notGraded(submission, why);
-    }
-
-    /**
-     * One job: a folder, a sandbox user and a process of its own, made when it first grades, with
-     * a warm compiler that compiles every submission the job grades.
-     */
-    private final class Job {
-        private final int number;
-        private final Path folder;
-        private final StudentProcess shared;
-        private final Queue<Waiting> waiting = new ConcurrentLinkedQueue<>();
-        private SubmissionGrader grader;
-
-        Job(int number, Path folder, StudentProcess shared) {
-            this.number = number;
-            this.folder = folder;
-            this.shared = shared;
-        }
-
-        /**
-         * The job's folder, sandbox and process, made when it first grades; what a failed set-up
-         * made is removed, so that the job's next grade sets up afresh.
-         */
-        private void setUp() throws IOException {
-            // Beside the job's folder, not in it: the compiler's user may not enter the job's.
-            Path compilerFolder = folder.resolveSibling(folder.getFileName() + "-compiler");
-            try {
-                Sandbox jobSandbox = sandbox.forJob(number);
-                Files.createDirectory(folder);
-                grading.copyScenes(folder);
-                jobSandbox.share(folder, false);
-                StudentProcess process = shared.in(jobSandbox).withWarmCompiler(compilerFolder);
-                processes.add(process);
-                if (stopping) {
-                    process.stop();   // stop() came before this job's process was there to stop
-                }
-                grader = new SubmissionGrader(grading, jobSandbox, process, folder);
-            } catch (IOException | RuntimeException e) {
-                WorkFolder.delete(folder);
-                WorkFolder.delete(compilerFolder);
-                throw e;
-            }
-        }
-
-        /**
-         * Begins {@code submission}'s grade: stores its result when the grade ends there, else
-         * leaves it waiting for {@link #finish}. The result, or null when the grade waits or was
-         * cut short by stop().
-         */
-        StudentResult begin(Submission submission, int index, CohortRun run) throws IOException,
-                InterruptedException {
-            if (grader == null) {
-                setUp();
-            }
-            Path submissionWork = Files.createDirectory(folder.resolve("submission-" + index));
-            Path entry = store.newEntry();
-            boolean waits = false;
-            try {
-                SubmissionGrader.Begun begun = grader.begin(submission, submissionWork, entry,
-                        new PrintWriter(Writer.nullWriter()), err);
-                if (begun instanceof SubmissionGrader.Halfway halfway) {
-                    waiting.add(new Waiting(index, submissionWork, entry, halfway.setAside(submissionWork)));
-                    waits = true;
-                    return null;
-                }
-                return stored(((SubmissionGrader.Finished) begun).graded(), index, entry, run);
-            } catch (IOException | RuntimeException | Error e) {
-                WorkFolder.delete(entry);
-                throw e;
-            } finally {
-                if (!waits) {
-                    WorkFolder.delete(submissionWork);
-                }
-            }
-        }
-
-        /** Finishes a grade {@link #begin} left waiting, and stores its result; null when stop() cut it short. */
-        StudentResult finish(Waiting grade, CohortRun run) throws IOException, InterruptedException {
-            try {
-                return stored(grader.finish(grade.halfway(), grade.work(), new PrintWriter(Writer.nullWriter())),
-                        grade.index(), grade.entry(), run);
-            } catch (IOException | RuntimeException | Error e) {
-                WorkFolder.delete(grade.entry());
-                throw e;
-            } finally {
-                WorkFolder.delete(grade.work());
-            }
-        }
-
-        /** Stores a grade's result in {@code entry}; null, with nothing stored, when stop() cut it short. */
-        private StudentResult stored(SubmissionGrader.Graded graded, int index, Path entry, CohortRun run)
-                throws IOException, InterruptedException {
-            String diskShort = graded.result().passed() ? null : GraderDisk.shortOfSpace(folder);
-            if (diskShort != null) {
-                WorkFolder.delete(entry);
-                throw new IOException(diskShort);
-            }
-            // A grade cut short by stop() ended after stopping was set: it is never stored.
-            if (stopping) {
-                WorkFolder.delete(entry);
-                return null;
-            }
-            run.storeResult(index, run.submissions.get(index), graded, entry);
-            return graded.result();
-        }
-
-        /** The next grade waiting for its hidden scenes, or null. */
-        Waiting nextWaiting() {
-            return waiting.poll();
-        }
-
-        /** Deletes what the grades still waiting would have stored: stop() cut them short. */
-        void forgetWaiting() {
-            for (Waiting grade = waiting.poll(); grade != null; grade = waiting.poll()) {
-                WorkFolder.delete(grade.entry());
-                WorkFolder.delete(grade.work());
-            }
-        }
-
-        /** A grade begun and waiting for its hidden scenes: its submission, folders and first half. */
-        record Waiting(int index, Path work, Path entry, SubmissionGrader.Halfway halfway) {
-        }
-    }
-
     /** The pool's threads, named by job, as the hand-made workers were. */
     private static final class JobThreads implements ThreadFactory {
         private final AtomicInteger next = new AtomicInteger();
@@ -440,42 +318,6 @@ public final class CohortGrade {
         @Override
         public Thread newThread(Runnable task) {
             return new Thread(task, "tick1-grade-job-" + next.getAndIncrement());
-        }
-    }
-
-    /**
-     * The harness every job runs, in {@code work}: one jar, and, when there are enough submissions
-     * for it to pay, a class data sharing archive made for it. Both hold only this program's and the
-     * JDK's classes, so every job's user may read them.
-     */
-    private StudentProcess process(Path work, int submissions) throws IOException, InterruptedException {
-        Path harness = Files.createDirectory(work.resolve("harness"));
-        StudentProcess.writeHarness(harness);
-        readableByAll(harness);
-        StudentProcess process = new StudentProcess(sandbox.forJob(0), harness, grading.limits().memoryMegabytes());
-        if (submissions < ARCHIVE_PAYS_FROM) {
-            return process;
-        }
-        Path archive = Files.createDirectory(work.resolve("archive"));
-        Path archiveWork = Files.createDirectory(work.resolve("archive-run"));
-        processes.add(process);
-        StudentProcess withArchive;
-        try {
-            withArchive = process.withSharedArchive(archive, archiveWork);
-        } finally {
-            processes.remove(process);
-            WorkFolder.delete(archiveWork);
-        }
-        readableByAll(archive);
-        return withArchive;
-    }
-
-    private static void readableByAll(Path folder) throws IOException {
-        Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));
-        try (var files = Files.list(folder)) {
-            for (Path file : files.toList()) {
-                Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("r--r--r--"));
-            }
         }
     }
 

@@ -4,6 +4,7 @@ import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.command.shared.kit.StarterKit;
+import gfx.tick1.engine.io.Counted;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -109,7 +110,7 @@ public final class CodeProbe {
                 continue;
             }
             if (method.behavesAsOurs()) {
-                behaviour.add("your " + method.method() + BEHAVES_AS_OURS + SubmissionGrader.count(method.inputs(),
+                behaviour.add("your " + method.method() + BEHAVES_AS_OURS + Counted.of(method.inputs(),
                         "input"));
             } else {
                 ours = false;

@@ -10,6 +10,7 @@ import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
+import gfx.tick1.engine.io.Counted;
 import java.io.PrintWriter;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -61,7 +62,7 @@ final class Explainer {
             return failed(Category.Outcome.DOES_NOT_COMPILE, "the code could not be compiled: " + compiled.failure(),
                     phases);
         }
-        String heading = "the code does not compile (" + SubmissionGrader.count(compiled.errors().size(), "error")
+        String heading = "the code does not compile (" + Counted.of(compiled.errors().size(), "error")
                 + ")";
         out.println("FAILED: " + heading + ":");
         compiled.errors().forEach(out::println);
@@ -90,7 +91,7 @@ final class Explainer {
         List<Judged> failures = judged.stream().filter(scene -> !(scene.verdict() instanceof SceneVerdict.Passed))
                 .toList();
         if (!failures.isEmpty()) {
-            String verdict = "FAILED: " + failures.size() + " of " + SubmissionGrader.count(judged.size(), "scene")
+            String verdict = "FAILED: " + failures.size() + " of " + Counted.of(judged.size(), "scene")
                     + " wrong.";
             out.println(verdict);
             return new Graded(result(scenes, false, judged.size() - failures.size(),

@@ -87,11 +87,11 @@ public final class Grading {
      * public-scenes/, hidden ones to hidden-scenes/, as 0.xml, 1.xml, ... in order.
      */
     public void copyScenes(Path folder) throws IOException {
-        for (boolean hidden : new boolean[] {false, true}) {
-            Path batch = Files.createDirectory(folder.resolve(batchFolder(hidden)));
+        for (SceneBatch kind : SceneBatch.values()) {
+            Path batch = Files.createDirectory(folder.resolve(kind.folder()));
             int index = 0;
             for (CourseScene scene : scenes) {
-                if (scene.hidden() == hidden) {
+                if (kind.holds(scene)) {
                     Files.copy(scene.file(), batch.resolve(index++ + ".xml"));
                 }
             }
@@ -107,22 +107,18 @@ public final class Grading {
         return new CourseScene(name, file, scene, hidden);
     }
 
-    private static String batchFolder(boolean hidden) {
-        return (hidden ? "hidden" : "public") + "-scenes";
-    }
-
     public List<CourseScene> scenes() {
         return scenes;
     }
 
     /** The scenes of one batch (public or hidden), in grading order. */
-    List<CourseScene> batch(boolean hidden) {
-        return scenes.stream().filter(scene -> scene.hidden() == hidden).toList();
+    List<CourseScene> batch(SceneBatch kind) {
+        return scenes.stream().filter(kind::holds).toList();
     }
 
     /** The folder that {@link #copyScenes} made in {@code folder} for one batch's scenes. */
-    static Path batchScenes(Path folder, boolean hidden) {
-        return folder.resolve(batchFolder(hidden));
+    static Path batchScenes(Path folder, SceneBatch kind) {
+        return folder.resolve(kind.folder());
     }
 
     public Limits limits() {

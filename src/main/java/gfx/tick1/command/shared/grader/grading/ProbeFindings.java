@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.model.Findings;
+import gfx.tick1.engine.io.Counted;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -44,7 +45,7 @@ final class ProbeFindings {
     }
 
     private static Finding finding(MethodBehaviour b) {
-        String inputs = SubmissionGrader.count(b.inputs(), "input");
+        String inputs = Counted.of(b.inputs(), "input");
         boolean sphere = b.method().equals("intersectionWith");
         MethodBehaviour.Difference d = b.difference();
         if (!d.mistake().isEmpty()) {
@@ -115,7 +116,7 @@ final class ProbeFindings {
     /** What the comparison did find when no method differs, as {@link #noFindingLine} words it. */
     String noFinding() {
         return behaviour.ran() ? "your intersectionWith and illuminate behave as ours on "
-                + SubmissionGrader.count(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(),
+                + Counted.of(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(),
                         "input")
                 : "your intersectionWith and illuminate could not be checked: the harness logged no answer";
     }

@@ -60,6 +60,8 @@ final class SceneJudge {
     private final ProbeFindings probes;
     private final FeedbackImages images;
     private final PrintWriter out;
+    /** Whether a scene judged before the one being judged now has the behaviour comparison's findings. */
+    private boolean probesShown;
 
     /** Judges with the behaviour comparison's {@code probes}, writing images with {@code images}. */
     SceneJudge(Grading grading, ProbeFindings probes, FeedbackImages images, PrintWriter out) {
@@ -71,23 +73,22 @@ final class SceneJudge {
 
     /**
      * The scenes of one batch judged, in grading order (the public ones come first, then the
-     * hidden ones); {@code probesShown}: an earlier scene's explanation has the findings.
+     * hidden ones), after the {@code earlier} batch's.
      */
-    List<Judged> judgeBatch(boolean hidden, SceneRuns.Ran ran, boolean probesShown) {
-        List<CourseScene> batch = grading.batch(hidden);
-        int before = hidden ? grading.batch(false).size() : 0;
+    List<Judged> judgeBatch(SceneBatch kind, SceneRuns.Ran ran, List<Judged> earlier) {
+        List<CourseScene> batch = grading.batch(kind);
+        probesShown = earlier.stream().anyMatch(Judged::showedProbes);
         List<Judged> judged = new ArrayList<>();
-        boolean shown = probesShown;
         for (int i = 0; i < batch.size(); i++) {
-            Judged scene = judge(before + i + 1, batch.get(i), ran.outcomes().get(i), ran.traces().get(i), shown);
-            shown |= scene.showedProbes();
+            Judged scene = judge(earlier.size() + i + 1, batch.get(i), ran.outcomes().get(i), ran.traces().get(i));
+            probesShown |= scene.showedProbes();
             judged.add(scene);
         }
         return judged;
     }
 
-    /** Scene {@code number} judged; {@code probesShown}: an earlier scene's explanation has the findings. */
-    private Judged judge(int number, CourseScene scene, Outcome outcome, String trace, boolean probesShown) {
+    /** Scene {@code number} judged. */
+    private Judged judge(int number, CourseScene scene, Outcome outcome, String trace) {
         if (outcome instanceof Outcome.Failed failed) {
             return notRendered(scene, failed);
         }
@@ -103,9 +104,9 @@ final class SceneJudge {
                     : notFromTheCode(scene, check);
         }
         if (scene.hidden()) {
-            return wrongHiddenImage(scene, probesShown);
+            return wrongHiddenImage(scene);
         }
-        return wrongImage(number, scene, image, references, probesShown);
+        return wrongImage(number, scene, image, references);
     }
 
     /** A scene the code gave no image for: why; for a hidden scene, a {@link HiddenVerdict}'s fixed words. */
@@ -157,7 +158,7 @@ final class SceneJudge {
      * never had a hidden one, so they carry nothing of it. The chart's category is the first tested
      * finding's, or that the mistake is not recognised.
      */
-    private Judged wrongHiddenImage(CourseScene scene, boolean probesShown) {
+    private Judged wrongHiddenImage(CourseScene scene) {
         List<String> lines = new ArrayList<>(List.of(HiddenVerdict.WRONG.words()));
         boolean shows = !probesShown && (probes.anyFailed() || !probes.untested().isEmpty());
         if (shows) {
@@ -171,8 +172,7 @@ final class SceneJudge {
     }
 
     /** A wrong image of a scene that is not hidden: explained against the closer reference, its images written. */
-    private Judged wrongImage(int number, CourseScene scene, BufferedImage image, References references,
-            boolean probesShown) {
+    private Judged wrongImage(int number, CourseScene scene, BufferedImage image, References references) {
         ImageDifference toHandout = references.handout() == null ? null
                 : ImageDifference.between(references.handout(), image);
         ImageDifference toRobust = references.robust() == null ? null
@@ -186,7 +186,7 @@ final class SceneJudge {
             lines.add("(compared with the " + (againstHandout ? "handout-arithmetic" : "robust")
                     + " reference, the closer of the two, which differ on this scene)");
         }
-        Explained explained = explain(scene, image, difference, lines, probesShown);
+        Explained explained = explain(scene, image, difference, lines);
         print(scene, lines);
         Optional<FeedbackImages.Written> written = images.write(number, scene, image, difference,
                 againstHandout ? references.handout() : references.robust());
@@ -205,7 +205,7 @@ final class SceneJudge {
      * only) and what to reread, added to {@code lines}; its verdict.
      */
     private Explained explain(CourseScene scene, BufferedImage image, ImageDifference difference,
-            List<String> lines, boolean probesShown) {
+            List<String> lines) {
         double[] mean = difference.meanPerChannel();
         String figures = String.format("mean difference R %.3f, G %.3f, B %.3f levels; PSNR %.2f dB", mean[0],
                 mean[1], mean[2], difference.psnr());

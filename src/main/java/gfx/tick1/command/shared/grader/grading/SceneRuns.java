@@ -48,7 +48,7 @@ final class SceneRuns {
 
     /** Runs the public scenes and the probes, within the whole time limit, which starts as compiling ends. */
     PublicRun runPublic(CompileStep.Started started, Path work) throws IOException, InterruptedException {
-        StudentProcess.Result result = run(false, started, work, grading.limits().timeLimit());
+        StudentProcess.Result result = run(SceneBatch.PUBLIC, started, work, grading.limits().timeLimit());
         if (result == null) {
             return new PublicRun(new Ran(List.of(), List.of(), Duration.ZERO),
                     CompletableFuture.completedFuture(ProbeFindings.of(null)), "");
@@ -62,7 +62,7 @@ final class SceneRuns {
     Ran runHidden(CompileStep.Started started, Path work, Duration used) throws IOException, InterruptedException {
         long start = System.nanoTime();
         Duration left = grading.limits().timeLimit().minus(used);
-        List<CourseScene> batch = grading.batch(true);
+        List<CourseScene> batch = grading.batch(SceneBatch.HIDDEN);
         if (batch.isEmpty()) {
             return new Ran(List.of(), List.of(), Duration.ZERO);
         }
@@ -74,19 +74,20 @@ final class SceneRuns {
             batch.forEach(scene -> traces.add(null));
             return new Ran(outcomes, traces, Duration.ZERO);
         }
-        StudentProcess.Result result = run(true, started, work, left);
+        StudentProcess.Result result = run(SceneBatch.HIDDEN, started, work, left);
         return new Ran(result.outcomes(), result.traces(), Duration.ofNanos(System.nanoTime() - start));
     }
 
     /** One batch's run in {@code left} of the time limit; null when the batch has no scene. */
-    private StudentProcess.Result run(boolean hidden, CompileStep.Started started, Path work, Duration left)
+    private StudentProcess.Result run(SceneBatch kind, CompileStep.Started started, Path work, Duration left)
             throws IOException, InterruptedException {
-        List<CourseScene> batch = grading.batch(hidden);
+        List<CourseScene> batch = grading.batch(kind);
+        boolean hidden = kind == SceneBatch.HIDDEN;
         if (batch.isEmpty()) {
             return null;
         }
         Grading.Limits limits = grading.limits();
-        return process.render(started.classes(), new StudentProcess.Batch(Grading.batchScenes(scenes, hidden),
+        return process.render(started.classes(), new StudentProcess.Batch(Grading.batchScenes(scenes, kind),
                 sceneFiles(batch.size()), limits.width(), limits.height(), !hidden, hidden),
                 CompileStep.childFolder(sandbox, work, hidden ? "hidden-run" : PUBLIC_RUN), left,
                 limits.timeLimit());

@@ -112,10 +112,12 @@ public final class SubmissionGrader {
         long compareStart = System.nanoTime();
         ProbeFindings probes = run.probes().join();
         List<Judged> judged = new SceneJudge(grading, probes, new FeedbackImages(images, out, err), out)
-                .judgeBatch(false, run.ran(), false);
+                .judgeBatch(SceneBatch.PUBLIC, run.ran(), List.of());
         long now = System.nanoTime();
-        return new Halfway(submission, sources, started, judged, probes, run.printed(), run.ran().took(),
-                new Phases(compileNanos, run.ran().took().toNanos(), now - compareStart), now - start);
+        return new Halfway(new Halfway.Compiled(submission, sources, started),
+                new Halfway.PublicScenes(judged, probes, run.printed(), run.ran().took()),
+                new Halfway.Spent(new Phases(compileNanos, run.ran().took().toNanos(), now - compareStart),
+                        now - start));
     }
 
     /**
@@ -125,25 +127,28 @@ public final class SubmissionGrader {
      */
     public Graded finish(Halfway halfway, Path work, PrintWriter out) throws IOException, InterruptedException {
         long start = System.nanoTime();
-        Explainer explainer = new Explainer(grading, halfway.submission, start - halfway.elapsedNanos, out);
-        CompileStep.Started started = halfway.started;
+        Halfway.Compiled code = halfway.code;
+        Halfway.PublicScenes scenes = halfway.publicScenes;
+        Phases phases = halfway.spent.phases();
+        Explainer explainer = new Explainer(grading, code.submission(), start - halfway.spent.elapsedNanos(), out);
+        CompileStep.Started started = code.started();
         long compileNanos = 0;
-        if (halfway.classesDeleted) {
-            started = compiler.compile(halfway.submission, halfway.sources, work);
+        if (started == null) {
+            started = compiler.compile(code.submission(), code.sources(), work);
             compileNanos = started.renderStart() - started.compileStart();
             if (!started.compiled().compiled()) {
                 // In fixed words: this compile ran beside hidden runs, whose use of the machine may have decided it.
                 return explainer.failed(Category.Outcome.DOES_NOT_COMPILE, COMPILED_ONCE_ONLY,
-                        halfway.phases.plus(compileNanos, 0, 0));
+                        phases.plus(compileNanos, 0, 0));
             }
         }
-        SceneRuns.Ran hidden = runs.runHidden(started, work, halfway.publicRun);
+        SceneRuns.Ran hidden = runs.runHidden(started, work, scenes.took());
         long compareStart = System.nanoTime();
-        List<Judged> judged = new ArrayList<>(halfway.judged);
-        judged.addAll(new SceneJudge(grading, halfway.probes, new FeedbackImages(null, out, out), out)
-                .judgeBatch(true, hidden, halfway.judged.stream().anyMatch(Judged::showedProbes)));
-        explainer.lastLinesPrinted(judged, halfway.printed);
-        return explainer.verdict(judged, halfway.probes, halfway.phases.plus(compileNanos, hidden.took().toNanos(),
+        List<Judged> judged = new ArrayList<>(scenes.judged());
+        judged.addAll(new SceneJudge(grading, scenes.probes(), new FeedbackImages(null, out, out), out)
+                .judgeBatch(SceneBatch.HIDDEN, hidden, scenes.judged()));
+        explainer.lastLinesPrinted(judged, scenes.printed());
+        return explainer.verdict(judged, scenes.probes(), phases.plus(compileNanos, hidden.took().toNanos(),
                 System.nanoTime() - compareStart));
     }
 
@@ -159,7 +164,7 @@ public final class SubmissionGrader {
      * A grade whose public scenes are run and judged, and whose hidden ones are not yet: what
      * {@link #finish} needs, and nothing of the public run's images.
      */
-    public static final class Halfway implements Begun {
+    public record Halfway(Compiled code, PublicScenes publicScenes, Spent spent) implements Begun {
         /**
          * The most bytes of compiled classes a grade set aside keeps on the grader's disk: far more
          * than any solution's, far less than a compile may make.
@@ -168,35 +173,22 @@ public final class SubmissionGrader {
         /** The most class files a grade set aside keeps, as {@link #KEPT_CLASS_BYTES}. */
         static final int KEPT_CLASS_FILES = 200;
 
-        private final Submission submission;
-        private final SourceCheck.Sources sources;
-        private final CompileStep.Started started;
-        private final List<Judged> judged;
-        private final ProbeFindings probes;
-        private final String printed;
-        private final Duration publicRun;
-        private final Phases phases;
-        private final long elapsedNanos;
-        private final boolean classesDeleted;
-
-        Halfway(Submission submission, SourceCheck.Sources sources, CompileStep.Started started, List<Judged> judged,
-                ProbeFindings probes, String printed, Duration publicRun, Phases phases, long elapsedNanos) {
-            this(submission, sources, started, judged, probes, printed, publicRun, phases, elapsedNanos, false);
+        /**
+         * The submission, its checked sources, and their compile: null once {@link #setAside} deleted the
+         * classes, which {@link #finish} then compiles again.
+         */
+        record Compiled(Submission submission, SourceCheck.Sources sources, CompileStep.Started started) {
         }
 
-        private Halfway(Submission submission, SourceCheck.Sources sources, CompileStep.Started started,
-                List<Judged> judged, ProbeFindings probes, String printed, Duration publicRun, Phases phases,
-                long elapsedNanos, boolean classesDeleted) {
-            this.submission = submission;
-            this.sources = sources;
-            this.started = started;
-            this.judged = List.copyOf(judged);
-            this.probes = probes;
-            this.printed = printed;
-            this.publicRun = publicRun;
-            this.phases = phases;
-            this.elapsedNanos = elapsedNanos;
-            this.classesDeleted = classesDeleted;
+        /** The public scenes judged, the behaviour comparison's findings, what the code printed, and the run's time. */
+        record PublicScenes(List<Judged> judged, ProbeFindings probes, String printed, Duration took) {
+            PublicScenes {
+                judged = List.copyOf(judged);
+            }
+        }
+
+        /** The grade's time so far: by phase, and in all. */
+        record Spent(Phases phases, long elapsedNanos) {
         }
 
         /**
@@ -207,7 +199,7 @@ public final class SubmissionGrader {
          */
         public Halfway setAside(Path work) throws IOException {
             deleted(work.resolve(SceneRuns.PUBLIC_RUN));
-            if (small(started.classes())) {
+            if (small(code.started().classes())) {
                 return this;
             }
             try (var entries = Files.list(work)) {
@@ -215,8 +207,7 @@ public final class SubmissionGrader {
                     deleted(entry);
                 }
             }
-            return new Halfway(submission, sources, null, judged, probes, printed, publicRun, phases, elapsedNanos,
-                    true);
+            return new Halfway(new Compiled(code.submission(), code.sources(), null), publicScenes, spent);
         }
 
         private static void deleted(Path folder) throws IOException {

@@ -16,12 +16,10 @@ import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
-import org.apache.commons.compress.utils.SeekableInMemoryByteChannel;
 
 /**
  * The intake: a cohort's download from Moodle (the "Download all submissions" zip, or the folder it unpacks to) read
@@ -39,10 +37,8 @@ import org.apache.commons.compress.utils.SeekableInMemoryByteChannel;
  */
 public final class Submissions {
 
-    private static final String SPHERE = "Sphere.java";
-    private static final String RENDERER = "Renderer.java";
     /** Where macOS's archiver keeps resource forks: never a student. */
-    private static final String MAC_RESOURCES = "__MACOSX";
+    static final String MAC_RESOURCES = "__MACOSX";
 
     private final Path download;
     private final IntakeLimits limits;
@@ -93,10 +89,10 @@ public final class Submissions {
         }
     }
 
-    private List<Submission> resolveAll(Map<String, Student> students) throws IOException {
+    private List<Submission> resolveAll(Map<String, StudentFolder> students) throws IOException {
         List<Submission> submissions = new ArrayList<>();
-        for (Student student : students.values()) {
-            submissions.add(resolve(student));
+        for (StudentFolder student : students.values()) {
+            submissions.add(student.resolve());
         }
         Map<String, List<String>> shared = sharedIds(submissions);
         return submissions.stream().map(submission -> !shared.containsKey(submission.id()) ? submission
@@ -130,14 +126,14 @@ public final class Submissions {
 
     // ---------------------------------------------------------------------------------------------- the zip
 
-    private Map<String, Student> readZip(Path path, FileChannel channel) throws IOException {
+    private Map<String, StudentFolder> readZip(Path path, FileChannel channel) throws IOException {
         ZipArchive zip;
         try {
             zip = ZipArchive.open(channel, limits.maxEntries());
         } catch (ZipArchive.Refused e) {
             throw new CohortInputException(path + ": " + e.getMessage());
         }
-        Map<String, Student> students = new TreeMap<>();
+        Map<String, StudentFolder> students = new TreeMap<>();
         for (ZipArchive.Entry entry : zip.entries()) {
             int slash = entry.name().indexOf('/');
             String top = slash < 0 ? entry.name() : entry.name().substring(0, slash);
@@ -145,13 +141,13 @@ public final class Submissions {
                 continue;
             }
             if (slash < 0 && !entry.directory()) {
-                Student student = looseFile(students, top);
+                StudentFolder student = looseFile(students, top);
                 if (student != null) {
                     student.add(looseName(top), outerReader(path, zip, entry));
                 }
                 continue;
             }
-            Student student = students.computeIfAbsent(top, Student::new);
+            StudentFolder student = students.computeIfAbsent(top, this::studentFolder);
             if (slash >= 0 && !entry.directory()) {
                 student.add(entry.name().substring(slash + 1), outerReader(path, zip, entry));
             }
@@ -160,7 +156,7 @@ public final class Submissions {
     }
 
     /** An entry of the download: refusals inside it are the download's, a size over the cap the student's. */
-    private Reader outerReader(Path path, ZipArchive zip, ZipArchive.Entry entry) {
+    private StudentFolder.Reader outerReader(Path path, ZipArchive zip, ZipArchive.Entry entry) {
         return cap -> {
             try {
                 return zip.read(entry, cap);
@@ -172,8 +168,8 @@ public final class Submissions {
 
     // ------------------------------------------------------------------------------------------- the folder
 
-    private Map<String, Student> readFolder(Path root) throws IOException {
-        Map<String, Student> students = new TreeMap<>();
+    private Map<String, StudentFolder> readFolder(Path root) throws IOException {
+        Map<String, StudentFolder> students = new TreeMap<>();
         List<Path> tops = new ArrayList<>();
         try (DirectoryStream<Path> listing = Files.newDirectoryStream(root)) {
             listing.forEach(tops::add);
@@ -188,12 +184,12 @@ public final class Submissions {
             BasicFileAttributes attributes = Files.readAttributes(top, BasicFileAttributes.class,
                     LinkOption.NOFOLLOW_LINKS);
             if (attributes.isSymbolicLink()) {
-                students.computeIfAbsent(name, Student::new)
+                students.computeIfAbsent(name, this::studentFolder)
                         .refuse(name + " is a symbolic link, which tick1 does not follow");
             } else if (attributes.isDirectory()) {
-                walk(top, students.computeIfAbsent(name, Student::new));
+                walk(top, students.computeIfAbsent(name, this::studentFolder));
             } else {
-                Student student = looseFile(students, name);
+                StudentFolder student = looseFile(students, name);
                 if (student != null) {
                     student.add(looseName(name), fileReader(top));
                 }
@@ -202,7 +198,7 @@ public final class Submissions {
         return students;
     }
 
-    private void walk(Path folder, Student student) throws IOException {
+    private void walk(Path folder, StudentFolder student) throws IOException {
         Files.walkFileTree(folder, Set.of(), Integer.MAX_VALUE, new SimpleFileVisitor<>() {
             @Override
             public FileVisitResult visitFile(Path file, BasicFileAttributes attributes) throws IOException {
@@ -236,7 +232,7 @@ public final class Submissions {
     }
 
     /** A file on disk, opened without following a link, read no further than the cap. */
-    private Reader fileReader(Path file) {
+    private StudentFolder.Reader fileReader(Path file) {
         return cap -> {
             try (SeekableByteChannel channel = Files.newByteChannel(file, StandardOpenOption.READ,
                     LinkOption.NOFOLLOW_LINKS)) {
@@ -273,12 +269,12 @@ public final class Submissions {
      * A file at the top of the download: the student's when Moodle named it (a download without folders), else a
      * submission of its own that says it is outside any student's folder.
      */
-    private Student looseFile(Map<String, Student> students, String fileName) {
+    private StudentFolder looseFile(Map<String, StudentFolder> students, String fileName) {
         String[] moodle = StudentName.looseFileFolder(fileName);
         if (moodle != null) {
-            return students.computeIfAbsent(moodle[0], Student::new);
+            return students.computeIfAbsent(moodle[0], this::studentFolder);
         }
-        students.computeIfAbsent(fileName, Student::new)
+        students.computeIfAbsent(fileName, this::studentFolder)
                 .refuse(fileName + " is a file at the top of the download, not in a student's folder");
         return null;
     }
@@ -287,134 +283,8 @@ public final class Submissions {
         return StudentName.looseFileFolder(fileName)[1];
     }
 
-    /** Reads a file's bytes, no more than {@code cap} of them. */
-    @FunctionalInterface
-    private interface Reader {
-        byte[] read(long cap) throws IOException;
-    }
-
-    /** A file in a student's folder that may be one the tick asks for. */
-    private record Candidate(String path, Reader reader) {
-    }
-
-    /** What was found in one student's folder so far. */
-    private final class Student {
-        final String folder;
-        final List<Candidate> spheres = new ArrayList<>();
-        final List<Candidate> renderers = new ArrayList<>();
-        final List<String> refusals = new ArrayList<>();
-        final List<String> unopened = new ArrayList<>();
-        /** The .java files of other names, for a message when a file the tick asks for is missing. */
-        final List<String> otherJava = new ArrayList<>();
-        int entries;
-        int files;
-        long read;
-
-        Student(String folder) {
-            this.folder = folder;
-        }
-
-        void refuse(String why) {
-            refusals.add(why);
-        }
-
-        /** Counts bytes read into memory against the student's budget, then the whole intake's. */
-        byte[] charge(byte[] bytes) throws IOException {
-            read += bytes.length;
-            if (read > limits.maxStudentBytes()) {
-                throw new OverBudget("the folder holds more than " + IntakeLimits.size(limits.maxStudentBytes())
-                        + " of zips and source files to read");
-            }
-            return Submissions.this.charge(bytes);
-        }
-
-        /** A file of the student's, at {@code path} in their folder. */
-        void add(String path, Reader reader) throws IOException {
-            files++;
-            String name = path.substring(path.lastIndexOf('/') + 1);
-            if (candidate(name)) {
-                (name.equals(SPHERE) ? spheres : renderers).add(new Candidate(path, reader));
-            } else if (isZip(name)) {
-                openNested(path, reader);
-            } else if (isJava(name)) {
-                otherJava.add(path);
-            }
-        }
-
-        /** A zip in the student's folder: opened in memory, one level deep. */
-        private void openNested(String path, Reader reader) throws IOException {
-            ZipArchive zip;
-            try {
-                zip = ZipArchive.open(new SeekableInMemoryByteChannel(charge(reader.read(limits.maxNestedZipBytes()))),
-                        limits.maxEntries());
-            } catch (ZipArchive.TooLarge e) {
-                refuse(path + " is larger than " + IntakeLimits.size(limits.maxNestedZipBytes())
-                        + ", the largest zip tick1 opens");
-                return;
-            } catch (ZipArchive.Refused e) {
-                refuse(path + ": " + e.getMessage());
-                return;
-            } catch (OverBudget e) {
-                refuse(e.getMessage());
-                return;
-            }
-            for (ZipArchive.Entry entry : zip.entries()) {
-                if (entry.directory() || entry.name().startsWith(MAC_RESOURCES + "/")) {
-                    continue;
-                }
-                String inner = path + "!/" + entry.name();
-                String name = entry.name().substring(entry.name().lastIndexOf('/') + 1);
-                if (candidate(name)) {
-                    List<Candidate> same = name.equals(SPHERE) ? spheres : renderers;
-                    same.add(new Candidate(inner, same.isEmpty() ? inflatedNow(zip, entry) : null));
-                } else if (isZip(name)) {
-                    unopened.add(inner);
-                } else if (isJava(name)) {
-                    otherJava.add(inner);
-                }
-            }
-        }
-    }
-
-    /**
-     * A file of a student's zip, inflated now, so that the zip need not stay in memory until the submission is
-     * resolved; a failure is kept for then. Only a first candidate is inflated (a second one makes the submission
-     * a problem, whatever it holds), so this holds at most two files' worth of memory per student.
-     */
-    private Reader inflatedNow(ZipArchive zip, ZipArchive.Entry entry) {
-        try {
-            byte[] bytes = zip.read(entry, limits.maxFileBytes());
-            return cap -> bytes;
-        } catch (IOException e) {
-            return cap -> {
-                throw e;
-            };
-        }
-    }
-
-    private static boolean candidate(String fileName) {
-        return fileName.equals(SPHERE) || fileName.equals(RENDERER);
-    }
-
-    private static boolean isJava(String fileName) {
-        return fileName.toLowerCase(Locale.ROOT).endsWith(".java");
-    }
-
-    private static boolean isZip(String fileName) {
-        return fileName.toLowerCase(Locale.ROOT).endsWith(".zip");
-    }
-
-    /** A student's reads over their budget: their problem, not the download's. */
-    private static final class OverBudget extends IOException {
-        private static final long serialVersionUID = 1L;
-
-        OverBudget(String message) {
-            super(message);
-        }
-    }
-
     /** Counts bytes read into memory against the whole intake's budget. */
-    private byte[] charge(byte[] bytes) throws CohortInputException {
+    byte[] charge(byte[] bytes) throws CohortInputException {
         inflated += bytes.length;
         if (inflated > limits.maxTotalBytes()) {
             throw new CohortInputException(download + ": the download inflates to more than " + IntakeLimits.size(
@@ -423,78 +293,8 @@ public final class Submissions {
         return bytes;
     }
 
-    /** The student's submission, or the problem that stops it being graded. */
-    private Submission resolve(Student student) throws IOException {
-        StudentName name = StudentName.ofFolder(student.folder);
-        List<String> problems = new ArrayList<>(student.refusals);
-        if (problems.isEmpty() && student.files == 0) {
-            problems.add("the folder is empty");
-        }
-        Submission.SourceFile sphere = null;
-        Submission.SourceFile renderer = null;
-        if (problems.isEmpty()) {
-            String missing = missing(student);
-            if (missing != null) {
-                problems.add(missing);
-            }
-            for (List<Candidate> candidates : List.of(student.spheres, student.renderers)) {
-                if (candidates.size() > 1) {
-                    problems.add(Listing.count(candidates.size(), "file") + " could be " + fileName(candidates.get(0))
-                            + ": " + Listing.some(candidates.stream().map(Candidate::path).toList()));
-                }
-            }
-        }
-        if (problems.isEmpty()) {
-            try {
-                sphere = read(student, student.spheres.get(0));
-                renderer = read(student, student.renderers.get(0));
-            } catch (ZipArchive.Refused | ZipArchive.TooLarge | OverBudget e) {
-                problems.add(e.getMessage());
-            }
-        }
-        if (!problems.isEmpty()) {
-            return new Submission(student.folder, name.id(), name.fullName(), null, null, String.join("; ", problems));
-        }
-        return new Submission(student.folder, name.id(), name.fullName(), sphere, renderer, null);
-    }
-
-    private static String missing(Student student) {
-        List<String> absent = new ArrayList<>();
-        if (student.spheres.isEmpty()) {
-            absent.add(SPHERE);
-        }
-        if (student.renderers.isEmpty()) {
-            absent.add(RENDERER);
-        }
-        if (absent.isEmpty()) {
-            return null;
-        }
-        String line = "no " + String.join(" or ", absent) + " in the submission";
-        if (!student.otherJava.isEmpty()) {
-            line += "; found " + Listing.some(student.otherJava) + ", but the tick's files must be named "
-                    + SPHERE + " and " + RENDERER + " exactly (letter case too)";
-        }
-        if (!student.unopened.isEmpty()) {
-            line += " (" + Listing.some(student.unopened) + (student.unopened.size() == 1 ? " is a zip" : " are zips")
-                    + " inside a zip, which tick1 does not open)";
-        }
-        return line;
-    }
-
-    private Submission.SourceFile read(Student student, Candidate candidate) throws IOException {
-        try {
-            return new Submission.SourceFile(candidate.path(),
-                    student.charge(candidate.reader().read(limits.maxFileBytes())));
-        } catch (ZipArchive.TooLarge e) {
-            throw new ZipArchive.TooLarge(candidate.path() + " is larger than "
-                    + IntakeLimits.size(limits.maxFileBytes()) + ", far more than any " + fileName(candidate));
-        } catch (ZipArchive.Refused e) {
-            throw new ZipArchive.Refused(candidate.path() + ": " + e.getMessage());
-        }
-    }
-
-    private static String fileName(Candidate candidate) {
-        return candidate.path().substring(candidate.path().lastIndexOf('/') + 1);
+    private StudentFolder studentFolder(String folder) {
+        return new StudentFolder(folder, limits, this);
     }
 
     private static String reason(IOException e) {

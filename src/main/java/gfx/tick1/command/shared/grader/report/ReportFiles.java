@@ -3,7 +3,6 @@ package gfx.tick1.command.shared.grader.report;
 import gfx.tick1.engine.io.AtomicFile;
 import gfx.tick1.engine.io.OwnFolder;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 
@@ -30,12 +29,6 @@ public final class ReportFiles {
     /** Every student's feedback files, in the zip Moodle's "Upload multiple feedback files in a zip" reads. */
     public static final String FEEDBACK_ZIP = "feedback.zip";
 
-    /** Writes a file's bytes onto a stream; the stream is closed by the caller. */
-    @FunctionalInterface
-    public interface Content {
-        void writeTo(OutputStream out) throws IOException;
-    }
-
     private ReportFiles() {
     }
 
@@ -48,8 +41,8 @@ public final class ReportFiles {
      * Writes {@code target} whole, in a folder that exists: a link at {@code target} is replaced by the file, never
      * written through ({@link AtomicFile} renames over it).
      */
-    public static void write(Path target, Content content) throws IOException {
-        AtomicFile.write(target, content::writeTo);
+    public static void write(Path target, AtomicFile.Content content) throws IOException {
+        AtomicFile.write(target, content);
     }
 
     /**

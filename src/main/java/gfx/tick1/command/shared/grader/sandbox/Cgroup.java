@@ -201,7 +201,7 @@ final class Cgroup implements AutoCloseable {
         Path pids = groups.get(place.v2() ? "" : "pids");
         if (count(memory, place.v2() ? "memory.events" : "memory.oom_control", "oom_kill") > 0) {
             return new LimitReached(NoImage.MEMORY_LIMIT, "the program used more than "
-                    + Sandbox.size(totals.memoryBytes()) + " of memory in all (all its processes, and the files they "
+                    + RunLimits.size(totals.memoryBytes()) + " of memory in all (all its processes, and the files they "
                     + "kept in memory, together), and the kernel killed a process of it");
         }
         if (count(pids, "pids.events", "max") > 0) {

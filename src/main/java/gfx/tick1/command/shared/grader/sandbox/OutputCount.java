@@ -27,7 +27,7 @@ final class OutputCount {
     /** The most files and folders it may make there. */
     static final int ENTRIES_CAP = 10_000;
     /** The words for a run stopped for what it wrote, by bytes and by files and folders. */
-    static final String TOO_MANY_BYTES = "the program was stopped: it wrote more than " + Sandbox.size(BYTES_CAP)
+    static final String TOO_MANY_BYTES = "the program was stopped: it wrote more than " + RunLimits.size(BYTES_CAP)
             + " to its output folder";
     static final String TOO_MANY_ENTRIES = "the program was stopped: it made more than " + ENTRIES_CAP
             + " files and folders in its output folder";

@@ -38,45 +38,10 @@ public final class Sandbox {
     /** The package that provides {@code bwrap}, for the message when it is missing. */
     public static final String PACKAGE = "bubblewrap";
 
-    /**
-     * Host programs the sandbox shows besides java, with the libraries they load: none in a grade.
-     * The attack tests name those their attacks start (sh, fallocate, mkfifo, ...), so that what
-     * holds the runs to their limits is tested against them too.
-     */
-    private static final String ALSO_SHOWN_PROPERTY = "tick1.grade.sandboxAlsoShows";
-    /**
-     * "true" lets the runs start processes, which a grade never does (see {@link SeccompFilter}): for
-     * the tests whose attacks start the programs {@link #ALSO_SHOWN_PROPERTY} shows, so that what
-     * holds the runs to their limits is tested against them.
-     */
-    private static final String PROCESSES_PROPERTY = "tick1.grade.sandboxAllowsProcesses";
     /** Debian's bwrap; the system property tick1.grade.bwrap names another (the tests name a missing one). */
     private static final String BWRAP_PROPERTY = "tick1.grade.bwrap";
-    /** "host" keeps each run's output folder on the host's disk, as where no tmpfs can be mounted (for the tests). */
-    private static final String OUTPUT_DISKS_PROPERTY = "tick1.grade.outputDisks";
-    private static final Path SETPRIV = Path.of("/usr/bin/setpriv");
-    private static final Path PRLIMIT = Path.of("/usr/bin/prlimit");
-    private static final Path TASKSET = Path.of("/usr/bin/taskset");
-    private static final Path SH = Path.of("/bin/sh");
     private static final Path TRUE = Path.of("/usr/bin/true");
-    /** The descriptor bwrap reads the {@link SeccompFilter} from. */
-    private static final int FILTER_FD = 3;
 
-    /** The most files the student's process may write, each at most this big (RLIMIT_FSIZE). */
-    static final long FILE_SIZE_LIMIT = 64L << 20;
-    private static final int OPEN_FILES_LIMIT = 256;
-    /** Threads count as processes: the JVM needs about 20; the student's code one. */
-    static final int PROCESSES_LIMIT = 96;
-
-    /** The first of the user ids the student's code runs as when the grader is root. */
-    static final int FIRST_UID = 1_900_000_000;
-    /**
-     * Chooses each grader's user, far above the ranges of real users and of containers'
-     * subordinate ids: at random, so that two grades at once almost never share one, and so that
-     * the id, which the code can read, tells nothing of the machine (a user id made from the
-     * grader's process id told a later grade how many processes an earlier one had started).
-     */
-    private static final java.security.SecureRandom RUN_USERS = new java.security.SecureRandom();
 
     /** A folder of the grader's, bound into the sandbox at {@code inside}, writable or not. */
     record Bind(Path outside, String inside, boolean writable) {
@@ -84,8 +49,6 @@ public final class Sandbox {
 
     /** How many grades one program may run at once, each under a user of its own: see {@link #forJob}. */
     public static final int MOST_JOBS = 64;
-    /** The distance between the user ids of two jobs: more than the process ids the first one's id is made of. */
-    private static final int JOB_UID_STEP = 1_000_000;
 
     /** What this machine gives the sandbox: its bwrap, control groups, seccomp filter and output disks. */
     private final Host host;
@@ -103,16 +66,6 @@ public final class Sandbox {
     }
 
     /**
-     * What this machine gives every sandbox made here: the bwrap (null for none), where control
-     * groups are made (or null), the seccomp filter's file (or null), and whether each run's output
-     * folder can be a file system of its own, the host's files the runs see (null for none), and
-     * the stricter filter's file of the runs that render hidden scenes (null with no filter).
-     */
-    private record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDisks, SystemFiles system,
-            Path hiddenRunFilter) {
-    }
-
-    /**
      * The same sandbox, after checking that it hides {@code paths} (the organiser's scenes and
      * their folder) from the runs, as it hides every file of the host's but the JDK and the
      * libraries it loads: the runs get their scenes only through the folder bound for them.
@@ -120,7 +73,8 @@ public final class Sandbox {
      * @throws CannotHide when one is, holds or lies in what the runs see (the JDK, a library)
      */
     public Sandbox hiding(List<Path> paths) throws CannotHide {
-        refuseWhatTheRunsSee(paths, host.system(), realPath(javaHome()) == null ? javaHome() : realPath(javaHome()));
+        Secrets.refuseWhatTheRunsSee(paths, host.system(), Secrets.realPath(javaHome()) == null ? javaHome()
+                : Secrets.realPath(javaHome()));
         return this;
     }
 
@@ -133,7 +87,7 @@ public final class Sandbox {
         if (job < 0 || job >= MOST_JOBS) {
             throw new IllegalArgumentException("job " + job + ": must be from 0 to " + (MOST_JOBS - 1));
         }
-        return new Sandbox(host, uid < 0 ? uid : uid + job * JOB_UID_STEP, job);
+        return new Sandbox(host, RunUsers.ofJob(uid, job), job);
     }
 
     /**
@@ -142,12 +96,12 @@ public final class Sandbox {
      * process limit nor can signal each other. Only for a sandbox {@link #forJob} made.
      */
     public Sandbox forCompiler() {
-        return new Sandbox(host, uid < 0 ? uid : uid + MOST_JOBS * JOB_UID_STEP, job);
+        return new Sandbox(host, RunUsers.ofCompiler(uid), job);
     }
 
     /** No sandbox at all: the student's code runs as the grader, with the grader's files and network. */
     public static Sandbox unconfined() {
-        return new Sandbox(new Host(null, null, null, false, null, null), -1, 0);
+        return new Sandbox(Host.NONE, -1, 0);
     }
 
     /**
@@ -157,39 +111,18 @@ public final class Sandbox {
      */
     public static Sandbox confined() throws Unavailable, InterruptedException {
         Path bwrap = Path.of(System.getProperty(BWRAP_PROPERTY, "/usr/bin/bwrap"));
-        if (!Files.isExecutable(bwrap) || !Files.isExecutable(PRLIMIT)) {
+        if (!Files.isExecutable(bwrap) || !Files.isExecutable(RunLimits.PRLIMIT)) {
             throw new Unavailable("bubblewrap is not installed");
         }
         boolean root;
         try {
             root = Integer.valueOf(0).equals(Files.getAttribute(Path.of("/proc/self"), "unix:uid"))
-                    && Files.isExecutable(SETPRIV);
+                    && Files.isExecutable(RunLimits.SETPRIV);
         } catch (IOException | UnsupportedOperationException e) {
             throw new Unavailable("cannot tell which user this is (" + e.getMessage() + ")");
         }
-        Path seccompFilter;
-        Path hiddenRunFilter;
-        try {
-            boolean processes = Boolean.getBoolean(PROCESSES_PROPERTY);
-            seccompFilter = SeccompFilter.writeForThisMachine(false, processes);
-            hiddenRunFilter = SeccompFilter.writeForThisMachine(true, processes);
-        } catch (IOException e) {
-            throw new Unavailable("cannot write the sandbox's seccomp filter (" + e.getMessage() + ")");
-        }
-        SystemFiles system;
-        try {
-            system = SystemFiles.of(javaHome(), java.util.Arrays.stream(
-                    System.getProperty(ALSO_SHOWN_PROPERTY, "").split(java.io.File.pathSeparator))
-                    .filter(name -> !name.isEmpty()).map(Path::of).toList());
-        } catch (IOException e) {
-            throw new Unavailable("cannot list the files of the JDK and the libraries java loads (" + e.getMessage()
-                    + ")");
-        }
-        Host host = new Host(bwrap, Cgroup.find(), seccompFilter, root
-                && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks(), system,
-                hiddenRunFilter);
-        Sandbox sandbox = new Sandbox(host,
-                root ? FIRST_UID + RUN_USERS.nextInt(JOB_UID_STEP) : -1, 0);
+        Host host = Host.find(bwrap, root);
+        Sandbox sandbox = new Sandbox(host, root ? RunUsers.first() : -1, 0);
         sandbox.selfTest();
         return sandbox;
     }
@@ -210,6 +143,20 @@ public final class Sandbox {
     /** The user the student's code runs as; -1 for the grader's own. */
     int runUser() {
         return uid;
+    }
+
+    /**
+     * Checks that the user the student's code runs as can reach {@code folder} ({@link RunUsers#checkReachable}).
+     *
+     * @throws IOException saying which folder does not, and what to do
+     */
+    public void checkReachable(Path folder) throws IOException {
+        RunUsers.checkReachable(uid, folder);
+    }
+
+    /** Makes {@code folder} readable (or, if {@code writable}, owned) by the run's user alone ({@link RunUsers#share}). */
+    public void share(Path folder, boolean writable) throws IOException {
+        RunUsers.share(uid, folder, writable);
     }
 
     /** What this sandbox holds the code to: results graded under other rules are graded again. */
@@ -272,213 +219,39 @@ public final class Sandbox {
         return host.ownDisks() ? OutputDisk.mountReadable(folder, uid) : OutputDisk.onHostDisk(folder);
     }
 
-    /** Whether this grader can mount each run a tmpfs of its own: it mounts one, in a new temporary folder. */
-    private static boolean canMountOutputDisks() {
-        try {
-            Path scratch = Files.createTempDirectory("tick1-mount-");
-            try {
-                return OutputDisk.canMount(scratch);
-            } finally {
-                Files.deleteIfExists(scratch);
-            }
-        } catch (IOException e) {
-            return false;
-        }
-    }
-
     /** A control group for one run held to {@code totals}, or null when none can be made. */
     Cgroup cgroupFor(Cgroup.Totals totals) throws IOException {
         return confined && host.cgroups() != null ? Cgroup.create(host.cgroups(), totals) : null;
     }
 
-    /** A size for messages: "1 GiB", "768 MiB". */
-    static String size(long bytes) {
-        return bytes % (1L << 30) == 0 ? (bytes >> 30) + " GiB" : (bytes >> 20) + " MiB";
-    }
-
     /**
-     * Checks that the user the student's code runs as can reach {@code folder} (bubblewrap opens
-     * the folders it binds as that user): every folder above it must let others through.
-     *
-     * @throws IOException saying which folder does not, and what to do
+     * The command that runs {@code command} inside the sandbox, with {@code binds}, held to
+     * {@code limits} and, where there is one, to {@code cgroup}'s totals; with {@code hiddenScenes},
+     * under the hidden runs' stricter seccomp filter.
      */
-    public void checkReachable(Path folder) throws IOException {
-        if (uid < 0) {
-            return;
-        }
-        for (Path above = folder.toAbsolutePath().getParent(); above != null; above = above.getParent()) {
-            Object mode = Files.getAttribute(above, "unix:mode");
-            if (mode instanceof Integer bits && (bits & 01) == 0) {
-                throw new IOException(above + ": the sandbox's user cannot pass through this folder to the work "
-                        + "folder; grade with a temporary folder it can reach (JAVA_OPTS=-Djava.io.tmpdir=/tmp)");
-            }
-        }
-    }
-
-    /**
-     * Reads into memory every file of the host's that a run sees ({@link SystemFiles#warm}) and
-     * every file of the folders {@code binds} shows it read-only, before the run starts: whatever
-     * pages of them an earlier run read or dropped, all are in memory when this one times them.
-     */
-    void warm(List<Bind> binds) {
-        if (!confined) {
-            return;
-        }
-        host.system().warm(binds.stream().filter(bind -> !bind.writable()).map(Bind::outside).toList());
-    }
-
-    /**
-     * Makes {@code folder} readable (or, if {@code writable}, owned) by the user the student's code
-     * runs as, and no one else. Does nothing when that user is the grader.
-     */
-    public void share(Path folder, boolean writable) throws IOException {
-        if (uid < 0) {
-            return;
-        }
-        try (var files = Files.walk(folder)) {
-            for (Path file : files.toList()) {
-                if (writable) {
-                    Files.setAttribute(file, "unix:uid", uid);
-                }
-                Files.setAttribute(file, "unix:gid", uid);
-                Files.setAttribute(file, "unix:mode", Files.isDirectory(file) ? 0750 : 0640);
-            }
-        }
-    }
-
-    /**
-     * The command that runs {@code command} inside the sandbox, with {@code binds}, at most
-     * {@code cpuSeconds} of processor time and {@code addressSpaceMiB} of address space, and, if
-     * {@code oneCore}, on one processor core only; with {@code hiddenScenes}, under the hidden runs' stricter
-     * seccomp filter.
-     */
-    List<String> wrap(List<String> command, List<Bind> binds, int cpuSeconds, long addressSpaceMiB, boolean oneCore,
-            Cgroup cgroup, boolean hiddenScenes) {
+    List<String> wrap(List<String> command, List<Bind> binds, RunLimits limits, Cgroup cgroup, boolean hiddenScenes) {
         if (!confined) {
             return command;
         }
-        List<String> wrapped = new ArrayList<>(startCommand(cgroup,
+        List<String> wrapped = new ArrayList<>(RunLimits.startCommand(cgroup,
                 hiddenScenes ? host.hiddenRunFilter() : host.seccompFilter()));
-        wrapped.addAll(limits(cpuSeconds, addressSpaceMiB, oneCore));
+        wrapped.addAll(limits.programs(uid, job));
         wrapped.addAll(List.of("--", host.bwrap().toString(),
                 "--unshare-all", "--unshare-user", "--disable-userns",
                 "--die-with-parent", "--new-session", "--cap-drop", "ALL",
                 "--clearenv", "--setenv", "PATH", "/usr/bin", "--setenv", "LANG", "C.UTF-8",
                 "--setenv", "MALLOC_ARENA_MAX", "2"));
         if (host.seccompFilter() != null) {
-            wrapped.addAll(List.of("--seccomp", Integer.toString(FILTER_FD)));
+            wrapped.addAll(List.of("--seccomp", Integer.toString(RunLimits.FILTER_FD)));
         }
-        // Of the host's files, the JDK and the libraries it loads, each on its own: no folder of the host's,
-        // so neither tick1, nor the grader's temporary folder, nor any scene of the organiser's.
-        wrapped.addAll(host.system().bwrapArguments());
-        // No file system a run can write but its output folder, which is sized and, as root, noexec: / and /dev
-        // (bwrap's own, of half the host's memory) are read-only, and /dev/shm is an empty folder on that /dev.
-        // No /proc at all. It numbers a process's files, as they are first looked at, from the count the kernel
-        // numbers pipes and sockets by, one for the whole machine, so a run that looked at many could leave a
-        // number for a later run to read; its files count what the whole machine did (stat, meminfo, pressure);
-        // and a process may write its own memory through /proc/self/mem, code included, which would bring
-        // native code into a run in Java alone. Without /proc the loader cannot find the launcher's libraries
-        // from where java is ($ORIGIN), so it is told.
-        wrapped.addAll(List.of("--dir", "/proc", "--setenv", "LD_LIBRARY_PATH", javaHome().resolve("lib").toString(),
-                "--dev", "/dev", "--remount-ro", "/dev"));
-        for (Bind bind : binds) {
-            wrapped.addAll(List.of(bind.writable() ? "--bind" : "--ro-bind", bind.outside().toString(), bind.inside()));
-        }
-        wrapped.addAll(List.of("--remount-ro", "/", "--chdir", "/", "--"));
+        wrapped.addAll(Mounts.arguments(host.system(), binds));
         wrapped.addAll(command);
         return wrapped;
     }
 
-    /**
-     * The programs that hold the sandbox to its limits before bwrap starts: its core ({@code taskset},
-     * if {@code oneCore}), its user ({@code setpriv}, when the grader is root) and the limits per
-     * process ({@code prlimit}).
-     */
-    private List<String> limits(int cpuSeconds, long addressSpaceMiB, boolean oneCore) {
-        List<String> limits = new ArrayList<>();
-        String core = oneCore ? oneAllowedCore(job) : null;
-        if (core != null) {
-            limits.addAll(List.of(TASKSET.toString(), "--cpu-list", core));
-        }
-        if (uid >= 0) {
-            limits.addAll(List.of(SETPRIV.toString(), "--reuid=" + uid, "--regid=" + uid, "--clear-groups",
-                    "--inh-caps=-all", "--bounding-set=-all", "--no-new-privs"));
-        }
-        limits.addAll(List.of(PRLIMIT.toString(),
-                "--cpu=" + cpuSeconds,
-                "--as=" + (addressSpaceMiB << 20),
-                "--fsize=" + FILE_SIZE_LIMIT,
-                "--nofile=" + OPEN_FILES_LIMIT,
-                "--core=0"));
-        if (uid >= 0) {
-            // RLIMIT_NPROC counts every process of the user: only meaningful for a user of its own.
-            limits.add("--nproc=" + PROCESSES_LIMIT);
-        }
-        return limits;
-    }
-
-    /**
-     * The shell that starts the sandbox: it moves itself into the run's control group (when there
-     * is one; it fails with status 125 rather than run outside it), opens the {@link SeccompFilter}
-     * on descriptor {@value #FILTER_FD} for bwrap (the one way to hand bwrap a descriptor through
-     * Java's ProcessBuilder), and becomes the run's first program: {@code filter}'s file, or null
-     * for none. Empty when there is neither.
-     */
-    private List<String> startCommand(Cgroup cgroup, Path filter) {
-        if (cgroup == null && filter == null) {
-            return List.of();
-        }
-        List<String> command = new ArrayList<>(List.of(SH.toString(), "-c",
-                "f=$1; shift; while [ \"$1\" != -- ]; do echo $$ > \"$1/cgroup.procs\" || exit 125; shift; done; "
-                        + "shift; if [ -n \"$f\" ]; then exec \"$@\" " + FILTER_FD + "<\"$f\"; else exec \"$@\"; fi",
-                "sh", filter == null ? "" : filter.toString()));
-        if (cgroup != null) {
-            cgroup.folders().forEach(group -> command.add(group.toString()));
-        }
-        command.add("--");
-        return command;
-    }
-
     /** The JDK this program runs on, whose java the runs start. */
-    private static Path javaHome() {
+    static Path javaHome() {
         return Path.of(System.getProperty("java.home")).toAbsolutePath();
-    }
-
-    /** The real path of {@code path}; null when it cannot be read (not there: nothing to hide). */
-    private static Path realPath(Path path) {
-        try {
-            return path.toRealPath();
-        } catch (IOException e) {
-            return null;
-        }
-    }
-
-    /**
-     * Refuses a secret the runs would see: one in the JDK {@code jdk} (its real path) or holding
-     * it, or one that is, or is a folder that holds, one of {@code system}'s files or links (none
-     * for a sandbox that shows the host's files as they are). Hiding it would take from the runs
-     * what they need. A secret that cannot be read is not there to hide.
-     */
-    static void refuseWhatTheRunsSee(List<Path> secrets, SystemFiles system, Path jdk) throws CannotHide {
-        List<Path> seen = new ArrayList<>(List.of(jdk));
-        if (system != null) {
-            seen.addAll(system.files());
-            seen.addAll(system.pathsSeen());
-        }
-        for (Path secret : secrets) {
-            Path real = realPath(secret);
-            if (real == null) {
-                continue;
-            }
-            boolean folder = Files.isDirectory(real);
-            Path needed = real.startsWith(jdk) ? jdk
-                    : seen.stream().filter(path -> path.startsWith(real)).findFirst().orElse(null);
-            if (needed != null) {
-                throw new CannotHide(secret + ": the runs need " + needed + ", so tick1 cannot hide "
-                        + (folder ? "this folder's scenes" : "this scene") + " from the student's code without "
-                        + "stopping every run: give the scenes a folder of their own");
-            }
-        }
     }
 
     /** Why the sandbox cannot hide the organiser's scenes: in one line for the organiser. */
@@ -488,36 +261,6 @@ public final class Sandbox {
         CannotHide(String reason) {
             super(reason);
         }
-    }
-
-    /**
-     * One of the cores this process may run on (from /proc/self/status), chosen by the process id
-     * and the job so that grades running at the same time spread over the cores; null if that
-     * cannot be told.
-     */
-    private static String oneAllowedCore(int job) {
-        if (!Files.isExecutable(TASKSET)) {
-            return null;
-        }
-        try {
-            for (String line : Files.readAllLines(Path.of("/proc/self/status"))) {
-                if (line.startsWith("Cpus_allowed_list:")) {
-                    List<Integer> cores = new ArrayList<>();
-                    for (String range : line.substring(line.indexOf(':') + 1).strip().split(",")) {
-                        String[] ends = range.split("-");
-                        int first = Integer.parseInt(ends[0]), last = Integer.parseInt(ends[ends.length - 1]);
-                        for (int core = first; core <= last && cores.size() < 4096; core++) {
-                            cores.add(core);
-                        }
-                    }
-                    return cores.isEmpty() ? null
-                            : Integer.toString(cores.get((int) ((ProcessHandle.current().pid() + job) % cores.size())));
-                }
-            }
-        } catch (IOException | RuntimeException e) {
-            // No pinning: the CPU-seconds limit still holds.
-        }
-        return null;
     }
 
     /**
@@ -535,94 +278,42 @@ public final class Sandbox {
     }
 
     /**
-     * What a control group adds to one run in the sandbox, in seconds: the median of {@code runs}
-     * times making, limiting and removing one, plus the median extra time of starting a program
-     * through the shell that joins it; NaN where no group can be made. (The kernel's accounting
-     * while the code runs is not in it. Whole sandbox runs with and without a group differ by
-     * less than their own noise on a shared machine, so the parts are timed.)
+     * Makes the control group of one run, held to a run's totals, and removes it: what each run's
+     * group costs beyond the run. Only where {@link Enforcement#totals} holds.
      */
-    public double cgroupSeconds(int runs) throws IOException, InterruptedException {
-        if (!confined || host.cgroups() == null) {
-            return Double.NaN;
-        }
-        long[] group = new long[runs], shell = new long[runs];
-        for (int i = 0; i < runs; i++) {
-            long start = System.nanoTime();
-            cgroupFor(new Cgroup.Totals(256L << 20, PROCESSES_LIMIT, true)).close();
-            group[i] = System.nanoTime() - start;
-            shell[i] = timeStart("/bin/sh", "-c", "exec /usr/bin/true") - timeStart("/usr/bin/true");
-        }
-        return (median(group) + median(shell)) / 1e9;
+    public void makeAndRemoveRunGroup() throws IOException {
+        cgroupFor(new Cgroup.Totals(256L << 20, RunLimits.PROCESSES_LIMIT, true)).close();
     }
 
     /**
-     * What its own output file system adds to one run in the sandbox, in seconds: the median of
-     * {@code runs} times mounting one, counting it once as a run's end does, and unmounting it; NaN
-     * where the runs' output folders are on the host's disk.
+     * Mounts an output file system of its own on {@code folder}, an empty folder, counts it once
+     * as a run's end does, and unmounts it: what each run's output disk costs beyond the run. Only
+     * where {@link Enforcement#ownDisks} holds.
      */
-    public double outputDiskSeconds(int runs) throws IOException {
-        if (!confined || !host.ownDisks()) {
-            return Double.NaN;
-        }
-        Path folder = Files.createTempDirectory("tick1-disk-");
-        try {
-            long[] times = new long[runs];
-            for (int i = 0; i < runs; i++) {
-                long start = System.nanoTime();
-                try (OutputDisk disk = outputDisk(folder)) {
-                    disk.overCap();
-                }
-                times[i] = System.nanoTime() - start;
-            }
-            return median(times) / 1e9;
-        } finally {
-            WorkFolder.delete(folder);
+    public void mountCountAndUnmountOutputDisk(Path folder) throws IOException {
+        try (OutputDisk disk = outputDisk(folder)) {
+            disk.overCap();
         }
     }
 
-    /**
-     * What showing a run the host's files one by one ({@link SystemFiles}) adds to it, in seconds:
-     * reading them into memory before it ({@link #warm}), and starting bwrap with each bound on its
-     * own rather than all of /usr bound at once (each start runs {@code true}, without limits); the
-     * medians of {@code runs} times each. NaN without a sandbox.
-     */
-    public double systemFilesSeconds(int runs) throws IOException, InterruptedException {
-        if (!confined) {
-            return Double.NaN;
-        }
-        List<String> start = List.of(host.bwrap().toString(), "--unshare-all", "--die-with-parent", "--proc", "/proc",
-                "--dev", "/dev");
-        List<String> eachFile = new ArrayList<>(start);
-        eachFile.addAll(host.system().bwrapArguments());
-        eachFile.addAll(List.of("--ro-bind", TRUE.toString(), TRUE.toString(), "--", TRUE.toString()));
-        List<String> allOfUsr = new ArrayList<>(start);
-        allOfUsr.addAll(List.of("--ro-bind", "/usr", "/usr", "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64",
-                "/lib64", "--", TRUE.toString()));
-        long[] warming = new long[runs], filesStart = new long[runs], usrStart = new long[runs];
-        for (int i = 0; i < runs; i++) {
-            long before = System.nanoTime();
-            warm(List.of());
-            warming[i] = System.nanoTime() - before;
-            filesStart[i] = timeStart(eachFile.toArray(String[]::new));
-            usrStart[i] = timeStart(allOfUsr.toArray(String[]::new));
-        }
-        return (median(warming) + median(filesStart) - median(usrStart)) / 1e9;
+    /** The bwrap a confined sandbox starts. */
+    public Path bwrap() {
+        return host.bwrap();
     }
 
-    private static long timeStart(String... command) throws IOException, InterruptedException {
-        long start = System.nanoTime();
-        Process process = processFor(List.of(command)).redirectErrorStream(true)
-                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-        process.getOutputStream().close();
-        process.waitFor();
-        return System.nanoTime() - start;
+    /** bwrap's arguments that show a run the host's files one by one ({@link SystemFiles}), in a confined sandbox. */
+    public List<String> hostFileArguments() {
+        return host.system().bwrapArguments();
     }
 
-    private static double median(long[] values) {
-        long[] sorted = values.clone();
-        java.util.Arrays.sort(sorted);
-        int middle = sorted.length / 2;
-        return sorted.length % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2.0;
+    /** Reads into memory every file of the host's that a run sees, as each run's start does ({@link #warm}). */
+    public void warmHostFiles() {
+        warm(List.of());
+    }
+
+    /** Reads what a run with {@code binds} sees into memory before it starts ({@link Mounts#warm}). */
+    void warm(List<Bind> binds) {
+        Mounts.warm(host.system(), binds);
     }
 
     /**
@@ -632,7 +323,7 @@ public final class Sandbox {
     private void selfTest() throws Unavailable, InterruptedException {
         try {
             Process process = processFor(wrap(List.of(TRUE.toString()),
-                    List.of(new Bind(TRUE, TRUE.toString(), false)), 5, 256, false, null, false))
+                    List.of(new Bind(TRUE, TRUE.toString(), false)), new RunLimits(5, 256, false), null, false))
                     .redirectErrorStream(true).start();
             process.getOutputStream().close();
             byte[] said = process.getInputStream().readNBytes(4096);

@@ -190,11 +190,11 @@ final class SandboxedProcess {
         int heapMegabytes = jvm.heapMegabytes();
         boolean oneCore = jvm.oneCore();
         Cgroup cgroup = sandbox.cgroupFor(new Cgroup.Totals(
-                (long) (heapMegabytes + TOTAL_BEYOND_HEAP_MEGABYTES) << 20, Sandbox.PROCESSES_LIMIT, oneCore));
+                (long) (heapMegabytes + TOTAL_BEYOND_HEAP_MEGABYTES) << 20, RunLimits.PROCESSES_LIMIT, oneCore));
         try {
             sandbox.warm(binds);
-            Process process = Sandbox.processFor(sandbox.wrap(command, binds, cpuSeconds,
-                    heapMegabytes + NON_HEAP_MEGABYTES, oneCore, cgroup, hiddenScenes))
+            Process process = Sandbox.processFor(sandbox.wrap(command, binds,
+                    new RunLimits(cpuSeconds, heapMegabytes + NON_HEAP_MEGABYTES, oneCore), cgroup, hiddenScenes))
                     .redirectErrorStream(true).start();
             return new Started(process, cgroup);
         } catch (IOException | RuntimeException e) {

@@ -29,7 +29,7 @@ class SandboxTest {
 
         Path usr = dir.resolve("usr");
 
-        assertThatThrownBy(() -> Sandbox.refuseWhatTheRunsSee(List.of(usr), system, jdk.toRealPath()))
+        assertThatThrownBy(() -> Secrets.refuseWhatTheRunsSee(List.of(usr), system, jdk.toRealPath()))
                 .isInstanceOf(Sandbox.CannotHide.class)
                 .hasMessage(usr + ": the runs need " + library.toRealPath() + ", so tick1 cannot hide this folder's "
                         + "scenes from the student's code without stopping every run: give the scenes a folder of "
@@ -52,7 +52,7 @@ class SandboxTest {
         Path scenes = Files.createDirectories(jdk.resolve("lib/scenes"));
         Path scene = Files.writeString(scenes.resolve("hidden.xml"), "<scene/>");
 
-        assertThatThrownBy(() -> Sandbox.refuseWhatTheRunsSee(List.of(scene), SystemFiles.following(List.of()),
+        assertThatThrownBy(() -> Secrets.refuseWhatTheRunsSee(List.of(scene), SystemFiles.following(List.of()),
                 jdk.toRealPath()))
                 .as("a scene in the JDK's folder, which the runs see")
                 .isInstanceOf(Sandbox.CannotHide.class)
@@ -66,7 +66,7 @@ class SandboxTest {
         Path scenes = Files.createDirectories(dir.resolve("usr/lib/scenes"));
         Path jdk = Files.createDirectories(dir.resolve("jdk"));
 
-        assertThatCode(() -> Sandbox.refuseWhatTheRunsSee(List.of(scenes), SystemFiles.following(List.of(library)),
+        assertThatCode(() -> Secrets.refuseWhatTheRunsSee(List.of(scenes), SystemFiles.following(List.of(library)),
                 jdk.toRealPath()))
                 .as("--scenes " + scenes + ", beside " + library).doesNotThrowAnyException();
     }
@@ -76,7 +76,7 @@ class SandboxTest {
         Sandbox first = Sandbox.confined();
         Sandbox second = Sandbox.confined();
         assumeThat(first.runUser()).as("the grader is root, so the code runs as a user of its own")
-                .isGreaterThanOrEqualTo(Sandbox.FIRST_UID);
+                .isGreaterThanOrEqualTo(RunUsers.FIRST_UID);
 
         // Made from this process's id, both would be the same user; the code reads its user id,
         // and a process id would tell it how many processes the machine started since an earlier grade.

@@ -1,5 +1,7 @@
-package gfx.tick1.command.shared.grader.cohort;
+package gfx.tick1.command.bench;
 
+import gfx.tick1.command.shared.grader.cohort.CohortGrade;
+import gfx.tick1.command.shared.grader.cohort.ResultStore;
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.grading.ReferenceChoice;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
@@ -22,7 +24,7 @@ import java.util.List;
  * Times the grading of a cohort of copies of one solution, for {@code tick1 bench}: the sandbox,
  * the limits and the scenes of a default {@code tick1 grade --submissions}, at the size given.
  */
-public final class CohortTiming {
+final class CohortTiming {
 
     /**
      * What was measured: the cohort's size, the jobs, how many passed, the wall time of the whole
@@ -104,21 +106,23 @@ public final class CohortTiming {
                     new PrintWriter(Writer.nullWriter()), false).run(submissions, work);
             double wall = (System.nanoTime() - start) / 1e9;
             List<SubmissionGrader.Phases> phases = done.phases();
+            SandboxOverheads overheads = new SandboxOverheads(sandbox);
             return new Measured(count, jobs, (int) done.results().stream().filter(r -> r.passed()).count(), wall,
                     new Medians(median(phases.stream().mapToLong(SubmissionGrader.Phases::compileNanos).toArray()),
                             median(phases.stream().mapToLong(SubmissionGrader.Phases::renderNanos).toArray()),
                             median(phases.stream().mapToLong(SubmissionGrader.Phases::compareNanos).toArray()),
                             median(done.results().stream().mapToLong(r -> r.time().toNanos()).toArray())),
-                    new Overheads(RUNS_PER_SUBMISSION * sandbox.cgroupSeconds(CGROUP_PROBES),
-                            RUNS_PER_SUBMISSION * sandbox.outputDiskSeconds(CGROUP_PROBES),
-                            RUNS_PER_SUBMISSION * sandbox.systemFilesSeconds(CGROUP_PROBES)));
+                    new Overheads(RUNS_PER_SUBMISSION * overheads.cgroupSeconds(CGROUP_PROBES),
+                            RUNS_PER_SUBMISSION * overheads.outputDiskSeconds(CGROUP_PROBES),
+                            RUNS_PER_SUBMISSION * overheads.systemFilesSeconds(CGROUP_PROBES)));
         } finally {
             WorkFolder.delete(work);
             WorkFolder.delete(report);
         }
     }
 
-    private static double median(long[] nanos) {
+    /** The median of {@code nanos}, in seconds; NaN for none. */
+    static double median(long[] nanos) {
         if (nanos.length == 0) {
             return Double.NaN;
         }

@@ -1,9 +1,8 @@
-package gfx.tick1.command.vpl;
+package gfx.tick1.command.shared.grader.vpl;
 
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.grading.ReferenceChoice;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
-import gfx.tick1.command.shared.grader.vpl.VplReport;
 import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.scene.SceneException;
 import java.io.IOException;
@@ -24,10 +23,15 @@ import java.util.List;
  * @param sceneFiles the hidden scenes' execution file names, in order (empty: the built-in hidden scene)
  * @param version    tick1's version, or null for a development build
  */
-record VplFiles(Path launcher, String maxGrade, List<String> sceneFiles, String version) {
+public record VplFiles(Path launcher, String maxGrade, List<String> sceneFiles, String version) {
+
+    /** The script VPL's Evaluate runs. */
+    public static final String EVALUATE = "vpl_evaluate.sh";
+    /** How to set up the activity, for staff. */
+    public static final String README = "README.txt";
 
     /** vpl_evaluate.sh. */
-    String evaluateScript() {
+    public String evaluateScript() {
         return template("vpl_evaluate.sh.txt")
                 .replace("@TICK1@", shellQuoted(launcher.toString()))
                 .replace("@MAX_GRADE@", maxGrade == null ? "''" : shellQuoted(maxGrade))
@@ -37,9 +41,9 @@ record VplFiles(Path launcher, String maxGrade, List<String> sceneFiles, String 
     }
 
     /** README.txt, for staff. */
-    String readme() {
+    public String readme() {
         String pass = maxGrade == null ? "the activity's maximum grade" : maxGrade;
-        return template(VplCommand.README)
+        return template(README)
                 .replace("@TICK1@", launcher.toString())
                 .replace("@VERSION@", versionShown())
                 .replace("@GRADES@", "a pass is " + pass + ", a fail the activity's minimum grade")
@@ -67,7 +71,7 @@ record VplFiles(Path launcher, String maxGrade, List<String> sceneFiles, String 
     /**
      * Why the scenes of {@code folder} cannot be graded with, as tick1 grade --scenes would say, or null.
      */
-    static String checkScenes(Path folder) {
+    public static String checkScenes(Path folder) {
         Path work = null;
         try {
             work = Files.createTempDirectory("tick1-vpl");

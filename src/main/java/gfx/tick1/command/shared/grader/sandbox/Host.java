@@ -1,0 +1,77 @@
+package gfx.tick1.command.shared.grader.sandbox;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+/**
+ * What this machine gives every sandbox made here: the bwrap (null for none), where control
+ * groups are made (or null), the seccomp filter's file (or null), and whether each run's output
+ * folder can be a file system of its own, the host's files the runs see (null for none), and
+ * the stricter filter's file of the runs that render hidden scenes (null with no filter).
+ */
+record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDisks, SystemFiles system,
+        Path hiddenRunFilter) {
+
+    /**
+     * Host programs the sandbox shows besides java, with the libraries they load: none in a grade.
+     * The attack tests name those their attacks start (sh, fallocate, mkfifo, ...), so that what
+     * holds the runs to their limits is tested against them too.
+     */
+    private static final String ALSO_SHOWN_PROPERTY = "tick1.grade.sandboxAlsoShows";
+    /**
+     * "true" lets the runs start processes, which a grade never does (see {@link SeccompFilter}): for
+     * the tests whose attacks start the programs {@link #ALSO_SHOWN_PROPERTY} shows, so that what
+     * holds the runs to their limits is tested against them.
+     */
+    private static final String PROCESSES_PROPERTY = "tick1.grade.sandboxAllowsProcesses";
+    /** "host" keeps each run's output folder on the host's disk, as where no tmpfs can be mounted (for the tests). */
+    private static final String OUTPUT_DISKS_PROPERTY = "tick1.grade.outputDisks";
+
+    /** No sandbox: {@link Sandbox#unconfined()}. */
+    static final Host NONE = new Host(null, null, null, false, null, null);
+
+    /**
+     * What this machine gives a sandbox run by {@code bwrap}, an executable, for a grader that is
+     * root or not.
+     *
+     * @throws Sandbox.Unavailable when the filter cannot be written or the host's files cannot be listed
+     */
+    static Host find(Path bwrap, boolean root) throws Sandbox.Unavailable, InterruptedException {
+        Path seccompFilter;
+        Path hiddenRunFilter;
+        try {
+            boolean processes = Boolean.getBoolean(PROCESSES_PROPERTY);
+            seccompFilter = SeccompFilter.writeForThisMachine(false, processes);
+            hiddenRunFilter = SeccompFilter.writeForThisMachine(true, processes);
+        } catch (IOException e) {
+            throw new Sandbox.Unavailable("cannot write the sandbox's seccomp filter (" + e.getMessage() + ")");
+        }
+        SystemFiles system;
+        try {
+            system = SystemFiles.of(Sandbox.javaHome(), java.util.Arrays.stream(
+                    System.getProperty(ALSO_SHOWN_PROPERTY, "").split(java.io.File.pathSeparator))
+                    .filter(name -> !name.isEmpty()).map(Path::of).toList());
+        } catch (IOException e) {
+            throw new Sandbox.Unavailable("cannot list the files of the JDK and the libraries java loads (" + e.getMessage()
+                    + ")");
+        }
+        return new Host(bwrap, Cgroup.find(), seccompFilter, root
+                && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks(), system,
+                hiddenRunFilter);
+    }
+
+    /** Whether this grader can mount each run a tmpfs of its own: it mounts one, in a new temporary folder. */
+    private static boolean canMountOutputDisks() {
+        try {
+            Path scratch = Files.createTempDirectory("tick1-mount-");
+            try {
+                return OutputDisk.canMount(scratch);
+            } finally {
+                Files.deleteIfExists(scratch);
+            }
+        } catch (IOException e) {
+            return false;
+        }
+    }
+}
