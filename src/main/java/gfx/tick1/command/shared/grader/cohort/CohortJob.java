@@ -154,7 +154,8 @@ final class CohortJob {
      * for it to pay, a class data sharing archive made for it. Both hold only this program's and the
      * JDK's classes, so every job's user may read them.
      */
-    static StudentProcess harness(CohortGrade cohort, Path work, int submissions) throws IOException, InterruptedException {
+    static StudentProcess harness(CohortGrade cohort, Path work, int submissions)
+            throws IOException, InterruptedException {
         Path harness = Files.createDirectory(work.resolve("harness"));
         StudentProcess.writeHarness(harness);
         readableByAll(harness);

@@ -53,8 +53,8 @@ record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDis
                     System.getProperty(ALSO_SHOWN_PROPERTY, "").split(java.io.File.pathSeparator))
                     .filter(name -> !name.isEmpty()).map(Path::of).toList());
         } catch (IOException e) {
-            throw new Sandbox.Unavailable("cannot list the files of the JDK and the libraries java loads (" + e.getMessage()
-                    + ")");
+            throw new Sandbox.Unavailable("cannot list the files of the JDK and the libraries java loads ("
+                    + e.getMessage() + ")");
         }
         return new Host(bwrap, Cgroup.find(), seccompFilter, root
                 && !"host".equals(System.getProperty(OUTPUT_DISKS_PROPERTY)) && canMountOutputDisks(), system,

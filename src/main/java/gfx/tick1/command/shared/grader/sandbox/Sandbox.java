@@ -154,7 +154,10 @@ public final class Sandbox {
         RunUsers.checkReachable(uid, folder);
     }
 
-    /** Makes {@code folder} readable (or, if {@code writable}, owned) by the run's user alone ({@link RunUsers#share}). */
+    /**
+     * Makes {@code folder} readable (or, if {@code writable}, owned) by the run's user alone
+     * ({@link RunUsers#share}).
+     */
     public void share(Path folder, boolean writable) throws IOException {
         RunUsers.share(uid, folder, writable);
     }
