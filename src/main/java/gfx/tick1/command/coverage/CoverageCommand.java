@@ -6,6 +6,7 @@ import gfx.tick1.command.shared.coverage.CatalogueOnScenes;
 import gfx.tick1.command.shared.coverage.Coverage;
 import gfx.tick1.command.shared.coverage.GradingScenes;
 import gfx.tick1.command.shared.coverage.NamedScene;
+import gfx.tick1.command.shared.coverage.SceneSearch;
 import gfx.tick1.engine.io.AtomicFile;
 import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.scene.SceneException;
@@ -55,6 +56,11 @@ public final class CoverageCommand implements Callable<Integer> {
     @Option(names = "--html", paramLabel = "FILE", description = "Also write the report as an HTML page.")
     private Path html;
 
+    @Option(names = "--suggest", paramLabel = "FILE",
+            description = "Also write a scene to grade on as a hidden scene, found by a search that starts from "
+                    + "tick1.xml's layout, that catches every mistake any scene of the tick can show.")
+    private Path suggest;
+
     @Option(names = "--width", paramLabel = "PIXELS", defaultValue = "640",
             description = "Image width (default: ${DEFAULT-VALUE}, as tick1 grade grades).")
     private int width;
@@ -83,6 +89,16 @@ public final class CoverageCommand implements Callable<Integer> {
         out.flush();
         write(csv, CoverageCsv.of(coverage));
         write(html, CoveragePage.of(coverage));
+        if (suggest != null) {
+            SceneSearch.Suggestion suggestion = SceneSearch.find(width, height);
+            if (suggestion == null) {
+                throw new CommandFailure(EXIT_USAGE, "--suggest: no scene of the search is fair at " + width + " x "
+                        + height + " (the handout's six steps fail it, or its two references differ)");
+            }
+            write(suggest, suggestion.xml());
+            out.println();
+            SuggestionReport.lines(suggestion, suggest).forEach(out::println);
+        }
         return EXIT_OK;
     }
 

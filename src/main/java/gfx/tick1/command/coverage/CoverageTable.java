@@ -32,6 +32,13 @@ final class CoverageTable {
         for (Variant mistake : missed) {
             lines.add("  " + mistake.title() + coverage.reason(mistake).map(reason -> ": " + reason.words()).orElse(""));
         }
+        for (int i = 0; i < coverage.scenes().size(); i++) {
+            if (coverage.sixSteps().caughtBy(i)) {
+                lines.add("Warning: " + plain(coverage.scenes().get(i)) + " fails a correct answer: the handout's six "
+                        + "steps taken literally differ on " + number(coverage.sixSteps().pixels().get(i)) + " pixels "
+                        + "(a ray starts inside a sphere or on its surface, or grazes one)");
+            }
+        }
         if (!coverage.pairs().isEmpty()) {
             lines.add("");
             lines.add("Pairs that tick1 names together, where some scene catches neither mistake alone:");

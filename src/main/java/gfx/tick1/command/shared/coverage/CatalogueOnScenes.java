@@ -34,28 +34,71 @@ public final class CatalogueOnScenes {
     /** The coverage of {@code scenes} in images of {@code width} x {@code height}. */
     public static Coverage measure(List<NamedScene> scenes, int width, int height) {
         List<Variant> mistakes = mistakes();
-        List<long[]> counts = new ArrayList<>();
-        List<References> references = new ArrayList<>();
-        Set<Variant> rendered = EnumSet.copyOf(mistakes);
-        rendered.add(Variant.CORRECT);
-        for (NamedScene scene : scenes) {
-            Map<Variant, BufferedImage> images = new VariantRenderer(width, height).render(scene.scene(), rendered);
-            References pass = new References(pixels(images.get(Variant.CORRECT)),
-                    pixels(new ReferenceRenderer(width, height, Intersection.ROBUST).render(scene.scene())));
-            references.add(pass);
-            long[] differing = new long[mistakes.size()];
-            for (int i = 0; i < mistakes.size(); i++) {
-                differing[i] = pass.differing(pixels(images.get(mistakes.get(i))));
-            }
-            counts.add(differing);
-        }
-        List<Caught> alone = rows(mistakes.stream().map(List::of).toList(), counts);
+        List<Counted> counted = scenes.stream().map(scene -> count(scene.scene(), width, height)).toList();
+        List<Caught> alone = rows(mistakes.stream().map(List::of).toList(),
+                counted.stream().map(Counted::differing).toList());
         Map<Variant, KnownReason> reasons = new EnumMap<>(Variant.class);
         List<Scene> plain = scenes.stream().map(NamedScene::scene).toList();
         alone.stream().filter(row -> !row.caught()).forEach(row -> KnownReason.of(row.entries().get(0), plain)
                 .ifPresent(reason -> reasons.put(row.entries().get(0), reason)));
+        Caught sixSteps = new Caught(List.of(Variant.HANDOUT_SIX_STEPS),
+                counted.stream().map(Counted::sixSteps).toList());
         return new Coverage(scenes.stream().map(NamedScene::name).toList(), width, height, alone,
-                pairs(scenes, references, alone, width, height), reasons);
+                pairs(scenes, counted.stream().map(Counted::references).toList(), alone, width, height), reasons,
+                sixSteps);
+    }
+
+    /** The mistakes at least one of {@code scenes} catches in images of {@code width} x {@code height}. */
+    public static Set<Variant> caught(List<Scene> scenes, int width, int height) {
+        Set<Variant> caught = EnumSet.noneOf(Variant.class);
+        scenes.forEach(scene -> caught.addAll(count(scene, width, height).caught()));
+        return caught;
+    }
+
+    /**
+     * One scene judged as a grading scene: the mistakes it catches, whether the handout's six steps
+     * taken literally (a correct answer) pass it, and whether its two references are the same image.
+     */
+    public record Judged(Set<Variant> caught, boolean passesTheSixSteps, boolean referencesAgree) {
+    }
+
+    /** {@code scene} judged in images of {@code width} x {@code height}. */
+    public static Judged judge(Scene scene, int width, int height) {
+        Counted counted = count(scene, width, height);
+        return new Judged(counted.caught(), counted.sixSteps() == 0,
+                References.count(counted.references().handout(), counted.references().robust()) == 0);
+    }
+
+    /**
+     * Each mistake's pixels differing on one scene, in the order of {@link #mistakes()}, those of
+     * the handout's six steps taken literally, and the scene's references.
+     */
+    private record Counted(long[] differing, long sixSteps, References references) {
+        Set<Variant> caught() {
+            List<Variant> mistakes = mistakes();
+            Set<Variant> caught = EnumSet.noneOf(Variant.class);
+            for (int i = 0; i < mistakes.size(); i++) {
+                if (differing[i] > 0) {
+                    caught.add(mistakes.get(i));
+                }
+            }
+            return caught;
+        }
+    }
+
+    private static Counted count(Scene scene, int width, int height) {
+        List<Variant> mistakes = mistakes();
+        Set<Variant> rendered = EnumSet.copyOf(mistakes);
+        rendered.add(Variant.CORRECT);
+        rendered.add(Variant.HANDOUT_SIX_STEPS);
+        Map<Variant, BufferedImage> images = new VariantRenderer(width, height).render(scene, rendered);
+        References pass = new References(pixels(images.get(Variant.CORRECT)),
+                pixels(new ReferenceRenderer(width, height, Intersection.ROBUST).render(scene)));
+        long[] differing = new long[mistakes.size()];
+        for (int i = 0; i < mistakes.size(); i++) {
+            differing[i] = pass.differing(pixels(images.get(mistakes.get(i))));
+        }
+        return new Counted(differing, pass.differing(pixels(images.get(Variant.HANDOUT_SIX_STEPS))), pass);
     }
 
     /**
@@ -114,7 +157,7 @@ public final class CatalogueOnScenes {
             return Math.min(count(handout, image), count(robust, image));
         }
 
-        private static long count(int[] expected, int[] image) {
+        static long count(int[] expected, int[] image) {
             long differing = 0;
             for (int i = 0; i < image.length; i++) {
                 if ((expected[i] & 0xFFFFFF) != (image[i] & 0xFFFFFF)) {

@@ -19,9 +19,11 @@ import java.util.stream.IntStream;
  * @param mistakes each mistake of the catalogue alone, in the catalogue's order
  * @param pairs    each pair of entries of one method that some scene catches neither of alone
  * @param reasons  why no scene catches a mistake, for the missed ones tick1 knows a reason for
+ * @param sixSteps the handout's six steps taken literally, a correct answer: a scene that "catches" it
+ *                 fails a correct answer (a ray starts inside a sphere or on its surface, or grazes one)
  */
 public record Coverage(List<String> scenes, int width, int height, List<Caught> mistakes, List<Caught> pairs,
-        Map<Variant, KnownReason> reasons) {
+        Map<Variant, KnownReason> reasons, Caught sixSteps) {
 
     public Coverage {
         scenes = List.copyOf(scenes);

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import java.util.function.Predicate;
+import java.util.stream.Stream;
 
 /**
  * Why no given scene catches a mistake, where tick1 knows why. A reason is given only when it
@@ -26,14 +27,17 @@ public enum KnownReason {
             scene -> scene.getObjects().stream().allMatch(sphere -> sphere.getPhong_kD() == sphere.getPhong_kS())),
     CAMERA_OUTSIDE_EVERY_SPHERE(EnumSet.of(Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT, Variant.DISTANCE_ALWAYS_S1),
             "it shows only where a ray starts inside a sphere, and every ray starts at the origin, which no "
-                    + "sphere of these scenes holds",
+                    + "sphere of these scenes holds; a scene that has one fails the handout's six steps taken "
+                    + "literally, a correct answer, as well",
             scene -> scene.getObjects().stream().allMatch(sphere -> atTheCamera(sphere) >= 0)),
     NO_SURFACE_THROUGH_THE_CAMERA(EnumSet.of(Variant.ROOTS_ACCEPTED_AT_ZERO),
             "it shows only where a ray starts on a sphere's surface, and every ray starts at the origin, which no "
                     + "sphere's surface of these scenes passes through",
             scene -> scene.getObjects().stream().allMatch(sphere -> atTheCamera(sphere) != 0)),
     UNIT_DIRECTIONS(EnumSet.of(Variant.DIVIDED_BY_2_TIMES_A),
-            "every ray's direction is a unit vector, so a = D.D is 1 to the last bit and a root moves by as little",
+            "every ray's direction is a unit vector, so a = D.D is 1 but for its last bit and a root moves in its "
+                    + "last bit only, as in correct code that computes in another order: a scene made to show it "
+                    + "would be as sensitive to such code",
             scene -> true);
 
     private final Set<Variant> entries;
@@ -51,9 +55,20 @@ public enum KnownReason {
         return words;
     }
 
-    /** Whether no scene of the tick can show the mistake, whatever its spheres and lights. */
-    public boolean noSceneCan() {
-        return this == NAN_IS_NEVER_CLOSEST || this == K_D_IS_K_S;
+    /**
+     * Whether no scene of the tick can show the mistake, whatever its spheres and lights, without
+     * failing an answer as correct as ours: the handout's six steps taken literally, or correct code
+     * that computes in another order.
+     */
+    public boolean noFairSceneCan() {
+        return this != NO_SURFACE_THROUGH_THE_CAMERA;
+    }
+
+    /** The mistakes that no fair scene can show, as {@link #noFairSceneCan()} says. */
+    public static Set<Variant> shownByNoFairScene() {
+        Set<Variant> none = EnumSet.noneOf(Variant.class);
+        Stream.of(values()).filter(KnownReason::noFairSceneCan).forEach(reason -> none.addAll(reason.entries));
+        return none;
     }
 
     /** The reason tick1 knows why none of {@code scenes} catches {@code mistake}, if it knows one. */
