@@ -2,6 +2,7 @@ package gfx.tick1;
 
 import gfx.tick1.command.bench.BenchCommand;
 import gfx.tick1.command.compare.CompareCommand;
+import gfx.tick1.command.coverage.CoverageCommand;
 import gfx.tick1.command.diagnose.DiagnoseCommand;
 import gfx.tick1.command.diff.DiffCommand;
 import gfx.tick1.command.grade.GradeCommand;
@@ -67,6 +68,7 @@ public final class Tick1 {
 
     /** The subcommands, in the order the help lists them. */
     private static final List<Subcommand> SUBCOMMANDS = List.of(new Subcommand("compare", CompareCommand::new),
+            new Subcommand("coverage", CoverageCommand::new),
             new Subcommand("diagnose", DiagnoseCommand::new), new Subcommand("diff", DiffCommand::new),
             new Subcommand("grade", GradeCommand::new), new Subcommand("starter", StarterCommand::new),
             new Subcommand("vpl", VplCommand::new),

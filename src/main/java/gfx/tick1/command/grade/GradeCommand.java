@@ -2,6 +2,7 @@ package gfx.tick1.command.grade;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
+import gfx.tick1.command.shared.coverage.ScenesShortfall;
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -196,6 +197,8 @@ public final class GradeCommand implements Callable<Integer> {
                 throw new CommandFailure(EXIT_USAGE, e.getMessage());
             }
         }
+        ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
+                .ifPresent(shortfall -> err.println("tick1 grade: warning: " + shortfall.line(options.scenesFolder())));
         if (target.cohort != null) {
             return new CohortCommand(options, target.cohort, sandbox, out, err).call();
         }

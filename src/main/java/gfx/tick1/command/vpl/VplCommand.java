@@ -2,6 +2,7 @@ package gfx.tick1.command.vpl;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
+import gfx.tick1.command.shared.coverage.ScenesShortfall;
 import gfx.tick1.command.shared.grader.vpl.GradeRange;
 import gfx.tick1.command.shared.grader.vpl.VplFiles;
 import gfx.tick1.command.shared.grader.vpl.VplReport;
@@ -115,6 +116,8 @@ public final class VplCommand implements Callable<Integer> {
         out.println("Wrote the execution files of a Tick 1 VPL activity to " + folder + ":");
         names.forEach(name -> out.println("  " + name));
         out.println("vpl_evaluate.sh runs " + launcher + ". " + README + " says how to set up the activity.");
+        ScenesShortfall.of(scenes, 640, 480).ifPresent(shortfall -> spec.commandLine().getErr().println(
+                "tick1 vpl: warning: " + shortfall.line(scenes)));
         return EXIT_OK;
     }
 

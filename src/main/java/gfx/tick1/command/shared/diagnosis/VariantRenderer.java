@@ -100,7 +100,7 @@ public final class VariantRenderer {
     }
 
     /** Renderer.trace after the intersection: the background, or the shade of the hit. */
-    private static Vector3 shade(Scene scene, RaycastHit hit, Variant variant, Set<Variant> model) {
+    static Vector3 shade(Scene scene, RaycastHit hit, Variant variant, Set<Variant> model) {
         if (variant == BACKGROUND_ONLY || hit.getObjectHit() == null) {
             return ReferenceRenderer.BACKGROUND_COLOUR;
         }
@@ -114,7 +114,7 @@ public final class VariantRenderer {
      * Scene.findClosestIntersection over the model of intersectionWith: a later sphere replaces
      * the hit only when its distance is smaller (a NaN distance never is), as the starter's Scene does.
      */
-    private static RaycastHit closestHit(Scene scene, Ray ray, Set<Variant> model) {
+    static RaycastHit closestHit(Scene scene, Ray ray, Set<Variant> model) {
         RaycastHit closest = new RaycastHit();
         for (Sphere sphere : scene.getObjects()) {
             MethodModels.Hit hit = MethodModels.intersect(ray.getOrigin(), ray.getDirection(),
