@@ -14,7 +14,8 @@ final class CoveragePage {
     static String of(Coverage coverage) {
         StringBuilder page = new StringBuilder("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                 + "<title>tick1 coverage</title>\n<style>body{font-family:sans-serif}td,th{padding:2px 8px}"
-                + "td.n{text-align:right}td.zero{color:#a00}</style>\n</head>\n<body>\n<h1>Which mistakes the scenes catch"
+                + "td.n{text-align:right}td.zero{color:#a00}</style>\n</head>\n<body>\n"
+                + "<h1>Which mistakes the scenes catch"
                 + "</h1>\n<p>Pixels differing from the image a pass needs, at " + coverage.width() + " x "
                 + coverage.height() + "; 0: the scene does not catch the mistake.</p>\n");
         table(page, coverage, coverage.mistakes(), true);

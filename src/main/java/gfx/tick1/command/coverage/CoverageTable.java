@@ -7,7 +7,10 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
-/** The console's report of a {@link Coverage}: the table of pixels, then what each scene alone catches and what none does. */
+/**
+ * The console's report of a {@link Coverage}: the table of pixels, then what each scene alone catches
+ * and what none does.
+ */
 final class CoverageTable {
 
     private CoverageTable() {
@@ -30,7 +33,8 @@ final class CoverageTable {
         List<Variant> missed = coverage.missed();
         lines.add("Caught by no scene: " + (missed.isEmpty() ? "none" : missed.size() + ""));
         for (Variant mistake : missed) {
-            lines.add("  " + mistake.title() + coverage.reason(mistake).map(reason -> ": " + reason.words()).orElse(""));
+            lines.add("  " + mistake.title()
+                    + coverage.reason(mistake).map(reason -> ": " + reason.words()).orElse(""));
         }
         for (int i = 0; i < coverage.scenes().size(); i++) {
             if (coverage.sixSteps().caughtBy(i)) {

@@ -11,7 +11,10 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.stream.Stream;
 
-/** The scenes {@code grade} grades on, named as it names them: tick1.xml, then the hidden scene or those of a folder. */
+/**
+ * The scenes {@code grade} grades on, named as it names them: tick1.xml, then the hidden scene or
+ * those of a folder.
+ */
 public final class GradingScenes {
 
     private GradingScenes() {
