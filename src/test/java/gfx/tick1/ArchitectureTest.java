@@ -44,8 +44,8 @@ class ArchitectureTest {
     private static final String[] SHARED = {"gfx.tick1.command.shared.."};
     private static final String[] COMMANDS = {"gfx.tick1.command.bench..", "gfx.tick1.command.compare..",
         "gfx.tick1.command.coverage..", "gfx.tick1.command.diagnose..", "gfx.tick1.command.diff..",
-        "gfx.tick1.command.grade..",        "gfx.tick1.command.preview..", "gfx.tick1.command.render..", "gfx.tick1.command.starter..",
-        "gfx.tick1.command.vpl.."};
+        "gfx.tick1.command.grade..", "gfx.tick1.command.preview..", "gfx.tick1.command.render..",
+        "gfx.tick1.command.starter..", "gfx.tick1.command.vpl.."};
 
     private static JavaClasses program;
 

@@ -14,7 +14,10 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** {@code tick1 coverage} through the real entry point: its table, CSV and page, and the catalogue's column in the docs. */
+/**
+ * {@code tick1 coverage} through the real entry point: its table, CSV and page, and the catalogue's
+ * column in the docs.
+ */
 class CoverageCommandTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};
