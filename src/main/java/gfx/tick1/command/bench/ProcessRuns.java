@@ -91,6 +91,30 @@ final class ProcessRuns {
         return medians;
     }
 
+    /** Something timed beside tick1: the command that runs it, built first; throws with the reason it cannot be. */
+    interface Yardstick {
+        List<String> command() throws IOException;
+    }
+
+    /**
+     * The times of tick1's runs and of a yardstick's taken {@link #interleaved in turn}; or, where the yardstick
+     * cannot be built or run ({@code yardstick} null), tick1's alone, with the reason in {@code missing}.
+     */
+    record Beside(Timing tick1, Timing yardstick, String missing) {
+    }
+
+    /** {@code runs} runs of tick1 with {@code args} beside as many of {@code yardstick}, or alone without it. */
+    Beside beside(int runs, List<String> args, Yardstick yardstick) throws IOException {
+        List<String> tick1 = tick1Command(args.toArray(String[]::new));
+        try {
+            List<Timing> pair = interleaved(runs, List.of(tick1, yardstick.command()));
+            return new Beside(pair.get(0), pair.get(1), null);
+        } catch (IOException e) {
+            return new Beside(tick1(runs, tick1.subList(1, tick1.size()).toArray(String[]::new)), null,
+                    e.getMessage());
+        }
+    }
+
     /**
      * The wall-clock times of {@code runs} runs of each command, taken in turn (the first command,
      * the second, ..., then the first again), so that a change in the machine's load falls on all
