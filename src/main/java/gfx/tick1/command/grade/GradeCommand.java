@@ -166,9 +166,9 @@ public final class GradeCommand implements Callable<Integer> {
         try {
             return Sandbox.confined();
         } catch (Sandbox.Unavailable e) {
-            throw new CommandFailure(EXIT_USAGE, e.getMessage() + ": install the " + Sandbox.PACKAGE
-                    + " package (apt-get install " + Sandbox.PACKAGE + ")" + (vpl() ? "" : ", or give "
-                    + "--no-sandbox to grade without a sandbox"));
+            String noSandbox = "give --no-sandbox to grade without a sandbox";
+            throw new CommandFailure(EXIT_USAGE, e.getMessage() + (e.remedy() == null ? vpl() ? "" : ": " + noSandbox
+                    : ": " + e.remedy() + (vpl() ? "" : ", or " + noSandbox)));
         }
     }
 

@@ -26,8 +26,8 @@ class ProcessRunsTest {
 
     @Test
     void aRunThatFailsIsOneShortLineWithoutTheClassPath() {
-        IOException failure = catchThrowableOfType(() -> new ProcessRuns(false).tick1(1, "--no-such-option"),
-                IOException.class);
+        IOException failure = catchThrowableOfType(IOException.class,
+                () -> new ProcessRuns(false).tick1(1, "--no-such-option"));
 
         assertThat(failure).as("a run that exits non-zero").isNotNull();
         assertThat(failure.getMessage()).as("the failure")

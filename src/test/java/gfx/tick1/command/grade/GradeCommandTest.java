@@ -7,6 +7,7 @@ import static gfx.tick1.command.grade.Mistakes.ROOTS_ACCEPTED_AT_ZERO;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
 import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
@@ -379,6 +380,22 @@ class GradeCommandTest {
             assertThat(run.out()).isEmpty();
             assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
                     .contains("bubblewrap is not installed", "install the bubblewrap package", "--no-sandbox");
+        } finally {
+            System.clearProperty(property);
+        }
+    }
+
+    /** In a container or a chroot bubblewrap is there, but the kernel gives it no namespaces: installing it is no cure. */
+    @Test
+    void whereTheKernelRefusesNamespacesTheGradeSaysSoInOneLineNotThatBubblewrapIsMissing() throws IOException {
+        String property = "tick1.grade.bwrap";
+        System.setProperty(property, RefusedNamespaces.bwrap(dir).toString());
+        try {
+            CliRun run = grade(StudentSolution.correct());
+            assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+            assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
+                    .contains(RefusedNamespaces.WHAT_BWRAP_SAYS, "user namespaces", "--no-sandbox")
+                    .doesNotContain("install the bubblewrap package");
         } finally {
             System.clearProperty(property);
         }
