@@ -15,8 +15,9 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * Where the sandbox cannot give each run an output folder of its own that the kernel holds
  * (grading as a normal user, or where no tmpfs can be mounted), the grade says so in one warning
- * line, after its own answer, and grades; as it does of the sandbox's other weaknesses (no control group). The system property tick1.grade.outputDisks=host makes such a sandbox on a
- * machine that could mount one.
+ * line, after its own answer, and grades; as it does of the sandbox's other weaknesses (no control
+ * group). The system property tick1.grade.outputDisks=host makes such a sandbox on a machine that
+ * could mount one.
  */
 class GradeDiskWarningTest {
 

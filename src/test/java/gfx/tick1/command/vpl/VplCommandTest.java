@@ -87,7 +87,8 @@ class VplCommandTest {
 
     /** An installed tick1 in {@code folder}: bin/tick1 and a jar in lib, with the modes Gradle's installDist gives. */
     private static Path installedIn(Path folder) throws IOException {
-        Path launcher = Files.writeString(Files.createDirectories(folder.resolve("bin")).resolve("tick1"), "#!/bin/sh\n");
+        Path launcher = Files.writeString(Files.createDirectories(folder.resolve("bin")).resolve("tick1"),
+                "#!/bin/sh\n");
         Files.setPosixFilePermissions(launcher, PosixFilePermissions.fromString("rwxr-xr-x"));
         Files.writeString(Files.createDirectories(folder.resolve("lib")).resolve("tick1.jar"), "jar");
         Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));

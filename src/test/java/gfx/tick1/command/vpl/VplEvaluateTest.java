@@ -23,6 +23,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * A Tick 1 activity's evaluation from end to end, as VPL's jail runs it (vpl-jail-system 4.x and 5.x):
@@ -33,6 +35,7 @@ import org.junit.jupiter.api.io.TempDir;
  * bubblewrap and tick1 installed by {@code gradle installDist} (copied where the jail's user can run it); skipped
  * otherwise.
  */
+@ExtendWith(SandboxNeeded.class)
 class VplEvaluateTest {
 
     /** The jail's user: far from real users. */
