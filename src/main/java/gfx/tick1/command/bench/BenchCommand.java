@@ -247,18 +247,8 @@ public final class BenchCommand implements Callable<Integer> {
         String scene = tick1File.toString();
         Path yardsticks = Files.createDirectories(scenes.resolve("yardsticks"));
         Map<String, Double> phases = runs.phases(plan.singleRuns(), "-q", "-i", scene, "-o", image.toString());
-        List<String> small = runs.tick1Command("-q", "-i", scene, "-o", image.toString());
-        Timing startup, courseCode = null;
-        String courseCodeMissing = null;
-        try {
-            List<String> course = CourseCode.build(yardsticks, tick1File, yardsticks.resolve("course-code.png"));
-            List<Timing> pair = runs.interleaved(plan.pairedRuns(), List.of(small, course));
-            startup = pair.get(0);
-            courseCode = pair.get(1);
-        } catch (IOException e) {
-            courseCodeMissing = e.getMessage();
-            startup = runs.tick1(plan.pairedRuns(), small.subList(1, small.size()).toArray(String[]::new));
-        }
+        ProcessRuns.Beside course = runs.beside(plan.pairedRuns(), List.of("-q", "-i", scene, "-o", image.toString()),
+                () -> CourseCode.build(yardsticks, tick1File, yardsticks.resolve("course-code.png")));
         Timing handoutStyle = runs.java(plan.singleRuns(), HandoutStyleRender.class.getName(), scene,
                 image.toString());
         Path crowd10 = scenes.resolve("crowd-10.xml"), crowd10k = scenes.resolve("crowd-10000.xml");
@@ -267,22 +257,15 @@ public final class BenchCommand implements Callable<Integer> {
         Timing ten = runs.tick1(plan.singleRuns(), "-q", "-i", crowd10.toString(), "-o", image.toString());
         Timing tenThousand = runs.tick1(plan.singleRuns(), "-q", "-i", crowd10k.toString(), "-o", image.toString());
         int w = plan.bigWidth(), h = plan.bigHeight(), samples = 4;
-        List<String> big = runs.tick1Command("-q", "-i", scene, "-o", image.toString(), "--width", "" + w,
-                "--height", "" + h, "--samples", "" + samples);
-        Timing endToEnd, scalarC = null;
-        String scalarCMissing = null;
-        long differing = -1;
-        int bigRuns = plan.bigRuns();
-        try {
-            ScalarC c = ScalarC.build(yardsticks, tick1, w, h, samples);
-            List<Timing> pair = runs.interleaved(bigRuns, List.of(big, c.command()));
-            endToEnd = pair.get(0);
-            scalarC = pair.get(1);
-            differing = c.pixelsDifferingFrom(ImageIO.read(image.toFile()));
-        } catch (IOException e) {
-            scalarCMissing = e.getMessage();
-            endToEnd = runs.tick1(bigRuns, big.subList(1, big.size()).toArray(String[]::new));
-        }
+        ScalarC[] c = new ScalarC[1];
+        ProcessRuns.Beside big = runs.beside(plan.bigRuns(), List.of("-q", "-i", scene, "-o", image.toString(),
+                "--width", "" + w, "--height", "" + h, "--samples", "" + samples), () -> {
+                    c[0] = ScalarC.build(yardsticks, tick1, w, h, samples);
+                    return c[0].command();
+                });
+        long differing = big.yardstick() == null ? -1 : c[0].pixelsDifferingFrom(ImageIO.read(image.toFile()));
+        Timing startup = course.tick1(), courseCode = course.yardstick(), endToEnd = big.tick1(),
+                scalarC = big.yardstick();
         log.printf("  whole runs: start-up %.0f ms (course code %s, handout-style java run %.0f ms); 10 spheres %.0f "
                 + "ms, 10,000 spheres %.0f ms; %d x %d x %d samples %.0f ms (scalar C %s); %s%n", startup.median(),
                 courseCode == null ? "not run" : String.format(Locale.ROOT, "%.0f ms", courseCode.median()),
@@ -290,8 +273,8 @@ public final class BenchCommand implements Callable<Integer> {
                 scalarC == null ? "not run" : String.format(Locale.ROOT, "%.0f ms", scalarC.median()),
                 "fresh processes: " + runs.started());
         Files.deleteIfExists(image);
-        return new Whole(phases, startup, courseCode, courseCodeMissing, handoutStyle, ten, tenThousand, endToEnd,
-                w + " x " + h, scalarC, scalarCMissing, differing, runs.started());
+        return new Whole(phases, startup, courseCode, course.missing(), handoutStyle, ten, tenThousand, endToEnd,
+                w + " x " + h, scalarC, big.missing(), differing, runs.started());
     }
 
     private static Scene load(Path file) {

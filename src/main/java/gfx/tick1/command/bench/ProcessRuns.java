@@ -91,6 +91,29 @@ final class ProcessRuns {
         return medians;
     }
 
+    /** Something timed beside tick1: the command that runs it, built first; throws with the reason it cannot be. */
+    interface Yardstick {
+        List<String> command() throws IOException;
+    }
+
+    /**
+     * The times of tick1's runs and of a yardstick's taken {@link #interleaved in turn}; or, where the yardstick
+     * cannot be built or run ({@code yardstick} null), tick1's alone, with the reason in {@code missing}.
+     */
+    record Beside(Timing tick1, Timing yardstick, String missing) {
+    }
+
+    /** {@code runs} runs of tick1 with {@code args} beside as many of {@code yardstick}, or alone without it. */
+    Beside beside(int runs, List<String> args, Yardstick yardstick) throws IOException {
+        String[] tick1Args = args.toArray(String[]::new);
+        try {
+            List<Timing> pair = interleaved(runs, List.of(tick1Command(tick1Args), yardstick.command()));
+            return new Beside(pair.get(0), pair.get(1), null);
+        } catch (IOException e) {
+            return new Beside(tick1(runs, tick1Args), null, e.getMessage());
+        }
+    }
+
     /**
      * The wall-clock times of {@code runs} runs of each command, taken in turn (the first command,
      * the second, ..., then the first again), so that a change in the machine's load falls on all
@@ -143,7 +166,8 @@ final class ProcessRuns {
             int status = process.waitFor();
             String stderr = Files.readString(err, StandardCharsets.UTF_8);
             if (status != 0) {
-                throw new IOException(String.join(" ", command) + " exited with " + status + ": " + stderr.strip());
+                throw new IOException(shown(command) + " exited with " + status + ": "
+                        + stderr.strip().lines().findFirst().orElse("(nothing on standard error)"));
             }
             return stderr;
         } catch (InterruptedException e) {
@@ -152,6 +176,19 @@ final class ProcessRuns {
         } finally {
             Files.deleteIfExists(err);
         }
+    }
+
+    /**
+     * A command as a failure shows it, on one line: the class path, thousands of characters of the
+     * libraries' paths, is left out.
+     */
+    private String shown(List<String> command) {
+        List<String> words = new ArrayList<>(command);
+        int classPathAt = words.indexOf("-cp") + 1;
+        if (classPathAt > 0 && classPathAt < words.size() && words.get(classPathAt).equals(classPath)) {
+            words.set(classPathAt, "(tick1's class path)");
+        }
+        return String.join(" ", words);
     }
 
     private static Path findLauncher() {

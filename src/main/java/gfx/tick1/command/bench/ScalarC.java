@@ -41,7 +41,8 @@ final class ScalarC {
 
     /** Builds the tracer in {@code folder} for this scene and frame; throws with the reason it cannot. */
     static ScalarC build(Path folder, Scene scene, int width, int height, int samples) throws IOException {
-        String compiler = compiler().orElseThrow(() -> new IOException("no C compiler (cc, gcc or clang) on the path"));
+        String compiler = compiler().orElseThrow(() -> new IOException("no C compiler (cc, gcc or clang) on the path; "
+                + "Debian's is gcc (apt-get install gcc)"));
         Path source = folder.resolve(SOURCE);
         try (InputStream in = ScalarC.class.getResourceAsStream(SOURCE)) {
             Files.write(source, in.readAllBytes());

@@ -168,28 +168,44 @@ public final class GradeCommand implements Callable<Integer> {
         return null;
     }
 
-    /** The grade, with the checks of the options done: in tick1's own format, or with --format vpl's sandbox. */
+    /**
+     * The grade, with the checks of the options done: in tick1's own format, or with --format vpl's sandbox. What
+     * the sandbox does not hold the code to here is said once, after the grade's own answer: it qualifies a grade,
+     * and a grade that ends in a one-line error graded nothing.
+     */
     private Integer call(PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
-        Sandbox sandbox;
+        Sandbox sandbox = sandbox(err);
+        int status = call(sandbox, out, err);
+        ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
+                .ifPresent(shortfall -> err.println("tick1 grade: warning: " + shortfall.line(options.scenesFolder())));
+        for (String warning : new String[] {sandbox.totalsNotEnforced(), sandbox.callsNotRefused(),
+                sandbox.diskNotEnforced()}) {
+            if (warning != null) {
+                err.println("tick1 grade: warning: " + warning);
+            }
+        }
+        err.flush();
+        return status;
+    }
+
+    /** No sandbox, with --no-sandbox (said at once, before the student's code runs), or bubblewrap's. */
+    private Sandbox sandbox(PrintWriter err) throws InterruptedException {
         if (noSandbox) {
             err.println("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions; it can "
                     + "read, change and send anything you can");
-            sandbox = Sandbox.unconfined();
-        } else {
-            try {
-                sandbox = Sandbox.confined();
-            } catch (Sandbox.Unavailable e) {
-                throw new CommandFailure(EXIT_USAGE, e.getMessage() + ": install the " + Sandbox.PACKAGE
-                        + " package (apt-get install " + Sandbox.PACKAGE + ")" + (vpl() ? "" : ", or give "
-                        + "--no-sandbox to grade without a sandbox"));
-            }
-            for (String warning : new String[] {sandbox.totalsNotEnforced(), sandbox.callsNotRefused(),
-                    sandbox.diskNotEnforced()}) {
-                if (warning != null) {
-                    err.println("tick1 grade: warning: " + warning);
-                }
-            }
+            return Sandbox.unconfined();
         }
+        try {
+            return Sandbox.confined();
+        } catch (Sandbox.Unavailable e) {
+            String noSandbox = "give --no-sandbox to grade without a sandbox";
+            throw new CommandFailure(EXIT_USAGE, e.getMessage() + (e.remedy() == null ? vpl() ? "" : ": " + noSandbox
+                    : ": " + e.remedy() + (vpl() ? "" : ", or " + noSandbox)));
+        }
+    }
+
+    private int call(Sandbox confined, PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
+        Sandbox sandbox = confined;
         if (options.scenesFolder() != null) {
             try {
                 sandbox = sandbox.hiding(organisersScenes());
@@ -197,8 +213,6 @@ public final class GradeCommand implements Callable<Integer> {
                 throw new CommandFailure(EXIT_USAGE, e.getMessage());
             }
         }
-        ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
-                .ifPresent(shortfall -> err.println("tick1 grade: warning: " + shortfall.line(options.scenesFolder())));
         if (target.cohort != null) {
             return new CohortCommand(options, target.cohort, sandbox, out, err).call();
         }

@@ -39,8 +39,8 @@ public final class VplCommand implements Callable<Integer> {
 
     @ExitStatus("the files were written")
     public static final int EXIT_OK = 0;
-    @ExitStatus("the command line is wrong, a scene of --scenes cannot be graded with, or a file would be "
-            + "overwritten (see --force)")
+    @ExitStatus("the command line is wrong, a scene of --scenes cannot be graded with, other users cannot run the "
+            + "tick1 that vpl_evaluate.sh would run, or a file would be overwritten (see --force)")
     public static final int EXIT_USAGE = 2;
     @ExitStatus("the files could not be written")
     public static final int EXIT_CANNOT_WRITE = 3;
@@ -88,6 +88,10 @@ public final class VplCommand implements Callable<Integer> {
             }
         }
         Path launcher = launcher();
+        String unreachable = RunnableByOthers.problem(launcher);
+        if (unreachable != null) {
+            throw new CommandFailure(EXIT_USAGE, unreachable);
+        }
         List<Path> hidden = hiddenScenes();
         List<String> sceneFiles = new ArrayList<>();
         for (int i = 1; i <= hidden.size(); i++) {

@@ -3,6 +3,7 @@ package gfx.tick1.command.diff;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
 import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.WrittenStyles;
 import gfx.tick1.command.shared.javacode.JavaMembers;
@@ -399,6 +400,24 @@ class DiffCommandTest {
             assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
             assertThat(hints(run)).as(run.transcript()).hasSize(1).allMatch(line -> line.startsWith(
                     "behaviour could not be checked: it comes from running your methods in the sandbox"));
+        } finally {
+            if (bwrap == null) {
+                System.clearProperty("tick1.grade.bwrap");
+            } else {
+                System.setProperty("tick1.grade.bwrap", bwrap);
+            }
+        }
+    }
+
+    @Test
+    void whereTheKernelRefusesNamespacesTheHintSaysSoNotThatBubblewrapIsMissing() throws IOException {
+        Path file = write("Renderer.java", StarterKit.source("Renderer"));
+        String bwrap = System.getProperty("tick1.grade.bwrap");
+        System.setProperty("tick1.grade.bwrap", RefusedNamespaces.bwrap(dir).toString());
+        try {
+            CliRun run = CliRun.of("diff", file.toString());
+            assertThat(hints(run)).as(run.transcript()).singleElement().asString()
+                    .contains(RefusedNamespaces.WHAT_BWRAP_SAYS, "user namespaces").doesNotContain("install");
         } finally {
             if (bwrap == null) {
                 System.clearProperty("tick1.grade.bwrap");

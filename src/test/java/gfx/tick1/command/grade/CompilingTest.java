@@ -16,12 +16,15 @@ import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * How {@code grade} compiles: in a JVM that runs none of the student's code, into classes that
  * every run of the code is given read-only; in a cohort, by each job's warm compiler, which
  * carries nothing from one submission to the next and is replaced when a compile breaks it.
  */
+@ExtendWith(SandboxNeeded.class)
 class CompilingTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120", "--time-limit", "10"};

@@ -18,12 +18,15 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * The order a cohort's runs go in: every submission's public run before any submission's hidden
  * run, so that the runs whose reports students see never come after a run that had a hidden
  * scene, nor run beside one; and what a grade keeps on the grader's disk between its two runs.
  */
+@ExtendWith(SandboxNeeded.class)
 class GradeCohortOrderTest {
 
     /**

@@ -32,6 +32,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.openqa.selenium.By;
 import org.openqa.selenium.support.ui.ExpectedConditions;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * {@code tick1 grade --submissions} on a generated cohort in Moodle's download form: correct
@@ -42,6 +44,7 @@ import org.openqa.selenium.support.ui.ExpectedConditions;
  * it must say. One cohort is graded once for the whole class; the tests of resuming, stopping and
  * the cohort's options grade small cohorts of their own.
  */
+@ExtendWith(SandboxNeeded.class)
 class GradeCohortTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};

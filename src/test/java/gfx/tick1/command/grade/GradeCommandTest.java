@@ -7,6 +7,7 @@ import static gfx.tick1.command.grade.Mistakes.ROOTS_ACCEPTED_AT_ZERO;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
 import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
@@ -17,6 +18,8 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * {@code tick1 grade} of one student through the real entry point, on student-style solutions: the
@@ -26,6 +29,7 @@ import org.junit.jupiter.api.io.TempDir;
  * cohort, whose feedback files say what this command prints for them. Images are 160 x 120 to
  * keep the suite quick; every catalogue entry shows at that size (VariantRendererTest checks it).
  */
+@ExtendWith(SandboxNeeded.class)
 class GradeCommandTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};
@@ -58,7 +62,7 @@ class GradeCommandTest {
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
         assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS")
                 .endsWith(SubmissionGrader.CONGRATULATIONS + System.lineSeparator());
-        assertThat(run.err()).isEmpty();
+        assertThat(SandboxWarnings.stripped(run.err())).isEmpty();
     }
 
     @Test
@@ -235,7 +239,7 @@ class GradeCommandTest {
         CliRun run = grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
         assertThat(run.status()).as(run.transcript()).isEqualTo(3);
         assertThat(run.out()).contains("FAILED");
-        assertThat(run.err().lines()).as(run.err()).isNotEmpty()
+        assertThat(SandboxWarnings.stripped(run.err()).lines()).as(run.err()).isNotEmpty()
                 .allMatch(line -> line.startsWith("tick1 grade: ") && line.contains("exists and is not a folder"));
     }
 
@@ -384,6 +388,22 @@ class GradeCommandTest {
         }
     }
 
+    /** In a container or a chroot bubblewrap is there but the kernel gives it no namespaces: installing is no cure. */
+    @Test
+    void whereTheKernelRefusesNamespacesTheGradeSaysSoInOneLineNotThatBubblewrapIsMissing() throws IOException {
+        String property = "tick1.grade.bwrap";
+        System.setProperty(property, RefusedNamespaces.bwrap(dir).toString());
+        try {
+            CliRun run = grade(StudentSolution.correct());
+            assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+            assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
+                    .contains(RefusedNamespaces.WHAT_BWRAP_SAYS, "user namespaces", "--no-sandbox")
+                    .doesNotContain("install the bubblewrap package");
+        } finally {
+            System.clearProperty(property);
+        }
+    }
+
     @Test
     void swappedFilesAreKnownByTheirClassGradedTheRightWayRoundAndSaidSo() throws IOException {
         Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
@@ -392,7 +412,8 @@ class GradeCommandTest {
         args.addAll(List.of(SMALL));
         CliRun run = CliRun.of(args.toArray(String[]::new));
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
-        assertThat(run.err()).isEqualTo("tick1 grade: note: " + files[1] + " declares class Renderer and " + files[0]
+        assertThat(SandboxWarnings.stripped(run.err())).isEqualTo("tick1 grade: note: " + files[1]
+                + " declares class Renderer and " + files[0]
                 + " class Sphere: graded the other way round" + System.lineSeparator());
     }
 

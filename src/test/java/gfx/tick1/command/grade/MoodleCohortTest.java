@@ -16,12 +16,15 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * {@code tick1 grade --submissions} on downloads whose names decide whose row of grades.csv a grade fills, named as
  * Moodle names them ({@link MoodleNaming}). Each cohort here has only submissions with a problem in their files, so
  * nothing is run in the sandbox.
  */
+@ExtendWith(SandboxNeeded.class)
 class MoodleCohortTest {
 
     @Test

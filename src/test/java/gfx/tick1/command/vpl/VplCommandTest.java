@@ -7,6 +7,7 @@ import gfx.tick1.command.shared.grader.vpl.VplReport;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -82,6 +83,55 @@ class VplCommandTest {
 
         assertThat(run.status()).as(run.transcript()).isEqualTo(2);
         assertThat(run.err()).as("the reason").contains("7,5");
+    }
+
+    /** An installed tick1 in {@code folder}: bin/tick1 and a jar in lib, with the modes Gradle's installDist gives. */
+    private static Path installedIn(Path folder) throws IOException {
+        Path launcher = Files.writeString(Files.createDirectories(folder.resolve("bin")).resolve("tick1"),
+                "#!/bin/sh\n");
+        Files.setPosixFilePermissions(launcher, PosixFilePermissions.fromString("rwxr-xr-x"));
+        Files.writeString(Files.createDirectories(folder.resolve("lib")).resolve("tick1.jar"), "jar");
+        Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));
+        return launcher;
+    }
+
+    @Test
+    void aTick1InAFolderOtherUsersCannotPassThroughIsRefusedInOneLineSayingWhatToDo() throws IOException {
+        Path launcher = installedIn(dir.resolve("private").resolve("tick1"));
+        Files.setPosixFilePermissions(dir.resolve("private"), PosixFilePermissions.fromString("rwx------"));
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwxr-xr-x"));
+        CliRun run = CliRun.of("vpl", "--out", dir.resolve("out").toString(), "--tick1", launcher.toString());
+
+        assertThat(run.status()).as(run.transcript()).isEqualTo(VplCommand.EXIT_USAGE);
+        assertThat(run.err().lines().count()).as("one line").isEqualTo(1);
+        assertThat(run.err()).as("the folder, why and what to do")
+                .contains(dir.resolve("private") + " lets no other user through (mode 0700)", "VPL's user",
+                        "--tick1", "chmod o+x " + dir.resolve("private"));
+        assertThat(dir.resolve("out")).as("nothing written").doesNotExist();
+    }
+
+    @Test
+    void aTick1WhoseLibrariesOtherUsersCannotReadIsRefusedNamingTheFile() throws IOException {
+        Path launcher = installedIn(dir.resolve("tick1"));
+        Path jar = dir.resolve("tick1").resolve("lib").resolve("tick1.jar");
+        Files.setPosixFilePermissions(jar, PosixFilePermissions.fromString("rw-------"));
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwxr-xr-x"));
+        CliRun run = CliRun.of("vpl", "--out", dir.resolve("out").toString(), "--tick1", launcher.toString());
+
+        assertThat(run.status()).as(run.transcript()).isEqualTo(VplCommand.EXIT_USAGE);
+        assertThat(run.err()).as("the file and what to do").contains(jar + " cannot be read by other users",
+                "chmod o+r " + jar);
+    }
+
+    @Test
+    void aTick1OtherUsersCanRunIsWritten() throws IOException {
+        Path launcher = installedIn(dir.resolve("tick1"));
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwxr-xr-x"));
+        CliRun run = CliRun.of("vpl", "--out", dir.resolve("out").toString(), "--tick1", launcher.toString());
+
+        assertThat(run.status()).as(run.transcript()).isZero();
+        assertThat(Files.readString(dir.resolve("out").resolve(VplCommand.EVALUATE))).as("vpl_evaluate.sh")
+                .contains("TICK1='" + launcher + "'");
     }
 
     @Test

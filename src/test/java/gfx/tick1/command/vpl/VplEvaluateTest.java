@@ -23,6 +23,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * A Tick 1 activity's evaluation from end to end, as VPL's jail runs it (vpl-jail-system 4.x and 5.x):
@@ -30,18 +32,22 @@ import org.junit.jupiter.api.io.TempDir;
  * vpl_environment.sh of VPL's variables; vpl_evaluate.sh, then the vpl_execution it leaves, run as an
  * unprivileged user with no_new_privs and only the jail's variables set (src/test/resources/vpl/jail.sh).
  * What vpl_execution printed is read as VPL reads it ({@link VplParser}). Needs root, setpriv, unshare,
- * bubblewrap and tick1 installed by {@code gradle installDist}; skipped otherwise.
+ * bubblewrap and tick1 installed by {@code gradle installDist} (copied where the jail's user can run it); skipped
+ * otherwise.
  */
+@ExtendWith(SandboxNeeded.class)
 class VplEvaluateTest {
 
     /** The jail's user: far from real users. */
     private static final int UID = 61_029;
-    private static final Path INSTALLED = Path.of("build", "install", "tick1").toAbsolutePath();
+    private static final Path BUILT = Path.of("build", "install", "tick1").toAbsolutePath();
     private static final String EXECUTION = "---EXECUTION---";
 
     @TempDir
     static Path shared;
     private static Path activity;
+    /** tick1's installation, where the jail's user can run it. */
+    private static Path installed;
 
     @TempDir
     Path dir;
@@ -51,13 +57,36 @@ class VplEvaluateTest {
         assumeTrue(isRoot() && Files.isExecutable(Path.of("/usr/bin/setpriv")) && Files.isExecutable(
                 Path.of("/usr/bin/unshare")) && Files.isExecutable(Path.of("/usr/bin/bwrap")),
                 "needs root, setpriv, unshare and bubblewrap");
-        assumeTrue(Files.isExecutable(INSTALLED.resolve("bin/tick1")), "needs tick1 installed (gradle installDist)");
+        assumeTrue(Files.isExecutable(BUILT.resolve("bin/tick1")), "needs tick1 installed (gradle installDist)");
+        Files.setPosixFilePermissions(shared, PosixFilePermissions.fromString("rwxr-xr-x"));
+        installed = copyForEveryone(BUILT, shared.resolve("tick1"));
         Path scenes = Files.createDirectories(shared.resolve("scenes"));
         Files.copy(Path.of("scenes", "no-ambient.xml"), scenes.resolve("mine.xml"));
         activity = shared.resolve("activity");
         CliRun run = CliRun.of("vpl", "--out", activity.toString(), "--scenes", scenes.toString(), "--max-grade", "7.5",
-                "--tick1", INSTALLED.resolve("bin/tick1").toString());
+                "--tick1", installed.resolve("bin/tick1").toString());
         assertThat(run.status()).as(run.transcript()).isZero();
+    }
+
+    /**
+     * A copy of the installation {@code from} at {@code to} that every user can read and run, as on a jail's host:
+     * the clone that built it may lie in a folder only its owner can enter (a root's home).
+     */
+    private static Path copyForEveryone(Path from, Path to) throws IOException {
+        try (Stream<Path> files = Files.walk(from)) {
+            for (Path file : files.toList()) {
+                Path copy = to.resolve(from.relativize(file).toString());
+                boolean folder = Files.isDirectory(file);
+                if (folder) {
+                    Files.createDirectories(copy);
+                } else {
+                    Files.copy(file, copy);
+                }
+                Files.setPosixFilePermissions(copy, PosixFilePermissions.fromString(
+                        folder || Files.isExecutable(file) ? "rwxr-xr-x" : "rw-r--r--"));
+            }
+        }
+        return to;
     }
 
     private static boolean isRoot() {
@@ -111,7 +140,7 @@ class VplEvaluateTest {
             Files.write(jail, in.readAllBytes());
         }
         Process process = new ProcessBuilder("bash", jail.toString(), mode, home.toString(), Integer.toString(UID),
-                INSTALLED.toString()).redirectErrorStream(true).start();
+                installed.toString()).redirectErrorStream(true).start();
         process.getOutputStream().close();
         String printed = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertThat(process.waitFor(5, TimeUnit.MINUTES)).as("the jail ends").isTrue();

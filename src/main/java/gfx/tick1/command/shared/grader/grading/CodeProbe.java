@@ -53,7 +53,7 @@ public final class CodeProbe {
             sandbox = Sandbox.confined();
         } catch (Sandbox.Unavailable e) {
             return Lines.none("behaviour could not be checked: it comes from running your methods in "
-                    + "the sandbox, and " + e.getMessage() + " (install " + Sandbox.PACKAGE + ")");
+                    + "the sandbox, and " + e.getMessage() + (e.remedy() == null ? "" : ": " + e.remedy()));
         }
         Path work = null;
         try {

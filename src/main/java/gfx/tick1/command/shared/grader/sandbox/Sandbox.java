@@ -111,8 +111,13 @@ public final class Sandbox {
      */
     public static Sandbox confined() throws Unavailable, InterruptedException {
         Path bwrap = Path.of(System.getProperty(BWRAP_PROPERTY, "/usr/bin/bwrap"));
-        if (!Files.isExecutable(bwrap) || !Files.isExecutable(RunLimits.PRLIMIT)) {
-            throw new Unavailable("bubblewrap is not installed");
+        if (!Files.isExecutable(bwrap)) {
+            throw new Unavailable("bubblewrap is not installed", "install the " + PACKAGE + " package (apt-get install "
+                    + PACKAGE + ")");
+        }
+        if (!Files.isExecutable(RunLimits.PRLIMIT)) {
+            throw new Unavailable("prlimit is not installed", "install the util-linux package (apt-get install "
+                    + "util-linux)");
         }
         boolean root;
         try {
@@ -127,12 +132,29 @@ public final class Sandbox {
         return sandbox;
     }
 
-    /** Why the sandbox cannot be made. */
+    /** Why the sandbox cannot be made, and what would make it, where that is known. */
     public static final class Unavailable extends Exception {
         private static final long serialVersionUID = 1L;
 
+        /** What the kernel's refusal of namespaces calls for: installing bubblewrap again would change nothing. */
+        static final String ALLOW_NAMESPACES = "the kernel refuses new user namespaces here, as in a container or a "
+                + "chroot: grade where they are allowed (sysctl kernel.unprivileged_userns_clone=1 where that "
+                + "setting exists, and user.max_user_namespaces above 0)";
+
+        private final String remedy;
+
         Unavailable(String reason) {
+            this(reason, null);
+        }
+
+        Unavailable(String reason, String remedy) {
             super(reason);
+            this.remedy = remedy;
+        }
+
+        /** What to do so that the sandbox can be made (install a package, allow namespaces), or null if not known. */
+        public String remedy() {
+            return remedy;
         }
     }
 
@@ -336,8 +358,10 @@ public final class Sandbox {
             }
             if (process.exitValue() != 0) {
                 String why = ChildOutput.printable(new String(said, java.nio.charset.StandardCharsets.UTF_8)).strip();
-                throw new Unavailable("bubblewrap cannot create a sandbox here"
-                        + (why.isEmpty() ? "" : " (" + why.lines().findFirst().orElse("") + ")"));
+                String first = why.lines().findFirst().orElse("");
+                throw new Unavailable("bubblewrap cannot create a sandbox here" + (why.isEmpty() ? "" : " (" + first
+                        + ")"), first.toLowerCase(java.util.Locale.ROOT).contains("namespace")
+                                ? Unavailable.ALLOW_NAMESPACES : null);
             }
         } catch (IOException e) {
             throw new Unavailable("bubblewrap cannot be started: " + e.getMessage());

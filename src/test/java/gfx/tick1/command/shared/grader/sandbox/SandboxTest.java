@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * Which of the organiser's scenes the sandbox refuses to hide because the runs need what is in
@@ -71,6 +72,7 @@ class SandboxTest {
                 .as("--scenes " + scenes + ", beside " + library).doesNotThrowAnyException();
     }
 
+    @ExtendWith(SandboxNeeded.class)
     @Test
     void theUserTheCodeRunsAsTellsNothingOfTheGradersProcessId() throws Exception {
         Sandbox first = Sandbox.confined();

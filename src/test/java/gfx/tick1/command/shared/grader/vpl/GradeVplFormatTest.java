@@ -13,12 +13,15 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
+import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * {@code tick1 grade --format vpl} through the real entry point, on students whose code prints, throws and
  * is named to take over VPL's reading of the report (see {@link VplReportTest#HOSTILE}); read as VPL reads
  * it ({@link VplParser}), after the jail's pseudo-terminal. Images are 160 x 120 to keep the suite quick.
  */
+@ExtendWith(SandboxNeeded.class)
 class GradeVplFormatTest {
 
     private static final List<String> FILES = List.of("Sphere.java", "Renderer.java");
