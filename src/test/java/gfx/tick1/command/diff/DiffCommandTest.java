@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.WrittenStyles;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.javacode.JavaMembers;
 import gfx.tick1.command.shared.javacode.ReferenceMembers;
 import gfx.tick1.command.shared.kit.StarterKit;
@@ -21,6 +22,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /** {@code tick1 diff} through the real entry point. */
+@SandboxProperties.Written
 class DiffCommandTest {
 
     private static final String ILLUMINATE = "illuminate(Scene, Sphere, Vector3, Vector3)";

@@ -3,6 +3,7 @@ package gfx.tick1.command.grade;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -22,6 +23,7 @@ import org.junit.jupiter.api.io.TempDir;
  * every run of the code is given read-only; in a cohort, by each job's warm compiler, which
  * carries nothing from one submission to the next and is replaced when a compile breaks it.
  */
+@SandboxProperties.Read
 class CompilingTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120", "--time-limit", "10"};

@@ -7,6 +7,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.Tick1;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.kit.StarterKit;
 import java.io.ByteArrayOutputStream;
 import java.io.File;
@@ -46,6 +47,7 @@ import org.junit.jupiter.params.provider.CsvSource;
  * what happened, and leave the secret nowhere, every file outside the work folder as it was, no
  * process behind, and the next student's grade as it would have been.
  */
+@SandboxProperties.Read
 class GradeAttackTest {
 
     private static final Path SECRET = Path.of("/tmp/tick1-attack-secret.txt");

@@ -9,6 +9,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.grade.GradeCohortTest.Student;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -24,6 +25,7 @@ import org.junit.jupiter.api.io.TempDir;
  * run, so that the runs whose reports students see never come after a run that had a hidden
  * scene, nor run beside one; and what a grade keeps on the grader's disk between its two runs.
  */
+@SandboxProperties.Read
 class GradeCohortOrderTest {
 
     /**

@@ -8,6 +8,7 @@ import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.report.Worksheet;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.command.preview.HeadlessChromium;
 import java.io.ByteArrayOutputStream;
@@ -42,6 +43,7 @@ import org.openqa.selenium.support.ui.ExpectedConditions;
  * it must say. One cohort is graded once for the whole class; the tests of resuming, stopping and
  * the cohort's options grade small cohorts of their own.
  */
+@SandboxProperties.Read
 class GradeCohortTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};

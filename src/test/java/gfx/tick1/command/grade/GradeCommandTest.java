@@ -10,6 +10,7 @@ import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -26,6 +27,7 @@ import org.junit.jupiter.api.io.TempDir;
  * cohort, whose feedback files say what this command prints for them. Images are 160 x 120 to
  * keep the suite quick; every catalogue entry shows at that size (VariantRendererTest checks it).
  */
+@SandboxProperties.Written
 class GradeCommandTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};

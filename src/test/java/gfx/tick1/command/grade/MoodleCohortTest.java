@@ -8,6 +8,7 @@ import static gfx.tick1.command.grade.GradeCohortTest.zip;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -22,6 +23,7 @@ import org.junit.jupiter.api.io.TempDir;
  * Moodle names them ({@link MoodleNaming}). Each cohort here has only submissions with a problem in their files, so
  * nothing is run in the sandbox.
  */
+@SandboxProperties.Read
 class MoodleCohortTest {
 
     @Test

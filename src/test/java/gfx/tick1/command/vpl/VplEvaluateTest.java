@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.grade.StudentSolution;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.vpl.VplParser.Annotation;
 import gfx.tick1.command.shared.grader.vpl.VplParser;
 import gfx.tick1.command.shared.grader.vpl.VplReport;
@@ -32,6 +33,7 @@ import org.junit.jupiter.api.io.TempDir;
  * What vpl_execution printed is read as VPL reads it ({@link VplParser}). Needs root, setpriv, unshare,
  * bubblewrap and tick1 installed by {@code gradle installDist}; skipped otherwise.
  */
+@SandboxProperties.Read
 class VplEvaluateTest {
 
     /** The jail's user: far from real users. */
