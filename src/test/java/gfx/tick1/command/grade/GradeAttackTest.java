@@ -52,7 +52,11 @@ class GradeAttackTest {
 
     private static final Path SECRET = Path.of("/tmp/tick1-attack-secret.txt");
     private static final Path VICTIM = Path.of("/tmp/tick1-attack-victim.txt");
-    private static final int LISTENER_PORT = 47811;
+    /**
+     * The port the attacks' sources send to: the test listens on a free port of its own, so that it can run beside
+     * anything, and writes that port in its place.
+     */
+    private static final String LISTENER_PORT_IN_ATTACKS = "47811";
     private static final String VICTIM_TEXT = "the launcher: do not change\n";
     /** The grader's heap in these tests: far less than decoding a 40000 x 40000 image would take. */
     private static final String GRADER_HEAP = "-Xmx160m";
@@ -81,7 +85,7 @@ class GradeAttackTest {
         secret = "tick1-secret-" + Long.toHexString(Double.doubleToLongBits(Math.random()));
         Files.writeString(SECRET, secret);
         Files.writeString(VICTIM, VICTIM_TEXT);
-        listener = new ServerSocket(LISTENER_PORT, 5, InetAddress.getLoopbackAddress());
+        listener = new ServerSocket(0, 5, InetAddress.getLoopbackAddress());
         listener.setSoTimeout(200);
         // The sandbox's user must be able to reach the work folder in it.
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
@@ -114,14 +118,19 @@ class GradeAttackTest {
         if (!first.isEmpty()) {
             // The correct solution, whose render first does what the attack does.
             StudentSolution attacking = StudentSolution.correct().editRenderer(RENDER, RENDER + first);
-            Files.writeString(sphere, attacking.sphere());
-            Files.writeString(renderer, attacking.renderer());
+            Files.writeString(sphere, toTheListener(attacking.sphere()));
+            Files.writeString(renderer, toTheListener(attacking.renderer()));
         } else {
-            Files.writeString(sphere, resourceOr(folder + "Sphere.java", StarterKit.source("Sphere")));
-            Files.writeString(renderer, resourceOr(folder + "Renderer.java", null));
+            Files.writeString(sphere, toTheListener(resourceOr(folder + "Sphere.java", StarterKit.source("Sphere"))));
+            Files.writeString(renderer, toTheListener(resourceOr(folder + "Renderer.java", null)));
         }
         return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary,
                 STARTS_PROGRAMS.contains(attack), sphere, renderer, options);
+    }
+
+    /** An attack's source with the port it sends to made this test's listener's. */
+    private String toTheListener(String source) {
+        return source.replace(LISTENER_PORT_IN_ATTACKS, Integer.toString(listener.getLocalPort()));
     }
 
     /**
