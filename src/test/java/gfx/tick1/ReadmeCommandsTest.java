@@ -90,8 +90,9 @@ class ReadmeCommandsTest {
                     StandardCopyOption.REPLACE_EXISTING);
         }
         Path bin = Files.createDirectories(dir.resolve("bin"));
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Files.writeString(bin.resolve("tick1"), "#!/bin/sh\nexec '" + java + "' -cp '"
+        List<String> jvm = CliRun.java();
+        String java = jvm.get(0);
+        Files.writeString(bin.resolve("tick1"), "#!/bin/sh\nexec '" + String.join("' '", jvm) + "' -cp '"
                 + System.getProperty("java.class.path") + "' " + MainClass.NAME + " \"$@\"\n");
         assertThat(bin.resolve("tick1").toFile().setExecutable(true)).isTrue();
         List<String> lines = studentCommands();

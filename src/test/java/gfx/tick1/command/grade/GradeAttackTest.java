@@ -6,6 +6,7 @@ import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
 
+import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.kit.StarterKit;
@@ -167,8 +168,8 @@ class GradeAttackTest {
     private Grade gradeFilesAs(List<String> launcher, String classPath, Path temporaryFolder, boolean processes,
             Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(launcher);
+        command.addAll(CliRun.java());
         command.addAll(List.of(
-                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporaryFolder,
                 "-Dtick1.grade.sandboxAlsoShows=" + String.join(File.pathSeparator, ATTACK_TOOLS),
                 "-Dtick1.grade.sandboxAllowsProcesses=" + processes,
@@ -830,11 +831,12 @@ class GradeAttackTest {
         Path student = Files.createDirectories(dir.resolve("looping"));
         Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
                 "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
-        Process grade = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
-                Tick1.class.getName(), "grade",
+        List<String> command = CliRun.java();
+        command.addAll(List.of(GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp",
+                System.getProperty("java.class.path"), Tick1.class.getName(), "grade",
                 "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
-                "--width", "16", "--height", "12").redirectErrorStream(true).redirectOutput(log.toFile()).start();
+                "--width", "16", "--height", "12"));
+        Process grade = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
         // The student's code runs in a JVM whose class path is /harness.
         for (int i = 0; i < 600 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
                 .contains("StudentHarness render")); i++) {

@@ -592,8 +592,8 @@ class GradeCohortTest {
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
         Path temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
                 PosixFilePermissions.fromString("rwx--x--x")));
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
-                .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+        List<String> command = CliRun.java();
+        command.addAll(List.of("-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
                 Tick1.class.getName()));
         command.addAll(List.of(args));
         return new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve("grade.log").toFile())
