@@ -35,7 +35,17 @@ public record CliRun(int status, String out, String err, byte[] stdout) {
      * that folder. {@link #stdout} is empty; the image is never wanted on standard output here.
      */
     public static CliRun inFolder(Path folder, String... args) throws IOException, InterruptedException {
+        return inJvm(folder, List.of(), args);
+    }
+
+    /**
+     * As {@link #inFolder}, in a JVM also given {@code jvmOptions}: a system property that only this run reads (the
+     * tests' own JVM, where other classes' tests run, keeps its own).
+     */
+    public static CliRun inJvm(Path folder, List<String> jvmOptions, String... args)
+            throws IOException, InterruptedException {
         List<String> command = java();
+        command.addAll(jvmOptions);
         command.addAll(List.of("-cp", System.getProperty("java.class.path"), MainClass.NAME));
         command.addAll(List.of(args));
         Path out = Files.createTempFile("tick1-out", ".txt"), err = Files.createTempFile("tick1-err", ".txt");

@@ -27,7 +27,7 @@ import org.junit.jupiter.api.io.TempDir;
  * cohort, whose feedback files say what this command prints for them. Images are 160 x 120 to
  * keep the suite quick; every catalogue entry shows at that size (VariantRendererTest checks it).
  */
-@SandboxProperties.Written
+@SandboxProperties.Read
 class GradeCommandTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};
@@ -372,18 +372,16 @@ class GradeCommandTest {
     }
 
     @Test
-    void withoutBubblewrapTheGradeRefusesInOneLineNamingThePackage() throws IOException {
-        String property = "tick1.grade.bwrap";
-        System.setProperty(property, dir.resolve("no-bwrap-here").toString());
-        try {
-            CliRun run = grade(StudentSolution.correct());
-            assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
-            assertThat(run.out()).isEmpty();
-            assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
-                    .contains("bubblewrap is not installed", "install the bubblewrap package", "--no-sandbox");
-        } finally {
-            System.clearProperty(property);
-        }
+    void withoutBubblewrapTheGradeRefusesInOneLineNamingThePackage() throws IOException, InterruptedException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        // The missing bwrap is named to a tick1 in a JVM of its own, so that no other test's sandbox is affected.
+        CliRun run = CliRun.inJvm(dir, List.of("-Dtick1.grade.bwrap=" + dir.resolve("no-bwrap-here")), "grade",
+                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--report",
+                dir.resolve("report").toString(), "--width", "160", "--height", "120");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.out()).isEmpty();
+        assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
+                .contains("bubblewrap is not installed", "install the bubblewrap package", "--no-sandbox");
     }
 
     @Test

@@ -12,7 +12,8 @@ import org.junit.jupiter.api.parallel.Resources;
  * The system properties {@link Sandbox#confined()} reads (which bubblewrap, whether runs get output disks of their
  * own), as a resource of the test classes that run side by side: a class that sets one for a test is never run
  * beside a class that grades, diffs or probes in the tests' own JVM, which would then find no sandbox, or a
- * different one.
+ * different one. A test that gives such a property to a tick1 in a JVM of its own ({@code CliRun.inJvm}) needs
+ * neither.
  */
 public final class SandboxProperties {
 
