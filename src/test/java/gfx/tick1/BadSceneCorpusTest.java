@@ -19,6 +19,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.api.parallel.Isolated;
 
 /**
  * Every file of the bad-input corpus (src/test/resources/bad-scenes), run through the real command
@@ -26,6 +27,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * stack trace, and an existing output file left byte for byte as it was with no temporary file
  * beside it.
  */
+@Isolated("one test sets the default locale, by which the whole program formats numbers and the JDK words errors")
 class BadSceneCorpusTest {
 
     static final Path CORPUS = Path.of("src/test/resources/bad-scenes");

@@ -35,8 +35,18 @@ public record CliRun(int status, String out, String err, byte[] stdout) {
      * that folder. {@link #stdout} is empty; the image is never wanted on standard output here.
      */
     public static CliRun inFolder(Path folder, String... args) throws IOException, InterruptedException {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
-                .toString(), "-cp", System.getProperty("java.class.path"), MainClass.NAME));
+        return inJvm(folder, List.of(), args);
+    }
+
+    /**
+     * As {@link #inFolder}, in a JVM also given {@code jvmOptions}: a system property that only this run reads (the
+     * tests' own JVM, where other classes' tests run, keeps its own).
+     */
+    public static CliRun inJvm(Path folder, List<String> jvmOptions, String... args)
+            throws IOException, InterruptedException {
+        List<String> command = java();
+        command.addAll(jvmOptions);
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), MainClass.NAME));
         command.addAll(List.of(args));
         Path out = Files.createTempFile("tick1-out", ".txt"), err = Files.createTempFile("tick1-err", ".txt");
         try {
@@ -49,6 +59,16 @@ public record CliRun(int status, String out, String err, byte[] stdout) {
             Files.delete(out);
             Files.delete(err);
         }
+    }
+
+    /**
+     * The start of the command line of a JVM of its own that a test runs tick1 in: this JDK's java with the serial
+     * collector and only the JIT's first tier, as the installed launcher starts a small render. A test's grade or
+     * render in it lasts seconds, in which the second tier's compiling would cost more processor time than it saves.
+     */
+    public static List<String> java() {
+        return new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1"));
     }
 
     /** Everything printed, for assertion messages. */

@@ -15,12 +15,15 @@ import org.junit.platform.launcher.TestPlan;
 
 /**
  * One line per test class as it finishes (its tests, failures, skips and seconds), and each failure as it happens,
- * so that a long test run shows where it is; at the end, the run's counts and each skipped test with the reason it
- * was skipped. A test whose assumption does not hold (no course figures, root may write anywhere) is one the JUnit
- * Platform calls "aborted": it was not run, so it is counted and named here as skipped, with the assumption's words.
+ * so that a long test run shows where it is; at the end, the run's counts, each skipped test with the reason it was
+ * skipped, and the ten slowest classes with their times (each from its start to its end: with classes run side by
+ * side, these can add up to more than the run). A test whose assumption does not hold (no course figures, root may
+ * write anywhere) is one the JUnit Platform calls "aborted": it was not run, so it is counted and named here as
+ * skipped, with the assumption's words.
  * The JUnit console launcher that runs the tests on Gradle 4.4.1 prints its tree only once every test has run;
  * Gradle 9's own test logging streams already, so this prints only when the system property
- * {@code tick1.testProgress} is {@code true}. Found by the JUnit Platform through {@code META-INF/services}.
+ * {@code tick1.testProgress} is {@code true}. Found by the JUnit Platform through {@code META-INF/services}. Test
+ * classes run side by side (junit-platform.properties), so the Platform may call it from several threads at once.
  */
 public final class TestClassProgress implements TestExecutionListener {
 
@@ -28,6 +31,7 @@ public final class TestClassProgress implements TestExecutionListener {
     private final PrintStream out;
     private final Map<String, long[]> counts = new HashMap<>();   // class id -> {tests, failed, skipped, start}
     private final List<String> skipped = new ArrayList<>();       // "Class test: reason", in the order skipped
+    private final Map<String, Double> classSeconds = new HashMap<>();   // class -> seconds from start to end
     private TestPlan plan;
     private int classesDone;
     private long tests;
@@ -45,14 +49,17 @@ public final class TestClassProgress implements TestExecutionListener {
         this.on = on;
     }
 
+    /** How many of the slowest classes the closing summary lists. */
+    static final int SLOWEST_SHOWN = 10;
+
     @Override
-    public void testPlanExecutionStarted(TestPlan testPlan) {
+    public synchronized void testPlanExecutionStarted(TestPlan testPlan) {
         plan = testPlan;
         start = System.nanoTime();
     }
 
     @Override
-    public void testPlanExecutionFinished(TestPlan testPlan) {
+    public synchronized void testPlanExecutionFinished(TestPlan testPlan) {
         if (!on) {
             return;
         }
@@ -62,18 +69,27 @@ public final class TestClassProgress implements TestExecutionListener {
             out.println("Skipped, and why:");
             skipped.forEach(line -> out.println("  " + line));
         }
+        if (!classSeconds.isEmpty()) {
+            out.println("Slowest classes:");
+            classSeconds.entrySet().stream()
+                    .sorted(Map.Entry.<String, Double>comparingByValue().reversed()
+                            .thenComparing(Map.Entry.comparingByKey()))
+                    .limit(SLOWEST_SHOWN)
+                    .forEach(slow -> out.println(String.format(Locale.ROOT, "  %7.1f s  %s", slow.getValue(),
+                            slow.getKey())));
+        }
         out.flush();
     }
 
     @Override
-    public void executionStarted(TestIdentifier id) {
+    public synchronized void executionStarted(TestIdentifier id) {
         if (on && isTestClass(id)) {
             counts.put(id.getUniqueId(), new long[] {0, 0, 0, System.nanoTime()});
         }
     }
 
     @Override
-    public void executionSkipped(TestIdentifier id, String reason) {
+    public synchronized void executionSkipped(TestIdentifier id, String reason) {
         if (on) {
             long count = id.isTest() ? 1 : Math.max(1, plan.getDescendants(id).stream().filter(TestIdentifier::isTest)
                     .count());
@@ -88,7 +104,7 @@ public final class TestClassProgress implements TestExecutionListener {
     }
 
     @Override
-    public void executionFinished(TestIdentifier id, TestExecutionResult result) {
+    public synchronized void executionFinished(TestIdentifier id, TestExecutionResult result) {
         if (!on) {
             return;
         }
@@ -124,8 +140,9 @@ public final class TestClassProgress implements TestExecutionListener {
         long[] count = counts.getOrDefault(testClass.getUniqueId(), new long[4]);
         double seconds = count[3] == 0 ? 0 : (System.nanoTime() - count[3]) / 1e9;
         classesDone++;
-        out.println(String.format(Locale.ROOT, "%4d  %-58s %4d test%s%s%s %7.1f s", classesDone,
-                ((ClassSource) testClass.getSource().orElseThrow()).getClassName().replace("gfx.tick1.", ""),
+        String className = ((ClassSource) testClass.getSource().orElseThrow()).getClassName().replace("gfx.tick1.", "");
+        classSeconds.put(className, seconds);
+        out.println(String.format(Locale.ROOT, "%4d  %-58s %4d test%s%s%s %7.1f s", classesDone, className,
                 count[0], count[0] == 1 ? " " : "s", count[1] > 0 ? ", " + count[1] + " FAILED" : "",
                 count[2] > 0 ? ", " + count[2] + " skipped" : "", seconds));
         out.flush();

@@ -6,6 +6,7 @@ import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
 import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.WrittenStyles;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.javacode.JavaMembers;
 import gfx.tick1.command.shared.javacode.ReferenceMembers;
 import gfx.tick1.command.shared.kit.StarterKit;
@@ -22,6 +23,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /** {@code tick1 diff} through the real entry point. */
+@SandboxProperties.Read
 class DiffCommandTest {
 
     private static final String ILLUMINATE = "illuminate(Scene, Sphere, Vector3, Vector3)";
@@ -391,22 +393,14 @@ class DiffCommandTest {
     }
 
     @Test
-    void withoutTheSandboxThereAreNoHintsAndOneLineSaysWhy() throws IOException {
+    void withoutTheSandboxThereAreNoHintsAndOneLineSaysWhy() throws IOException, InterruptedException {
         Path file = write("Renderer.java", StarterKit.source("Renderer"));
-        String bwrap = System.getProperty("tick1.grade.bwrap");
-        System.setProperty("tick1.grade.bwrap", "/nonexistent/bwrap");
-        try {
-            CliRun run = CliRun.of("diff", file.toString());
-            assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
-            assertThat(hints(run)).as(run.transcript()).hasSize(1).allMatch(line -> line.startsWith(
-                    "behaviour could not be checked: it comes from running your methods in the sandbox"));
-        } finally {
-            if (bwrap == null) {
-                System.clearProperty("tick1.grade.bwrap");
-            } else {
-                System.setProperty("tick1.grade.bwrap", bwrap);
-            }
-        }
+        // The missing bwrap is named to a tick1 in a JVM of its own, so that no other test's sandbox is affected.
+        CliRun run = CliRun.inJvm(dir, java.util.List.of("-Dtick1.grade.bwrap=/nonexistent/bwrap"), "diff",
+                file.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(hints(run)).as(run.transcript()).hasSize(1).allMatch(line -> line.startsWith(
+                "behaviour could not be checked: it comes from running your methods in the sandbox"));
     }
 
     @Test

@@ -3,6 +3,7 @@ package gfx.tick1.command.grade;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -25,6 +26,7 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * carries nothing from one submission to the next and is replaced when a compile breaks it.
  */
 @ExtendWith(SandboxNeeded.class)
+@SandboxProperties.Read
 class CompilingTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120", "--time-limit", "10"};

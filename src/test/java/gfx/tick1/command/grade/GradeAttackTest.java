@@ -6,7 +6,9 @@ import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
 
+import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.kit.StarterKit;
 import java.io.ByteArrayOutputStream;
 import java.io.File;
@@ -46,11 +48,16 @@ import org.junit.jupiter.params.provider.CsvSource;
  * what happened, and leave the secret nowhere, every file outside the work folder as it was, no
  * process behind, and the next student's grade as it would have been.
  */
+@SandboxProperties.Read
 class GradeAttackTest {
 
     private static final Path SECRET = Path.of("/tmp/tick1-attack-secret.txt");
     private static final Path VICTIM = Path.of("/tmp/tick1-attack-victim.txt");
-    private static final int LISTENER_PORT = 47811;
+    /**
+     * The port the attacks' sources send to: the test listens on a free port of its own, so that it can run beside
+     * anything, and writes that port in its place.
+     */
+    private static final String LISTENER_PORT_IN_ATTACKS = "47811";
     private static final String VICTIM_TEXT = "the launcher: do not change\n";
     /** The grader's heap in these tests: far less than decoding a 40000 x 40000 image would take. */
     private static final String GRADER_HEAP = "-Xmx160m";
@@ -79,7 +86,7 @@ class GradeAttackTest {
         secret = "tick1-secret-" + Long.toHexString(Double.doubleToLongBits(Math.random()));
         Files.writeString(SECRET, secret);
         Files.writeString(VICTIM, VICTIM_TEXT);
-        listener = new ServerSocket(LISTENER_PORT, 5, InetAddress.getLoopbackAddress());
+        listener = new ServerSocket(0, 5, InetAddress.getLoopbackAddress());
         listener.setSoTimeout(200);
         // The sandbox's user must be able to reach the work folder in it.
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
@@ -112,14 +119,19 @@ class GradeAttackTest {
         if (!first.isEmpty()) {
             // The correct solution, whose render first does what the attack does.
             StudentSolution attacking = StudentSolution.correct().editRenderer(RENDER, RENDER + first);
-            Files.writeString(sphere, attacking.sphere());
-            Files.writeString(renderer, attacking.renderer());
+            Files.writeString(sphere, toTheListener(attacking.sphere()));
+            Files.writeString(renderer, toTheListener(attacking.renderer()));
         } else {
-            Files.writeString(sphere, resourceOr(folder + "Sphere.java", StarterKit.source("Sphere")));
-            Files.writeString(renderer, resourceOr(folder + "Renderer.java", null));
+            Files.writeString(sphere, toTheListener(resourceOr(folder + "Sphere.java", StarterKit.source("Sphere"))));
+            Files.writeString(renderer, toTheListener(resourceOr(folder + "Renderer.java", null)));
         }
         return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary,
                 STARTS_PROGRAMS.contains(attack), sphere, renderer, options);
+    }
+
+    /** An attack's source with the port it sends to made this test's listener's. */
+    private String toTheListener(String source) {
+        return source.replace(LISTENER_PORT_IN_ATTACKS, Integer.toString(listener.getLocalPort()));
     }
 
     /**
@@ -156,8 +168,8 @@ class GradeAttackTest {
     private Grade gradeFilesAs(List<String> launcher, String classPath, Path temporaryFolder, boolean processes,
             Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(launcher);
+        command.addAll(CliRun.java());
         command.addAll(List.of(
-                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporaryFolder,
                 "-Dtick1.grade.sandboxAlsoShows=" + String.join(File.pathSeparator, ATTACK_TOOLS),
                 "-Dtick1.grade.sandboxAllowsProcesses=" + processes,
@@ -819,11 +831,12 @@ class GradeAttackTest {
         Path student = Files.createDirectories(dir.resolve("looping"));
         Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
                 "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
-        Process grade = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
-                Tick1.class.getName(), "grade",
+        List<String> command = CliRun.java();
+        command.addAll(List.of(GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp",
+                System.getProperty("java.class.path"), Tick1.class.getName(), "grade",
                 "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
-                "--width", "16", "--height", "12").redirectErrorStream(true).redirectOutput(log.toFile()).start();
+                "--width", "16", "--height", "12"));
+        Process grade = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
         // The student's code runs in a JVM whose class path is /harness.
         for (int i = 0; i < 600 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")
                 .contains("StudentHarness render")); i++) {

@@ -3,14 +3,15 @@ package gfx.tick1.command.grade;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
 
+import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
@@ -27,6 +28,7 @@ import org.junit.jupiter.api.io.TempDir;
  * of 64 MiB (a tmpfs this test mounts, so grading as root where mounting is allowed), less than
  * the 256 MiB one run's output folder may hold.
  */
+@SandboxProperties.Read
 class GradeCohortDiskTest {
 
     @TempDir
@@ -178,8 +180,8 @@ class GradeCohortDiskTest {
     /** A cohort grade as above, by {@code jobs} jobs at once. */
     private static String grade(Path temporary, Path zip, Path report, int jobs)
             throws IOException, InterruptedException {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
-                .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+        List<String> command = CliRun.java();
+        command.addAll(List.of("-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
                 Tick1.class.getName(), "grade", "--submissions", zip.toString(), "--report", report.toString(),
                 "--width", "160", "--height", "120", "--time-limit", "30", "--jobs", Integer.toString(jobs)));
         Process grade = new ProcessBuilder(command).redirectErrorStream(true).start();

@@ -9,6 +9,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.grade.GradeCohortTest.Student;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -27,6 +28,7 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * scene, nor run beside one; and what a grade keeps on the grader's disk between its two runs.
  */
 @ExtendWith(SandboxNeeded.class)
+@SandboxProperties.Read
 class GradeCohortOrderTest {
 
     /**

@@ -8,6 +8,7 @@ import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.report.Worksheet;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.command.preview.HeadlessChromium;
 import java.io.ByteArrayOutputStream;
@@ -45,6 +46,7 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * the cohort's options grade small cohorts of their own.
  */
 @ExtendWith(SandboxNeeded.class)
+@SandboxProperties.Read
 class GradeCohortTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};
@@ -593,8 +595,8 @@ class GradeCohortTest {
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
         Path temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
                 PosixFilePermissions.fromString("rwx--x--x")));
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
-                .toString(), "-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+        List<String> command = CliRun.java();
+        command.addAll(List.of("-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
                 Tick1.class.getName()));
         command.addAll(List.of(args));
         return new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve("grade.log").toFile())

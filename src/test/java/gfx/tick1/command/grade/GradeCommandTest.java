@@ -11,6 +11,7 @@ import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
 import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -30,6 +31,7 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * keep the suite quick; every catalogue entry shows at that size (VariantRendererTest checks it).
  */
 @ExtendWith(SandboxNeeded.class)
+@SandboxProperties.Read
 class GradeCommandTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};
@@ -374,18 +376,16 @@ class GradeCommandTest {
     }
 
     @Test
-    void withoutBubblewrapTheGradeRefusesInOneLineNamingThePackage() throws IOException {
-        String property = "tick1.grade.bwrap";
-        System.setProperty(property, dir.resolve("no-bwrap-here").toString());
-        try {
-            CliRun run = grade(StudentSolution.correct());
-            assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
-            assertThat(run.out()).isEmpty();
-            assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
-                    .contains("bubblewrap is not installed", "install the bubblewrap package", "--no-sandbox");
-        } finally {
-            System.clearProperty(property);
-        }
+    void withoutBubblewrapTheGradeRefusesInOneLineNamingThePackage() throws IOException, InterruptedException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        // The missing bwrap is named to a tick1 in a JVM of its own, so that no other test's sandbox is affected.
+        CliRun run = CliRun.inJvm(dir, List.of("-Dtick1.grade.bwrap=" + dir.resolve("no-bwrap-here")), "grade",
+                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--report",
+                dir.resolve("report").toString(), "--width", "160", "--height", "120");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.out()).isEmpty();
+        assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
+                .contains("bubblewrap is not installed", "install the bubblewrap package", "--no-sandbox");
     }
 
     /** In a container or a chroot bubblewrap is there but the kernel gives it no namespaces: installing is no cure. */

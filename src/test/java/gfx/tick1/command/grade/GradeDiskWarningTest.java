@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.AfterEach;
@@ -19,6 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
  * group). The system property tick1.grade.outputDisks=host makes such a sandbox on a machine that
  * could mount one.
  */
+@SandboxProperties.Written
 class GradeDiskWarningTest {
 
     private static final String PROPERTY = "tick1.grade.outputDisks";

@@ -27,6 +27,8 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.parallel.ResourceAccessMode;
+import org.junit.jupiter.api.parallel.ResourceLock;
 import org.openqa.selenium.By;
 import org.openqa.selenium.Rectangle;
 import org.openqa.selenium.WebElement;
@@ -39,6 +41,7 @@ import picocli.CommandLine;
  * Skipped, with a message saying how to enable them, where Chromium is not installed.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
+@ResourceLock(value = PreviewServerTest.RENDERS_ABANDONED, mode = ResourceAccessMode.READ)
 class PreviewPageTest {
 
     private static final Path TICK1_XML = Path.of("scenes", "tick1.xml");

@@ -30,9 +30,18 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /** The previewer's HTTP answers, and whom it refuses: plain HTTP, no browser needed. */
+@ResourceLock(PreviewServerTest.RENDERS_ABANDONED)
 class PreviewServerTest {
+
+    /**
+     * The program's count of renders abandoned by their client, as a resource: one test counts its own abandoned
+     * render by it, so no class whose renders could be abandoned (the page's, in a browser) runs beside this one.
+     */
+    static final String RENDERS_ABANDONED = "gfx.tick1.command.preview.PreviewServer.rendersAbandoned";
+
 
     private static final Path TICK1_XML = Path.of("scenes", "tick1.xml");
 

@@ -3,6 +3,7 @@ package gfx.tick1.command.vpl;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.vpl.VplReport;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -12,6 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** {@code tick1 vpl}: the files it writes, and what it refuses. */
+@SandboxProperties.Read
 class VplCommandTest {
 
     @TempDir

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.grade.StudentSolution;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.vpl.VplParser.Annotation;
 import gfx.tick1.command.shared.grader.vpl.VplParser;
 import gfx.tick1.command.shared.grader.vpl.VplReport;
@@ -36,6 +37,7 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * otherwise.
  */
 @ExtendWith(SandboxNeeded.class)
+@SandboxProperties.Read
 class VplEvaluateTest {
 
     /** The jail's user: far from real users. */

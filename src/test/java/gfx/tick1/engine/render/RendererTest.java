@@ -13,12 +13,14 @@ import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.parallel.Isolated;
 
 /**
  * Each Phong term on its own. The sphere is pure red and the specular colour white, so the green
  * channel carries only the specular term and red carries diffuse plus specular. The camera ray
  * along +z meets the sphere at P = (0, 0, 4) with N = V = (0, 0, -1).
  */
+@Isolated("one test reads what the tick's Renderer prints on System.out, which it swaps for its own")
 class RendererTest {
 
     private static final Ray AXIS = new Ray(new Vector3(0), new Vector3(0, 0, 1));

@@ -13,6 +13,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.api.parallel.Isolated;
 
 /**
  * Each entry of the catalogue, written into the correct solution as a student would write it, is
@@ -22,6 +23,8 @@ import org.junit.jupiter.params.provider.MethodSource;
  * from both ours and the handout's six steps where the course's scenes cannot look gets a note
  * with the untested label, and nothing else.
  */
+@Isolated("its probes run in this JVM, each call of the student's methods within a time limit "
+        + "(ProbeRunner.CALL_MILLIS) that a class running beside it could use up")
 class BehaviourCatalogueTest {
 
     private static final String RETURN_SUM = "return ambient.add(diffuse).add(specular);";

@@ -8,11 +8,14 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.api.parallel.Isolated;
 
 /**
  * Correct solutions written in other styles than ours behave as ours on every input, tested or
  * not: the comparison may speak only of what the code does, never of how it is written.
  */
+@Isolated("its probes run in this JVM, each call of the student's methods within a time limit "
+        + "(ProbeRunner.CALL_MILLIS) that a class running beside it could use up")
 class BehaviourStylesTest {
 
     static Stream<Arguments> styles() {

@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.grade.StudentSolution;
+import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.vpl.VplParser.Annotation;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -22,6 +23,7 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * it ({@link VplParser}), after the jail's pseudo-terminal. Images are 160 x 120 to keep the suite quick.
  */
 @ExtendWith(SandboxNeeded.class)
+@SandboxProperties.Written
 class GradeVplFormatTest {
 
     private static final List<String> FILES = List.of("Sphere.java", "Renderer.java");
