@@ -404,21 +404,14 @@ class DiffCommandTest {
     }
 
     @Test
-    void whereTheKernelRefusesNamespacesTheHintSaysSoNotThatBubblewrapIsMissing() throws IOException {
+    void whereTheKernelRefusesNamespacesTheHintSaysSoNotThatBubblewrapIsMissing()
+            throws IOException, InterruptedException {
         Path file = write("Renderer.java", StarterKit.source("Renderer"));
-        String bwrap = System.getProperty("tick1.grade.bwrap");
-        System.setProperty("tick1.grade.bwrap", RefusedNamespaces.bwrap(dir).toString());
-        try {
-            CliRun run = CliRun.of("diff", file.toString());
-            assertThat(hints(run)).as(run.transcript()).singleElement().asString()
-                    .contains(RefusedNamespaces.WHAT_BWRAP_SAYS, "user namespaces").doesNotContain("install");
-        } finally {
-            if (bwrap == null) {
-                System.clearProperty("tick1.grade.bwrap");
-            } else {
-                System.setProperty("tick1.grade.bwrap", bwrap);
-            }
-        }
+        // The refusing bwrap is named to a tick1 in a JVM of its own, so that no other test's sandbox is affected.
+        CliRun run = CliRun.inJvm(dir, java.util.List.of("-Dtick1.grade.bwrap=" + RefusedNamespaces.bwrap(dir)),
+                "diff", file.toString());
+        assertThat(hints(run)).as(run.transcript()).singleElement().asString()
+                .contains(RefusedNamespaces.WHAT_BWRAP_SAYS, "user namespaces").doesNotContain("install");
     }
 
     @ParameterizedTest(name = "{0}")

@@ -390,18 +390,17 @@ class GradeCommandTest {
 
     /** In a container or a chroot bubblewrap is there but the kernel gives it no namespaces: installing is no cure. */
     @Test
-    void whereTheKernelRefusesNamespacesTheGradeSaysSoInOneLineNotThatBubblewrapIsMissing() throws IOException {
-        String property = "tick1.grade.bwrap";
-        System.setProperty(property, RefusedNamespaces.bwrap(dir).toString());
-        try {
-            CliRun run = grade(StudentSolution.correct());
-            assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
-            assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
-                    .contains(RefusedNamespaces.WHAT_BWRAP_SAYS, "user namespaces", "--no-sandbox")
-                    .doesNotContain("install the bubblewrap package");
-        } finally {
-            System.clearProperty(property);
-        }
+    void whereTheKernelRefusesNamespacesTheGradeSaysSoInOneLineNotThatBubblewrapIsMissing()
+            throws IOException, InterruptedException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        // The refusing bwrap is named to a tick1 in a JVM of its own, so that no other test's sandbox is affected.
+        CliRun run = CliRun.inJvm(dir, List.of("-Dtick1.grade.bwrap=" + RefusedNamespaces.bwrap(dir)), "grade",
+                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--report",
+                dir.resolve("report").toString(), "--width", "160", "--height", "120");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines()).singleElement().asString().startsWith("tick1 grade: ")
+                .contains(RefusedNamespaces.WHAT_BWRAP_SAYS, "user namespaces", "--no-sandbox")
+                .doesNotContain("install the bubblewrap package");
     }
 
     @Test
