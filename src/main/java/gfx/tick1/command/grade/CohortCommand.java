@@ -71,6 +71,11 @@ final class CohortCommand {
         } catch (IOException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, IoErrors.describe(e));
         }
+        if (submissions.isEmpty()) {
+            // Only the report folder or the worksheet was there: a grades.csv of no one is no grade.
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, cohortOptions.submissions() + ": no submissions: it "
+                    + "holds only the report folder or the worksheet");
+        }
         if (options.scenesFolder() == null) {
             err.println("tick1 grade: the built-in hidden scene is public (it is in tick1): anyone can pass it by "
                     + "copying its images; give scenes of your own with --scenes");
@@ -218,6 +223,15 @@ final class CohortCommand {
         return submissions.stream().filter(submission -> !own.contains(submission.folder())).toList();
     }
 
+    /** The grades.csv an earlier run wrote in {@code report}, or null: its unchanged rows keep their grading time. */
+    private static byte[] earlierGrades(Path report) {
+        try {
+            return Files.readAllBytes(report.resolve(ReportFiles.GRADES));
+        } catch (IOException e) {
+            return null;
+        }
+    }
+
     /** A name from the download as one line of plain text (a newline in a folder name included). */
     private static String printable(String text) {
         return ChildOutput.printable(text).replace('\n', '?');
@@ -240,7 +254,7 @@ final class CohortCommand {
             }
         }
         if (worksheet == null) {
-            byte[] fresh = Worksheet.fresh(marks, maxGrade, ZonedDateTime.now());
+            byte[] fresh = Worksheet.fresh(marks, maxGrade, ZonedDateTime.now(), earlierGrades(report));
             ReportFiles.write(report.resolve(ReportFiles.GRADES), out -> out.write(fresh));
             return;
         }
