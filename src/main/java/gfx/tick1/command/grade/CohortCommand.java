@@ -1,7 +1,6 @@
 package gfx.tick1.command.grade;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
-import gfx.tick1.command.shared.cli.ExitStatuses;
 import gfx.tick1.command.shared.grader.cohort.CohortGrade;
 import gfx.tick1.command.shared.grader.cohort.ResultStore;
 import gfx.tick1.command.shared.grader.grading.Grading;
@@ -17,7 +16,6 @@ import gfx.tick1.command.shared.grader.report.Worksheet;
 import gfx.tick1.command.shared.grader.sandbox.ChildOutput;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
-import gfx.tick1.engine.io.Counted;
 import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.io.OnExit;
 import gfx.tick1.engine.scene.SceneException;
@@ -187,13 +185,7 @@ final class CohortCommand {
             throw new CommandFailure(GradeCommand.EXIT_CANNOT_WRITE, report + ": cannot write the report: "
                     + IoErrors.describe(e));
         }
-        long passed = results.stream().filter(StudentResult::passed).count();
-        // A submission with a problem (a missing file, ...) is never run, so neither now nor earlier.
-        long problems = results.stream().filter(result -> result.submission().problem() != null).count();
-        out.println("Graded " + Counted.of(results.size(), "submission") + " ("
-                + (results.size() - done.stored() - problems) + " now, " + done.stored() + " from earlier runs"
-                + (problems > 0 ? ", " + problems + " not run: a problem with their files" : "") + "): "
-                + passed + " passed, " + (results.size() - passed) + " failed.");
+        out.println(CohortEnding.of(results, done.stored()).line());
         out.println("Grades: " + report.resolve(ReportFiles.GRADES) + "; feedback: "
                 + report.resolve(ReportFiles.FEEDBACK_ZIP) + "; report: " + report.resolve("index.html"));
         for (CohortGrade.Ungraded ungraded : done.ungraded()) {
@@ -203,9 +195,7 @@ final class CohortCommand {
         unwritten.forEach((folder, why) -> err.println("tick1 grade: " + printable(folder) + ": its feedback "
                 + "cannot be written in " + report + " (" + why + "): its grade is in grades.csv, but its feedback "
                 + "is not in feedback.zip"));
-        return done.ungraded().stream().anyMatch(CohortGrade.Ungraded::grader) ? ExitStatuses.EXIT_INTERNAL
-                : done.ungraded().isEmpty() && unwritten.isEmpty() ? GradeCommand.EXIT_PASS
-                : GradeCommand.EXIT_CANNOT_WRITE;
+        return CohortEnding.status(done.ungraded(), !unwritten.isEmpty());
     }
 
     /**
