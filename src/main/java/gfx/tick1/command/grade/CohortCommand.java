@@ -1,7 +1,6 @@
 package gfx.tick1.command.grade;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
-import gfx.tick1.command.shared.cli.ExitStatuses;
 import gfx.tick1.command.shared.grader.cohort.CohortGrade;
 import gfx.tick1.command.shared.grader.cohort.ResultStore;
 import gfx.tick1.command.shared.grader.grading.Grading;
@@ -17,7 +16,6 @@ import gfx.tick1.command.shared.grader.report.Worksheet;
 import gfx.tick1.command.shared.grader.sandbox.ChildOutput;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
-import gfx.tick1.engine.io.Counted;
 import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.io.OnExit;
 import gfx.tick1.engine.scene.SceneException;
@@ -70,6 +68,11 @@ final class CohortCommand {
             submissions = withoutOwnFiles(Submissions.read(cohortOptions.submissions()));
         } catch (IOException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, IoErrors.describe(e));
+        }
+        if (submissions.isEmpty()) {
+            // Only the report folder or the worksheet was there: a grades.csv of no one is no grade.
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, cohortOptions.submissions() + ": no submissions: it "
+                    + "holds only the report folder or the worksheet");
         }
         if (options.scenesFolder() == null) {
             err.println("tick1 grade: the built-in hidden scene is public (it is in tick1): anyone can pass it by "
@@ -182,13 +185,7 @@ final class CohortCommand {
             throw new CommandFailure(GradeCommand.EXIT_CANNOT_WRITE, report + ": cannot write the report: "
                     + IoErrors.describe(e));
         }
-        long passed = results.stream().filter(StudentResult::passed).count();
-        // A submission with a problem (a missing file, ...) is never run, so neither now nor earlier.
-        long problems = results.stream().filter(result -> result.submission().problem() != null).count();
-        out.println("Graded " + Counted.of(results.size(), "submission") + " ("
-                + (results.size() - done.stored() - problems) + " now, " + done.stored() + " from earlier runs"
-                + (problems > 0 ? ", " + problems + " not run: a problem with their files" : "") + "): "
-                + passed + " passed, " + (results.size() - passed) + " failed.");
+        out.println(CohortEnding.of(results, done.stored()).line());
         out.println("Grades: " + report.resolve(ReportFiles.GRADES) + "; feedback: "
                 + report.resolve(ReportFiles.FEEDBACK_ZIP) + "; report: " + report.resolve("index.html"));
         for (CohortGrade.Ungraded ungraded : done.ungraded()) {
@@ -198,9 +195,7 @@ final class CohortCommand {
         unwritten.forEach((folder, why) -> err.println("tick1 grade: " + printable(folder) + ": its feedback "
                 + "cannot be written in " + report + " (" + why + "): its grade is in grades.csv, but its feedback "
                 + "is not in feedback.zip"));
-        return done.ungraded().stream().anyMatch(CohortGrade.Ungraded::grader) ? ExitStatuses.EXIT_INTERNAL
-                : done.ungraded().isEmpty() && unwritten.isEmpty() ? GradeCommand.EXIT_PASS
-                : GradeCommand.EXIT_CANNOT_WRITE;
+        return CohortEnding.status(done.ungraded(), !unwritten.isEmpty());
     }
 
     /**
@@ -216,6 +211,15 @@ final class CohortCommand {
             }
         }
         return submissions.stream().filter(submission -> !own.contains(submission.folder())).toList();
+    }
+
+    /** The grades.csv an earlier run wrote in {@code report}, or null: its unchanged rows keep their grading time. */
+    private static byte[] earlierGrades(Path report) {
+        try {
+            return Files.readAllBytes(report.resolve(ReportFiles.GRADES));
+        } catch (IOException e) {
+            return null;
+        }
     }
 
     /** A name from the download as one line of plain text (a newline in a folder name included). */
@@ -240,7 +244,7 @@ final class CohortCommand {
             }
         }
         if (worksheet == null) {
-            byte[] fresh = Worksheet.fresh(marks, maxGrade, ZonedDateTime.now());
+            byte[] fresh = Worksheet.fresh(marks, maxGrade, ZonedDateTime.now(), earlierGrades(report));
             ReportFiles.write(report.resolve(ReportFiles.GRADES), out -> out.write(fresh));
             return;
         }

@@ -67,6 +67,10 @@ public final class GradeCommand implements Callable<Integer> {
     @ExitStatus("a scene failed and its images could not be written to the report folder; with --submissions: the "
             + "report could not be written, or a submission's images could not be stored")
     public static final int EXIT_CANNOT_WRITE = 3;
+    @ExitStatus("with --submissions: the report is written, but some submissions were not graded because the "
+            + "grader ran short of its own disk or memory (standard error names them): free some, and the same "
+            + "command grades them")
+    public static final int EXIT_NOT_GRADED = 5;
     @ExitStatus("stopped by Ctrl-C or SIGTERM; with --submissions: the results finished so far are kept, and the same "
             + "command grades the rest")
     public static final int EXIT_STOPPED = 130;

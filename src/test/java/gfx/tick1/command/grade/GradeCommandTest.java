@@ -451,4 +451,34 @@ class GradeCommandTest {
         assertThat(run.err().lines().findFirst()).hasValueSatisfying(line -> assertThat(line)
                 .contains("--submissions", "--sphere"));
     }
+    @Test
+    void aDownloadWithNoSubmissionsIsOneLineExitTwoAndWritesNothing() throws IOException {
+        Path download = Files.createDirectory(dir.resolve("download"));
+        Path report = dir.resolve("report");
+
+        CliRun run = CliRun.of("grade", "--submissions", download.toString(), "--report", report.toString(),
+                "--no-sandbox");
+
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines().filter(line -> !line.startsWith("tick1 grade: warning: ")))
+                .as(run.transcript()).singleElement().asString().contains(download + ": no submissions");
+        assertThat(run.out()).as("standard output").isEmpty();
+        assertThat(report).as("the report folder").doesNotExist();
+    }
+
+    @Test
+    void theDownloadsParentFolderIsOneLineExitTwoAndWritesNothing() throws IOException {
+        Path parent = Files.createDirectory(dir.resolve("Downloads"));
+        Files.write(parent.resolve("Tick 1.zip"), new byte[] {'P', 'K', 5, 6, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+            0, 0, 0, 0, 0});
+        Path report = parent.resolve("report");
+
+        CliRun run = CliRun.of("grade", "--submissions", parent.toString(), "--report", report.toString(),
+                "--no-sandbox");
+
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines().filter(line -> !line.startsWith("tick1 grade: warning: ")))
+                .as(run.transcript()).singleElement().asString().contains(parent.resolve("Tick 1.zip").toString());
+        assertThat(report).as("the report folder").doesNotExist();
+    }
 }

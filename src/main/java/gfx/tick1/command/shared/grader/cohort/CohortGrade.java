@@ -48,12 +48,25 @@ public final class CohortGrade {
     }
 
     /**
-     * A submission that could not be graded: its folder, and why in one line. It keeps a failing
-     * row (never "no submission"), and is graded again by the next run.
-     *
-     * @param grader whether the grader is at fault (an error of tick1's), not the report's folder
+     * A submission that could not be graded: its folder, why in one line, and whose the cause is. It
+     * keeps a row with a blank grade (never "no submission"), and is graded again by the next run.
      */
-    public record Ungraded(String folder, String why, boolean grader) {
+    public record Ungraded(String folder, String why, Cause cause) {
+
+        /** Whose fault it is that a submission was not graded. */
+        public enum Cause {
+            /** The grader ran short of its own disk or memory: free some, and the same command grades it. */
+            GRADER_SHORT,
+            /** An error of tick1's (a bug). */
+            TICK1_ERROR,
+            /** Its images could not be stored in the report's folder. */
+            REPORT_FOLDER
+        }
+
+        /** Whether the grader is at fault (its resources, or an error of tick1's), not the report's folder. */
+        public boolean grader() {
+            return cause != Cause.REPORT_FOLDER;
+        }
     }
 
 
@@ -151,9 +164,11 @@ public final class CohortGrade {
                     // The one graded for it could not be: it fares the same.
                     results[i] = new StudentResult(submissions.get(i), new StudentResult.Summary(false, 0, 0,
                             original.diagnosis(), original.reason()), List.of(), Duration.ZERO);
-                    ungraded.add(new Ungraded(submissions.get(i).folder(), "the same files as "
-                            + submissions.get(firstWithKey.get(same.getValue())).folder() + ", which was not graded",
-                            true));
+                    String folder = submissions.get(firstWithKey.get(same.getValue())).folder();
+                    Ungraded.Cause cause = ungraded.stream().filter(one -> one.folder().equals(folder))
+                            .map(Ungraded::cause).findFirst().orElse(Ungraded.Cause.TICK1_ERROR);
+                    ungraded.add(new Ungraded(submissions.get(i).folder(), "the same files as " + folder
+                            + ", which was not graded", cause));
                 }
             }
             List<StudentResult> all = new ArrayList<>();
@@ -272,13 +287,21 @@ public final class CohortGrade {
                 if (result != null) {
                     progress.done(result.passed());
                 }
+            } catch (GraderShort | OutOfMemoryError e) {
+                if (!stopping) {
+                    String why = e instanceof GraderShort ? e.getMessage() : "the grader ran out of memory (give it "
+                            + "more with JAVA_OPTS=-Xmx...) and grade again";
+                    ungraded.add(new Ungraded(submission.folder(), why, Ungraded.Cause.GRADER_SHORT));
+                    results[index] = StudentResult.notGraded(submission, why);
+                    progress.done(false);
+                }
             } catch (IOException | RuntimeException | Error e) {
                 if (!stopping) {
                     String why = "an error in tick1 stopped its grade (" + ChildOutput.printable(
                             e.getClass().getSimpleName() + (e.getMessage() == null ? "" : ": " + e.getMessage()))
                             .replace('\n', ' ').lines().findFirst().orElse("") + ")";
                     why = why.length() > WHY_CAP ? why.substring(0, WHY_CAP) + "...)" : why;
-                    ungraded.add(new Ungraded(submission.folder(), why, true));
+                    ungraded.add(new Ungraded(submission.folder(), why, Ungraded.Cause.TICK1_ERROR));
                     results[index] = StudentResult.notGraded(submission, why);
                     progress.done(false);
                 }
@@ -290,7 +313,7 @@ public final class CohortGrade {
             Submission submission = submissions.get(index);
             if (graded.imagesUnwritable()) {
                 ungraded.add(new Ungraded(submission.folder(), "its images could not be stored in",
-                        false));
+                        Ungraded.Cause.REPORT_FOLDER));
                 WorkFolder.delete(entry);
                 return;
             }

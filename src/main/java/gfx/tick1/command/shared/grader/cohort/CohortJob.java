@@ -121,7 +121,7 @@ final class CohortJob {
         String diskShort = graded.result().passed() ? null : GraderDisk.shortOfSpace(folder);
         if (diskShort != null) {
             WorkFolder.delete(entry);
-            throw new IOException(diskShort);
+            throw new GraderShort(diskShort);
         }
         // A grade cut short by stop() ended after stopping was set: it is never stored.
         if (cohort.stopped()) {

@@ -14,6 +14,12 @@ import java.util.concurrent.TimeUnit;
  * or missing image would. Such a result is not stored; the submission is "not graded", and the
  * next run of the same command grades it again.
  *
+ * <p>It is decided from what the run hit, just after it failed and before its files are deleted:
+ * a disk that still has room for tick1's own part of a run ({@link #FULL_BYTES}, {@link #FULL_FILES})
+ * was not full when the run wrote, so the failure is the student's, however much less room there
+ * is than the output limit ({@link WorkFolder#RUN_SPACE}) allows a run to use. A run that filled
+ * the disk leaves it full: that student is not graded, not the ones that came near it.
+ *
  * <p>It is decided from the grader's disk alone, as the file system reports it after the failure,
  * never from the result's words: those are the student's to choose (an exception's message, a
  * source line quoted in a compile error). Free bytes come from Java; free inodes from the system's
@@ -29,14 +35,22 @@ final class GraderDisk {
     /** The prefix of what is made to see whether the file system still takes files. */
     private static final String PROBE = ".tick1-disk-probe-";
 
+    /**
+     * Free bytes below which the disk is full: less than tick1's own part of a run writes (the JVM's
+     * files, javac's class files of a correct submission, the harness's images).
+     */
+    static final long FULL_BYTES = 16L << 20;
+    /** Free files and folders below which the disk is full: fewer than tick1's own part of a run makes. */
+    static final long FULL_FILES = 256;
+
     private GraderDisk() {
     }
 
     /**
-     * Null when the folder {@code work} is on has room for one run; else why a failure there may
-     * be the disk's doing, in words for the course staff: fewer free bytes than one run may write
-     * ({@link WorkFolder#RUN_SPACE}), fewer free files and folders than it may make
-     * ({@link WorkFolder#RUN_FILES}), or, where their number cannot be read, no room for one more.
+     * Null when the folder {@code work} is on is not full just after a failed run; else why the
+     * failure may be the disk's doing, in words for the course staff: fewer free bytes than
+     * {@link #FULL_BYTES}, fewer free files and folders than {@link #FULL_FILES}, or, where their
+     * number cannot be read, no room for one more.
      */
     static String shortOfSpace(Path work) throws InterruptedException {
         return shortOfSpace(work, STAT);
@@ -50,17 +64,19 @@ final class GraderDisk {
         } catch (IOException e) {
             return "the free space of the grader's temporary folder cannot be read (" + e.getMessage() + ")";
         }
-        if (free < WorkFolder.RUN_SPACE) {
-            return "the grader's temporary folder has only " + (free >> 20) + " MiB free, less than the "
-                    + (WorkFolder.RUN_SPACE >> 20) + " MiB a run may need: free some space and grade again";
+        if (free < FULL_BYTES) {
+            return "the grader's temporary folder was full when its run failed (" + (free >> 20) + " MiB free, less "
+                    + "than the " + (FULL_BYTES >> 20) + " MiB tick1's own part of a run needs): free some space and "
+                    + "grade again";
         }
         long[] inodes = inodes(work, stat);
         if (inodes == null || inodes[1] == 0) {
             return takesAFileAndAFolder(work);
         }
-        if (inodes[0] < WorkFolder.RUN_FILES) {
-            return "the grader's temporary folder has room for only " + inodes[0] + " more files, fewer than the "
-                    + WorkFolder.RUN_FILES + " a run may make: free some and grade again";
+        if (inodes[0] < FULL_FILES) {
+            return "the grader's temporary folder was full when its run failed (room for only " + inodes[0]
+                    + " more files, fewer than the " + FULL_FILES + " tick1's own part of a run makes): free some and "
+                    + "grade again";
         }
         return null;
     }

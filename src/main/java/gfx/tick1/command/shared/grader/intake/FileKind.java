@@ -8,11 +8,12 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.ByteBuffer;
+import java.util.List;
 import java.util.Optional;
 
 /**
  * What a file given as a download is, when its first bytes show plainly that it is not a zip, so
- * that the message says what was given ("a CSV file") and what was wanted. Anything else goes to
+ * that the message says what was given ("a text file", "a CSV file") and what was wanted. Anything else goes to
  * the zip reader, which says what is wrong with it.
  */
 final class FileKind {
@@ -24,8 +25,9 @@ final class FileKind {
     }
 
     /**
-     * "an empty file", "a CSV file", "a text file", "a PNG image", "a gzip file", "a RAR archive",
-     * "a 7-Zip archive"; empty when the file may be a zip (or cannot be read: the zip reader says why).
+     * "an empty file", "a CSV file" (lines of commas), "a text file" (any other text), "a PNG image", "a gzip
+     * file", "a RAR archive", "a 7-Zip archive"; empty when the file may be a zip (or cannot be read: the zip
+     * reader says why).
      */
     static Optional<String> unlessZip(Path file) {
         byte[] head;
@@ -53,11 +55,18 @@ final class FileKind {
             return Optional.of("a 7-Zip archive");
         }
         if (isText(head)) {
-            String text = new String(head, StandardCharsets.UTF_8);
-            String firstLine = text.lines().findFirst().orElse("");
-            return Optional.of(firstLine.indexOf(',') >= 0 ? "a CSV file" : "a text file");
+            return Optional.of(isCsv(new String(head, StandardCharsets.UTF_8)) ? "a CSV file" : "a text file");
         }
         return Optional.empty();
+    }
+
+    /**
+     * Whether text reads as CSV: its first two lines hold the same number of commas, at least one. A
+     * comma in a line of prose does not make a file CSV; a header and a row of the same width do.
+     */
+    private static boolean isCsv(String text) {
+        List<Long> commas = text.lines().limit(2).map(line -> line.chars().filter(c -> c == ',').count()).toList();
+        return commas.size() == 2 && commas.get(0) > 0 && commas.get(0).equals(commas.get(1));
     }
 
     private static boolean startsWith(byte[] bytes, int... prefix) {

@@ -16,6 +16,7 @@ import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
@@ -43,6 +44,8 @@ public final class Submissions {
     private final Path download;
     private final IntakeLimits limits;
     private long inflated;
+    /** The files at the top of the download that Moodle did not name: no student's, each a problem of its own. */
+    private final List<String> loose = new ArrayList<>();
 
     private Submissions(Path download, IntakeLimits limits) {
         this.download = download;
@@ -90,6 +93,17 @@ public final class Submissions {
     }
 
     private List<Submission> resolveAll(Map<String, StudentFolder> students) throws IOException {
+        if (loose.size() == students.size()) {
+            throw new CohortInputException(download + ": no submissions: " + (loose.isEmpty()
+                    ? "the download holds no student's folder of files"
+                    : "it holds no student's folder, only files (" + oneLine(Listing.some(loose.stream()
+                            .sorted().toList())) + ")"
+                    + loose.stream().sorted().filter(name -> Files.isDirectory(download)
+                            && name.toLowerCase(Locale.ROOT).endsWith(".zip")).findFirst()
+                            .map(zip -> "; --submissions wants the download itself: " + oneLine(download
+                                    .resolve(zip).toString()))
+                            .orElse("")));
+        }
         List<Submission> submissions = new ArrayList<>();
         for (StudentFolder student : students.values()) {
             submissions.add(student.resolve());
@@ -176,6 +190,11 @@ public final class Submissions {
         } catch (IOException e) {
             throw new CohortInputException(root + ": cannot read the folder (" + reason(e) + ")");
         }
+        Path holding = heldDownload(tops);
+        if (holding != null) {
+            throw new CohortInputException(root + ": the folder holds the download, not the students' folders; "
+                    + "--submissions wants the download itself: " + oneLine(holding.toString()));
+        }
         for (Path top : tops) {
             String name = top.getFileName().toString();
             if (passedOver(name)) {
@@ -196,6 +215,33 @@ public final class Submissions {
             }
         }
         return students;
+    }
+
+    /**
+     * The unpacked download among {@code tops}, the entries of the folder given, when the folder holds it rather
+     * than being it: no entry is named as Moodle names a student's, and one folder's own folders are. Null when not.
+     */
+    private static Path heldDownload(List<Path> tops) throws IOException {
+        if (tops.stream().anyMatch(top -> moodleNamed(top.getFileName().toString()))) {
+            return null;
+        }
+        for (Path top : tops) {
+            if (!Files.isDirectory(top, LinkOption.NOFOLLOW_LINKS)) {
+                continue;
+            }
+            try (DirectoryStream<Path> inside = Files.newDirectoryStream(top)) {
+                for (Path entry : inside) {
+                    if (moodleNamed(entry.getFileName().toString())) {
+                        return top;
+                    }
+                }
+            }
+        }
+        return null;
+    }
+
+    private static boolean moodleNamed(String name) {
+        return StudentName.ofFolder(name).moodles() || StudentName.looseFileFolder(name) != null;
     }
 
     private void walk(Path folder, StudentFolder student) throws IOException {
@@ -276,6 +322,7 @@ public final class Submissions {
         }
         students.computeIfAbsent(fileName, this::studentFolder)
                 .refuse(fileName + " is a file at the top of the download, not in a student's folder");
+        loose.add(fileName);
         return null;
     }
 
@@ -295,6 +342,11 @@ public final class Submissions {
 
     private StudentFolder studentFolder(String folder) {
         return new StudentFolder(folder, limits, this);
+    }
+
+    /** Names from the download as one line: a control character (a newline in a file name) is a {@code ?}. */
+    private static String oneLine(String names) {
+        return names.replaceAll("\\p{Cntrl}", "?");
     }
 
     private static String reason(IOException e) {

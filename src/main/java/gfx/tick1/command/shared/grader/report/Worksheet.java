@@ -67,6 +67,9 @@ public final class Worksheet {
     private static final DateTimeFormatter MOODLE_DATE = DateTimeFormatter.ofPattern("EEEE, d MMMM yyyy, h:mm a xxx",
             Locale.ENGLISH);
     private static final String CRLF = "\r\n";
+    /** Where a fresh worksheet's row has its grade, its grading time and its comment. */
+    private static final int GRADE_AT = HEADER.indexOf(GRADE), GRADED_AT = HEADER.indexOf("Last modified (grade)"),
+            COMMENT_AT = HEADER.indexOf(FEEDBACK);
 
     private final String name;
     private final byte[] bytes;
@@ -147,18 +150,57 @@ public final class Worksheet {
      * @param gradedAt when the grades were made, for {@code Last modified (grade)}
      */
     public static byte[] fresh(List<Mark> marks, double maxGrade, ZonedDateTime gradedAt) {
+        return fresh(marks, maxGrade, gradedAt, null);
+    }
+
+    /**
+     * {@link #fresh(List, double, ZonedDateTime)}, where a row whose {@code Grade} and {@code Feedback comments}
+     * are those of the same participant's row in {@code earlier} (the worksheet an earlier grade wrote, or null)
+     * keeps that row's {@code Last modified (grade)}: a grade is as old as its making, so an upload of an
+     * unchanged grade never claims to be newer than a change made in Moodle since. An earlier worksheet that
+     * cannot be read keeps no time.
+     */
+    public static byte[] fresh(List<Mark> marks, double maxGrade, ZonedDateTime gradedAt, byte[] earlier) {
+        Map<String, List<String>> earlierRows = new LinkedHashMap<>();
+        try {
+            List<CsvRecords.Row> rows = earlier == null ? List.of() : CsvRecords.read(earlier);
+            if (!rows.isEmpty() && rows.get(0).cells().stream().map(CsvRecords.Cell::value).toList().equals(HEADER)) {
+                for (CsvRecords.Row row : rows.subList(1, rows.size())) {
+                    earlierRows.putIfAbsent(row.value(0), row.cells().stream().map(CsvRecords.Cell::value).toList());
+                }
+            }
+        } catch (CsvRecords.Malformed e) {
+            earlierRows.clear();
+        }
         StringBuilder csv = new StringBuilder();
         appendRow(csv, HEADER);
+        String now = MOODLE_DATE.format(gradedAt);
         for (Mark mark : marks) {
-            appendRow(csv, List.of(PARTICIPANT + mark.id(), mark.fullName(), "", SUBMITTED, grade(mark.grade()),
-                    grade(maxGrade), "Yes", "", MOODLE_DATE.format(gradedAt), CellText.comment(mark.feedback())));
+            List<String> row = row(mark, maxGrade, now);
+            List<String> before = earlierRows.get(row.get(0));
+            if (before != null && before.size() == HEADER.size() && before.get(GRADE_AT).equals(row.get(GRADE_AT))
+                    && before.get(COMMENT_AT).equals(row.get(COMMENT_AT))) {
+                row.set(GRADED_AT, before.get(GRADED_AT));
+            }
+            appendRow(csv, row);
         }
         return csv.toString().getBytes(StandardCharsets.UTF_8);
     }
 
+    /** A fresh worksheet's row for {@code mark}, its cells as they are written, graded at {@code gradedAt}. */
+    private static List<String> row(Mark mark, double maxGrade, String gradedAt) {
+        List<String> cells = new ArrayList<>();
+        for (String text : List.of(PARTICIPANT + mark.id(), mark.fullName(), "", SUBMITTED, grade(mark.grade()),
+                grade(maxGrade), "Yes", "", gradedAt)) {
+            cells.add(CellText.cell(text));
+        }
+        cells.add(CellText.comment(mark.feedback()));   // bounded and escaped as a cell already
+        return cells;
+    }
+
     private static void appendRow(StringBuilder csv, List<String> cells) {
         for (int i = 0; i < cells.size(); i++) {
-            csv.append(i == 0 ? "" : ",").append(CsvRecords.encode(CellText.cell(cells.get(i)), false));
+            csv.append(i == 0 ? "" : ",").append(CsvRecords.encode(cells.get(i), false));
         }
         csv.append(CRLF);
     }

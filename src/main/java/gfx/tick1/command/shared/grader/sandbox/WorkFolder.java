@@ -23,15 +23,15 @@ public final class WorkFolder {
     private static final Pattern REPORT_IMAGE = Pattern.compile("\\d+-.+-(diff|yours|expected)\\.png");
 
     /**
-     * The free space a grade's work folder needs for one run: what the run's output folder may
-     * hold ({@link OutputCount#BYTES_CAP}). With less, a failed run may be the disk's doing.
+     * The free space a grade's work folder may need for one run: what the run's output folder may
+     * hold ({@link OutputCount#BYTES_CAP}). With less, a run that writes that much may fill the disk.
      */
     public static final long RUN_SPACE = OutputCount.BYTES_CAP;
 
     /**
      * The free files and folders (inodes) a grade's work folder needs for one run: what the run's
-     * output folder may hold ({@link OutputCount#ENTRIES_CAP}). With fewer, a failed run (or a
-     * compiler that could not write its class files) may be the disk's doing.
+     * output folder may hold ({@link OutputCount#ENTRIES_CAP}). With fewer, a run that makes that
+     * many may fill the disk.
      */
     public static final long RUN_FILES = OutputCount.ENTRIES_CAP;
 

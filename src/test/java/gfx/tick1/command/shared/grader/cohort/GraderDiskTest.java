@@ -87,4 +87,20 @@ class GraderDiskTest {
     void aFolderOnTheMachinesOwnStatIsRoomy() throws InterruptedException {
         assertThat(GraderDisk.shortOfSpace(work)).as("why the disk may be at fault, on this machine's disk").isNull();
     }
+    @Test
+    void aDiskWithLessRoomThanARunMayWriteIsShortOnlyOnceARunHasFilledIt() throws Exception {
+        Path small = Files.createDirectory(dir.resolve("small"));
+        Process mount = new ProcessBuilder("/bin/mount", "-t", "tmpfs", "-o", "size=64m", "tick1-test",
+                small.toString()).redirectErrorStream(true).start();
+        assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
+        try {
+            assertThat(GraderDisk.shortOfSpace(small)).as("64 MiB free: less than a run may write, but not full")
+                    .isNull();
+            Files.write(small.resolve("a run's output"), new byte[56 << 20]);
+            assertThat(GraderDisk.shortOfSpace(small)).as("8 MiB free, after a run wrote the rest")
+                    .contains("was full when its run failed");
+        } finally {
+            new ProcessBuilder("/bin/umount", small.toString()).inheritIO().start().waitFor();
+        }
+    }
 }

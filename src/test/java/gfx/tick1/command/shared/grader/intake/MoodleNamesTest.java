@@ -131,9 +131,11 @@ class MoodleNamesTest {
         List<Submission> cohort = readZip(entries(
                 "Ann_7_assignsubmission_onlinetext/onlinetext.html", "<p>hi</p>",
                 "Ann_7_assignsubmission_onlinetext_/onlinetext.html", "<p>hi</p>",
-                "Bob_8_assignsubmission_onlinetext_onlinetext.html", "<p>hi</p>"));
+                "Bob_8_assignsubmission_onlinetext_onlinetext.html", "<p>hi</p>",
+                "Cy_9_assignsubmission_file/Sphere.java", SPHERE,
+                "Cy_9_assignsubmission_file/Renderer.java", RENDERER));
 
-        assertThat(cohort).isEmpty();
+        assertThat(cohort).as("the one student's folder of files").extracting(Submission::id).containsExactly("9");
     }
 
     @Test

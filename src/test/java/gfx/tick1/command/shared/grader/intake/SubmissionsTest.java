@@ -148,9 +148,10 @@ class SubmissionsTest {
 
     @Test
     void anyOtherLooseFileAtTheTopIsASubmissionWithAProblem() throws IOException {
-        List<Submission> cohort = readZip(entries("README.txt", "hi", ".DS_Store", "x", "__MACOSX/s/._x", "x"));
+        List<Submission> cohort = readZip(entries("README.txt", "hi", ".DS_Store", "x", "__MACOSX/s/._x", "x",
+                "s/Sphere.java", SPHERE, "s/Renderer.java", RENDERER));
 
-        assertThat(cohort).singleElement().satisfies(s -> {
+        assertThat(cohort).hasSize(2).first().satisfies(s -> {
             assertThat(s.folder()).isEqualTo("README.txt");
             assertThat(s.problem()).isEqualTo("README.txt is a file at the top of the download, not in a student's "
                     + "folder");
@@ -160,9 +161,53 @@ class SubmissionsTest {
     @Test
     void moodlesFoldersAndFilesOfOtherSubmissionTypesArePassedOver() throws IOException {
         List<Submission> cohort = readZip(entries("Ann_7_assignsubmission_onlinetext_/onlinetext.html", "<p>hi</p>",
-                "Bob_8_assignsubmission_onlinetext_onlinetext.html", "<p>hi</p>"));
+                "Bob_8_assignsubmission_onlinetext_onlinetext.html", "<p>hi</p>",
+                "Cy_9_assignsubmission_file/Sphere.java", SPHERE,
+                "Cy_9_assignsubmission_file/Renderer.java", RENDERER));
 
-        assertThat(cohort).isEmpty();
+        assertThat(cohort).extracting(Submission::id).containsExactly("9");
+    }
+
+    @Test
+    void aDownloadWithNoSubmissionsIsRefusedAsAWhole() throws IOException {
+        Path download = write("cohort.zip", zip(entries("Ann_7_assignsubmission_onlinetext_/onlinetext.html",
+                "<p>hi</p>")));
+
+        assertThatThrownBy(() -> Submissions.read(download)).isInstanceOf(CohortInputException.class)
+                .hasMessage(download + ": no submissions: the download holds no student's folder of files");
+    }
+
+    @Test
+    void anEmptyFolderGivenAsTheDownloadIsRefused() throws IOException {
+        Path download = Files.createDirectory(temp.resolve("download"));
+
+        assertThatThrownBy(() -> Submissions.read(download)).isInstanceOf(CohortInputException.class)
+                .hasMessage(download + ": no submissions: the download holds no student's folder of files");
+    }
+
+    @Test
+    void theFolderHoldingTheDownloadsZipIsRefusedNamingTheZip() throws IOException {
+        Path parent = Files.createDirectory(temp.resolve("Downloads"));
+        Files.write(parent.resolve("Tick 1-1234.zip"), zip(entries("Ann_7_assignsubmission_file/Sphere.java",
+                SPHERE, "Ann_7_assignsubmission_file/Renderer.java", RENDERER)));
+        Files.writeString(parent.resolve("notes.txt"), "to do");
+
+        assertThatThrownBy(() -> Submissions.read(parent)).isInstanceOf(CohortInputException.class)
+                .hasMessage(parent + ": no submissions: it holds no student's folder, only files (Tick "
+                        + "1-1234.zip and notes.txt); --submissions wants the download itself: " + parent.resolve(
+                                "Tick 1-1234.zip"));
+    }
+
+    @Test
+    void theFolderHoldingTheUnpackedDownloadIsRefusedNamingIt() throws IOException {
+        Path parent = Files.createDirectory(temp.resolve("Downloads"));
+        Path unpacked = Files.createDirectories(parent.resolve("Tick 1-1234").resolve("Ann_7_assignsubmission_file"));
+        Files.writeString(unpacked.resolve("Sphere.java"), SPHERE);
+        Files.writeString(unpacked.resolve("Renderer.java"), RENDERER);
+
+        assertThatThrownBy(() -> Submissions.read(parent)).isInstanceOf(CohortInputException.class)
+                .hasMessage(parent + ": the folder holds the download, not the students' folders; --submissions "
+                        + "wants the download itself: " + parent.resolve("Tick 1-1234"));
     }
 
     @Test
@@ -362,7 +407,16 @@ class SubmissionsTest {
         Path download = write("notes.zip", "not a zip at all, though long enough".getBytes(StandardCharsets.UTF_8));
 
         assertThatThrownBy(() -> Submissions.read(download)).isInstanceOf(CohortInputException.class)
-                .hasMessageStartingWith(download + ": a CSV file, not a zip: --submissions wants");
+                .hasMessageStartingWith(download + ": a text file, not a zip: --submissions wants");
+    }
+
+    @Test
+    void plainTextWhoseLinesHaveCommasUnevenlyIsATextFileNotACsvFile() throws IOException {
+        Path download = write("notes.txt", "Tick 1, week 3: hand in by Friday.\nRemember the hidden scene.\n"
+                .getBytes(StandardCharsets.UTF_8));
+
+        assertThatThrownBy(() -> Submissions.read(download)).isInstanceOf(CohortInputException.class)
+                .hasMessageStartingWith(download + ": a text file, not a zip: --submissions wants");
     }
 
     @Test

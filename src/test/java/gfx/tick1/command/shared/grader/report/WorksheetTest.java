@@ -116,6 +116,34 @@ class WorksheetTest {
     }
 
     @Test
+    void aRowWhoseGradeDidNotChangeKeepsItsLastModifiedGrade() throws Exception {
+        ZonedDateTime first = ZonedDateTime.of(2026, 12, 1, 18, 11, 0, 0, ZoneId.of("UTC"));
+        ZonedDateTime second = first.plusDays(1);
+        byte[] earlier = Worksheet.fresh(List.of(new Worksheet.Mark("42", "Ann", 1, "Passed."),
+                new Worksheet.Mark("43", "Bob", 0, "Failed.")), 1, first);
+
+        byte[] again = Worksheet.fresh(List.of(new Worksheet.Mark("42", "Ann", 1, "Passed."),
+                new Worksheet.Mark("43", "Bob", 1, "Passed."), new Worksheet.Mark("44", "Cy", 1, "Passed.")), 1,
+                second, earlier);
+
+        List<CsvRecords.Row> rows = CsvRecords.read(again);
+        int column = Worksheet.HEADER.indexOf("Last modified (grade)");
+        assertThat(rows.subList(1, 4)).extracting(row -> row.value(column)).as("Last modified (grade) of 42 "
+                + "(unchanged), 43 (its grade changed) and 44 (new)").containsExactly(
+                        "Tuesday, 1 December 2026, 6:11 PM +00:00", "Wednesday, 2 December 2026, 6:11 PM +00:00",
+                        "Wednesday, 2 December 2026, 6:11 PM +00:00");
+    }
+
+    @Test
+    void anEarlierWorksheetThatCannotBeReadKeepsNoTime() {
+        ZonedDateTime now = ZonedDateTime.of(2026, 12, 2, 18, 11, 0, 0, ZoneId.of("UTC"));
+
+        byte[] fresh = Worksheet.fresh(MARKS, 1, now, "\"never closed".getBytes(StandardCharsets.UTF_8));
+
+        assertThat(fresh).isEqualTo(Worksheet.fresh(MARKS, 1, now));
+    }
+
+    @Test
     void aFreshWorksheetIsOneAFillReadsBack() throws Exception {
         byte[] fresh = Worksheet.fresh(MARKS, 1, ZonedDateTime.of(2026, 1, 2, 3, 4, 5, 0, ZoneId.of("UTC")));
 
