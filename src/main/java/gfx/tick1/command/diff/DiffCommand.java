@@ -131,13 +131,29 @@ public final class DiffCommand implements Callable<Integer> {
             return EXIT_SAME;
         }
         Hints.Said said = hints(theirs, out, colours);
+        // Methods that behave as ours are no difference, however written; a changed render() or constructor is.
+        boolean same = said != null && said.behavesAsOurs() && onlyMethodsDiffer;
+        if (said != null) {
+            if (same) {
+                out.println(colours.green(NOTHING_TO_FIX));
+            }
+            said.first().forEach(line -> out.println(colours.yellow(line)));
+        }
+        if (same) {
+            out.println(colours.bold(FORM_ONLY));
+        }
         report.forEach(out::println);
         if (said != null) {
             said.after().forEach(line -> out.println(colours.yellow(line)));
         }
-        // Methods that behave as ours are no difference, however written; a changed render() or constructor is.
-        return said != null && said.behavesAsOurs() && onlyMethodsDiffer ? EXIT_SAME : EXIT_DIFFERENT;
+        return same ? EXIT_SAME : EXIT_DIFFERENT;
     }
+
+    /** The first line where the methods behave as ours and nothing else of ours differs in meaning. */
+    static final String NOTHING_TO_FIX = "Nothing to fix: your intersectionWith and illuminate behave as ours, "
+            + "and nothing else of ours differs in meaning.";
+    /** The heading of the hunks of such code. */
+    static final String FORM_ONLY = "Differences of form, which do not change what your code does:";
 
     /**
      * The members whose meaning the behaviour comparison checks: the two methods it calls, and
@@ -147,8 +163,8 @@ public final class DiffCommand implements Callable<Integer> {
             "illuminate(Scene, Sphere, Vector3, Vector3)");
 
     /**
-     * What their methods did, first, one line each (or why it could not be checked); null, with a
-     * line printed, when the files could not be given to the sandbox.
+     * What their methods did, for the lines before the diff (or why it could not be checked); null,
+     * with a line printed, when the files could not be given to the sandbox.
      */
     private Hints.Said hints(List<JavaMembers> theirs, PrintWriter out, Colours colours) {
         Map<String, String> given = new LinkedHashMap<>(), starter = new LinkedHashMap<>();
@@ -166,9 +182,7 @@ public final class DiffCommand implements Callable<Integer> {
             starter.put(className, StarterKit.source(className));
         }
         try {
-            Hints.Said said = Hints.of(given, starter);
-            said.first().forEach(line -> out.println(colours.yellow(line)));
-            return said;
+            return Hints.of(given, starter);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             out.println(colours.yellow("behaviour could not be checked: stopped before your methods had run"));

@@ -164,6 +164,12 @@ class DiffCommandTest {
      * {@code tick1 diff} of a style's two files, run once per style, on first use, for the tests that
      * read its differences and its hints: each run compiles and probes the files in the sandbox.
      */
+    /** {@link #diffOf}, where the sandbox can be made (else the test is skipped): the methods' behaviour is said. */
+    private static CliRun sandboxedDiffOf(CorrectStyles.Style style) throws IOException, InterruptedException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
+        return diffOf(style);
+    }
+
     private static synchronized CliRun diffOf(CorrectStyles.Style style) throws IOException {
         CliRun run = STYLE_RUNS.get(style);
         if (run == null) {
@@ -264,8 +270,7 @@ class DiffCommandTest {
     @MethodSource("otherCode")
     void aCorrectSolutionExitsZeroWhenOnlyTheMethodsThatBehaveAsOursDiffer(CorrectStyles.Style style)
             throws IOException, InterruptedException {
-        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
-        CliRun run = diffOf(style);
+        CliRun run = sandboxedDiffOf(style);
         boolean onlyRunMembersOfOursChanged = style.changedMembers().stream()
                 .filter(signature -> ReferenceMembers.ours("Sphere").members().containsKey(signature)
                         || ReferenceMembers.ours("Renderer").members().containsKey(signature))
@@ -274,6 +279,28 @@ class DiffCommandTest {
                 .isEqualTo(onlyRunMembersOfOursChanged ? DiffCommand.EXIT_SAME : DiffCommand.EXIT_DIFFERENT);
         assertThat(run.out().lines().filter(line -> line.contains(" behaves as ours on "))).as(run.transcript())
                 .hasSize(2);
+    }
+
+    /**
+     * Code whose methods behave as ours, and that changes nothing else of ours in meaning, is told
+     * first that there is nothing to fix, and its hunks come under a heading that says they are of
+     * form; code that changes something else (render, a constructor) is never told so.
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("otherCode")
+    void theFirstLineSaysThereIsNothingToFixExactlyWhenTheCodeDoesWhatOursDoes(CorrectStyles.Style style)
+            throws IOException, InterruptedException {
+        CliRun run = sandboxedDiffOf(style);
+        java.util.List<String> lines = run.out().lines().toList();
+
+        if (run.status() == DiffCommand.EXIT_SAME) {
+            assertThat(lines.get(0)).as(run.transcript()).isEqualTo(DiffCommand.NOTHING_TO_FIX);
+            assertThat(lines.indexOf(DiffCommand.FORM_ONLY)).as(run.transcript()).isPositive()
+                    .isLessThan(lines.indexOf(lines.stream().filter(line -> line.startsWith("--- ours: "))
+                            .findFirst().orElseThrow()));
+        } else {
+            assertThat(lines).as(run.transcript()).doesNotContain(DiffCommand.NOTHING_TO_FIX, DiffCommand.FORM_ONLY);
+        }
     }
 
     /**
@@ -377,7 +404,7 @@ class DiffCommandTest {
         return gfx.tick1.command.shared.grader.grading.WrittenStyles.all().values().stream();
     }
 
-    /** A correct solution of a style of its own behaves as ours: no hint, no note, exit 0. */
+    /** A correct solution of a style of its own behaves as ours: nothing to fix, no hint, no note, exit 0. */
     @ParameterizedTest(name = "{0}")
     @MethodSource("writtenStyles")
     void aCorrectSolutionOfAStyleOfItsOwnExitsZeroWithNoHintAndNoNote(WrittenStyles.Style style)
@@ -388,7 +415,8 @@ class DiffCommandTest {
                 Files.writeString(folder.resolve("Renderer.java"), style.renderer()).toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
         assertThat(hints(run)).as(run.transcript()).isEmpty();
-        assertThat(run.out().lines().limit(2)).as(run.transcript()).allMatch(line -> line.startsWith("your ")
+        assertThat(run.out().lines().findFirst()).as(run.transcript()).contains(DiffCommand.NOTHING_TO_FIX);
+        assertThat(run.out().lines().skip(1).limit(2)).as(run.transcript()).allMatch(line -> line.startsWith("your ")
                 && line.contains(" behaves as ours on "));
     }
 
@@ -432,7 +460,9 @@ class DiffCommandTest {
         if (method.equals(RENDER) || mistake == Variant.UNCHECKED_NEGATIVE_SQUARE_ROOT
                 || mistake == Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT) {
             assertThat(hints(run)).as(run.transcript()).isEmpty();
-            assertThat(run.out()).as(run.transcript()).startsWith("your " + called + " behaves as ours on ");
+            // Where the methods are all that differs, the first line says there is nothing to fix.
+            assertThat(run.out()).as(run.transcript()).startsWith((method.equals(RENDER) ? ""
+                    : DiffCommand.NOTHING_TO_FIX + System.lineSeparator()) + "your " + called + " behaves as ours on ");
             assertThat(run.status()).as(run.transcript()).isEqualTo(method.equals(RENDER) ? DiffCommand.EXIT_DIFFERENT
                     : DiffCommand.EXIT_SAME);
         } else if (mistake == null) {

@@ -208,7 +208,7 @@ class GradeCommandTest {
         // run) is a note with the untested label.
         assertThat(run.out()).as(run.transcript()).contains("tick1.xml: PASS",
                 "sphere-through-camera.xml: FAIL: " + HiddenVerdict.WRONG.words(),
-                "  note: not tested by the course's scenes; the handout's six steps leave it open: for a ray that "
+                "  note: a mistake not tested by the course's scenes: for a ray that "
                         + "starts on a sphere's surface")
                 .as("the scene is hidden: no catalogue entry for its image").doesNotContain("closest: ");
         assertThat(run.out()).as("the note names the model every answer of the public run's fits")

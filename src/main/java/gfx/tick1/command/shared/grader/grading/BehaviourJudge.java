@@ -34,8 +34,12 @@ import java.util.stream.Stream;
  */
 final class BehaviourJudge {
 
-    /** The one label of what neither tick1.xml nor the hidden scene can show. */
-    static final String UNTESTED = "not tested by the course's scenes; the handout's six steps leave it open";
+    /**
+     * The one label of an answer neither tick1.xml nor the hidden scene can show: a note is made only
+     * where the answer is neither ours nor the handout's six steps', the two the handout allows, so
+     * it is a mistake, though never a reason to fail.
+     */
+    static final String UNTESTED = "a mistake not tested by the course's scenes";
 
     /**
      * Relative tolerance: correct code written another way differs from ours in the last bits

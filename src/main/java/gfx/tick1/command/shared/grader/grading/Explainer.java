@@ -111,15 +111,8 @@ final class Explainer {
         String reason = notes.isEmpty() ? SubmissionGrader.CONGRATULATIONS
                 : SubmissionGrader.CONGRATULATIONS + " Note: " + String.join("; ", notes) + ".";
         return new Graded(result(scenes, true, judged.size(), Category.Outcome.PASSED, reason, List.of())
-                .withFindings(new Findings(null, List.of(), notesOfAPass(probes), List.of(), List.of())), false, phases,
-                probes.behaviour());
-    }
-
-    /** The notes of a pass as the cohort tallies them: each tested fact and untested note, without words around it. */
-    private static List<String> notesOfAPass(ProbeFindings probes) {
-        List<String> notes = new ArrayList<>(probes.facts());
-        notes.addAll(probes.untested());
-        return List.copyOf(new LinkedHashSet<>(notes));
+                .withFindings(new Findings(null, probes.facts(), probes.untested(), List.of(), List.of())), false,
+                phases, probes.behaviour());
     }
 
     /** What a failure's scenes found, together: the first catalogue entry, each figure, the rest each once. */

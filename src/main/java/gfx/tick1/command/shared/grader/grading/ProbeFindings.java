@@ -150,9 +150,9 @@ final class ProbeFindings {
         return sections.stream().limit(SECTIONS).toList();
     }
 
-    /** The tested facts in one sentence for a row. */
+    /** The tested facts for a row, a sentence each: a limit on the row cuts between findings, never inside one. */
     String sentence() {
-        return capitalised(String.join("; ", facts())) + ".";
+        return String.join(" ", facts().stream().map(fact -> capitalised(fact) + ".").toList());
     }
 
     static String capitalised(String text) {

@@ -6,14 +6,15 @@ import java.util.function.UnaryOperator;
 
 /**
  * What a grade found, kept beside its words for the cohort's tallies and comparisons: the catalogue
- * entry that reproduces a wrong image exactly, the facts of the behaviour comparison (at a failure),
- * the notes (what a pass noted, and what the course's scenes cannot show), each wrong scene's
- * difference figures, and the handout sections it sends the student to reread. The grader makes
+ * entry that reproduces a wrong image exactly, the tested facts of the behaviour comparison (at a
+ * pass too, where the course's scenes do not show them), the notes on what the course's scenes
+ * cannot show, each wrong scene's difference figures, and the handout sections it sends the student
+ * to reread. The grader makes
  * them as it explains each scene; nothing reads them back from the explanation's lines.
  *
  * @param catalogued the first catalogue entry that a wrong image is exactly, or null when none is
- * @param failed     the behaviour comparison's facts, at a failure, each once, in order
- * @param notes      the notes: tested findings noted at a pass, and behaviour the course's scenes cannot show
+ * @param failed     the behaviour comparison's tested facts (the probes a method failed), each once, in order
+ * @param notes      the notes on behaviour the course's scenes cannot show, each once, in order
  * @param figures    each wrong image's difference figures, as "scene N: mean difference ...", in scene order
  * @param reread     the handout sections the explanations name to reread, as "handout section 5 ...", in order
  */

@@ -1,5 +1,7 @@
 package gfx.tick1.command.shared.grader.report;
 
+import gfx.tick1.command.shared.grader.model.FindingText;
+
 /**
  * Text made fit for a cell tick1 writes into a worksheet, and for the one-line reason a page shows.
  * Names and reasons come from students' archives and their code's output, so each is bounded, and
@@ -7,8 +9,8 @@ package gfx.tick1.command.shared.grader.report;
  */
 final class CellText {
 
-    /** The most characters of a cell; a real name or reason is far shorter. */
-    static final int MAX_CELL = 1_000;
+    /** The most characters of a cell: more than a reason the report keeps, escaped; a real name is far shorter. */
+    static final int MAX_CELL = 3_000;
 
     /** The most characters of a reason in a short column (the cohort page's Reason). */
     static final int MAX_SHORT = 160;
@@ -33,7 +35,8 @@ final class CellText {
      * {@code <} and {@code >} written as references, so that what a zip path or an exception held
      * shows as text; a line break becomes a space (HTML shows one as a space anyway), and the
      * terminal's padding of figures ({@code ( 67.838%}) goes, as do the source line and caret a compile error quotes
-     * (whose columns a comment cannot keep). Then bounded and escaped as {@link #cell}.
+     * (whose columns a comment cannot keep). Then bounded, between two findings ({@link FindingText}),
+     * and escaped as {@link #cell}.
      */
     static String comment(String reason) {
         String prose = ReasonText.of(reason).prose();
@@ -47,7 +50,7 @@ final class CellText {
                 default -> out.append(c);
             }
         }
-        return cell(out.toString());
+        return cell(FindingText.fitted(out.toString(), MAX_CELL - 1, CohortOutputs.REST));
     }
 
     /** A reason as one line of prose: runs of white space (line breaks included) as one space, no "( " padding. */

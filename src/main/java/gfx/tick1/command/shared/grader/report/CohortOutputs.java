@@ -4,6 +4,7 @@ import static java.nio.file.LinkOption.NOFOLLOW_LINKS;
 
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.Category;
+import gfx.tick1.command.shared.grader.model.FindingText;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.engine.io.IoErrors;
@@ -26,11 +27,21 @@ public final class CohortOutputs {
     private CohortOutputs() {
     }
 
-    /** The most characters of a reason the report keeps: a few hundred, whatever the student's files held. */
-    static final int MAX_REASON = 500;
-    /** The most characters of one explanation line, and the most lines of one scene's explanation. */
-    static final int MAX_LINE = 300;
+    /**
+     * The most characters of a reason the report keeps, whatever the student's files held: more than
+     * tick1's own words of two findings, so that only a student's text (an exception's message) meets it.
+     */
+    static final int MAX_REASON = 2_000;
+    /** Where the rest of a reason cut at {@link #MAX_REASON} is, in every place that shows the reason. */
+    static final String REST = " (more in feedback.html)";
+    /**
+     * The most characters of one explanation line (one finding: more than tick1's longest), and the
+     * most lines of one scene's explanation.
+     */
+    static final int MAX_LINE = 2_000;
     static final int MAX_LINES = 60;
+    /** How an explanation's line that sends the student to the handout starts. */
+    private static final String REREAD = "reread:";
     /** The most characters of a name or id shown. */
     static final int MAX_NAME = 200;
 
@@ -124,7 +135,8 @@ public final class CohortOutputs {
                     CellText.bounded(scene.name(), MAX_NAME), scene.hidden(), scene.passed(),
                     bounded(scene.explanation()), scene.files())).toList();
             StudentResult.Summary summary = new StudentResult.Summary(result.passed(), result.scenesPassed(),
-                    result.scenesTotal(), bounded(result.diagnosis()), CellText.bounded(result.reason(), MAX_REASON));
+                    result.scenesTotal(), bounded(result.diagnosis()),
+                    FindingText.fitted(result.reason(), MAX_REASON, REST));
             plain.add(new StudentResult(new Submission(folder, CellText.bounded(submission.id(), MAX_NAME),
                     CellText.bounded(submission.fullName(), MAX_NAME), submission.sphere(), submission.renderer(),
                     submission.problem()), summary, scenes, result.time(),
@@ -140,14 +152,21 @@ public final class CohortOutputs {
                 ? new Category.Mistake(CellText.bounded(mistake.label(), MAX_NAME)) : category;
     }
 
+    /** At most {@link #MAX_LINES} lines of an explanation, each bounded; its "reread:" lines are always kept. */
     private static List<String> bounded(List<String> lines) {
+        List<String> reread = lines.stream().filter(line -> line.startsWith(REREAD)).limit(MAX_LINES / 2).toList();
         List<String> kept = new ArrayList<>();
-        for (int i = 0; i < Math.min(lines.size(), MAX_LINES); i++) {
-            kept.add(CellText.bounded(lines.get(i), MAX_LINE));
+        int left = lines.size() - reread.size();
+        for (String line : lines) {
+            if (kept.size() < MAX_LINES - reread.size() && !line.startsWith(REREAD)) {
+                kept.add(CellText.bounded(line, MAX_LINE));
+                left--;
+            }
         }
-        if (lines.size() > MAX_LINES) {
-            kept.add(String.format(java.util.Locale.ROOT, "(and %,d more lines)", lines.size() - MAX_LINES));
+        if (left > 0) {
+            kept.add(String.format(java.util.Locale.ROOT, "(and %,d more lines)", left));
         }
+        reread.forEach(line -> kept.add(CellText.bounded(line, MAX_LINE)));
         return List.copyOf(kept);
     }
 }

@@ -75,7 +75,8 @@ final class FeedbackPage {
      * shortened list of facts, an unsure diagnosis) point, here, to the scenes below.
      */
     static String seeBelow(String prose) {
-        return prose.replace(SEE_THE_FEEDBACK, " (see the scenes below)");
+        return prose.replace(SEE_THE_FEEDBACK, " (see the scenes below)").replace(CohortOutputs.REST,
+                " (more in the scenes below)");
     }
 
     static String html(StudentResult result) {

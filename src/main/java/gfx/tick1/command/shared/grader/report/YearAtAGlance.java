@@ -11,10 +11,11 @@ import java.util.Map;
 import java.util.TreeMap;
 
 /**
- * The index's "The year at a glance": how many students made each catalogued mistake and each
- * finding of the probes (failed and passed apart: a note at a pass is never counted as a failure),
- * the handout sections the feedback sent students to reread, the grades, and the time each
- * submission took to grade in the sandbox.
+ * The index's "The year at a glance": how many students made each catalogued mistake, each tested
+ * finding of the probes and each note on what the course's scenes do not test (the notes in a table
+ * of their own), each counted under Failed or Passed by that student's result; the handout
+ * sections the feedback sent students to reread, the grades, and the time each submission took to
+ * grade in the sandbox.
  */
 final class YearAtAGlance {
 
@@ -35,21 +36,23 @@ final class YearAtAGlance {
     static String html(List<StudentResult> results, List<String> grades) {
         Map<String, Count> mistakes = new TreeMap<>();
         Map<String, Count> findings = new TreeMap<>();
+        Map<String, Count> untested = new TreeMap<>();
         Map<String, Count> sections = new TreeMap<>();
         for (StudentResult result : results) {
             Findings found = result.findings();
             if (found.catalogued() != null) {
                 add(mistakes, found.catalogued().title(), result.passed());
             }
-            found.failed().forEach(fact -> add(findings, fact, false));
-            found.notes().forEach(fact -> add(findings, fact, true));
+            found.failed().forEach(fact -> add(findings, fact, result.passed()));
+            found.notes().forEach(note -> add(untested, note, result.passed()));
             FeedbackPage.rereading(result).forEach(section -> add(sections, section, result.passed()));
         }
         StringBuilder out = new StringBuilder(4096);
         out.append("<h2 id=\"year\">The year at a glance</h2>\n");
         table(out, "Catalogued mistakes: a wrong image one catalogue entry reproduces exactly", "Mistake", mistakes);
-        table(out, "What the probes found: facts of students' intersectionWith and illuminate on tick1's inputs "
-                + "(at a pass, a note on what the course's scenes do not test)", "Finding", findings);
+        table(out, "What the probes found: facts of students' intersectionWith and illuminate on tick1's inputs",
+                "Finding", findings);
+        table(out, "Notes on what the course's scenes do not test: never a reason to fail", "Note", untested);
         table(out, "The handout sections the feedback sent students to reread", "Section", sections);
         grades(out, grades);
         times(out, results);

@@ -1,6 +1,7 @@
 package gfx.tick1.command.shared.grader.vpl;
 
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
+import gfx.tick1.command.shared.grader.model.FindingText;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import java.util.ArrayList;
@@ -18,8 +19,17 @@ public final class VplReport {
 
     /** The most compile errors shown: the first ones matter, and the report stays short. */
     static final int MOST_ERRORS = 5;
-    /** The most lines of one section's text. */
+    /** The most lines of one section's text, or of one finding of a scene's explanation. */
     static final int MOST_LINES = 16;
+    /** The most lines of a scene's explanation shown, each a finding: more than tick1 writes of one scene. */
+    static final int MOST_FINDINGS = 24;
+    /**
+     * The most characters of the verdict's reason: wrapped at a space past half of {@link VplText#WIDTH}, it
+     * fits in {@link #MOST_LINES} lines, so it is cut only between two findings (each is in its scene's section).
+     */
+    static final int MOST_REASON = VplText.WIDTH / 2 * (MOST_LINES - 1);
+    /** Where the rest of a reason cut at {@link #MOST_REASON} is. */
+    static final String REST = " (more below)";
 
     static final String BEGIN = "<|--", END = "--|>", GRADE = "Grade :=>>";
     static final String PASSED = "Tick 1: passed", FAILED = "Tick 1: failed";
@@ -52,7 +62,7 @@ public final class VplReport {
             }
         } else {
             lines.addAll(VplText.quoted(anyHiddenSceneFailed(result.scenes()) ? scenesWrong(result.scenes())
-                    : result.reason(), MOST_LINES));
+                    : FindingText.fitted(result.reason(), MOST_REASON, REST), MOST_LINES));
             lines.addAll(scenes(result.scenes()));
         }
         lines.add(END);
@@ -76,8 +86,16 @@ public final class VplReport {
                 continue;
             }
             lines.add(VplText.title(name + ": failed"));
-            lines.addAll(VplText.quoted(scene.hidden() ? HiddenVerdict.statedBy(scene.explanation()).words()
-                    : String.join("\n", scene.explanation()), MOST_LINES));
+            if (scene.hidden()) {
+                lines.addAll(VplText.quoted(HiddenVerdict.statedBy(scene.explanation()).words(), MOST_LINES));
+            } else {
+                // A line of an explanation is one finding: each is quoted whole, whatever the others' length.
+                scene.explanation().stream().limit(MOST_FINDINGS)
+                        .forEach(line -> lines.addAll(VplText.quoted(line, MOST_LINES)));
+                if (scene.explanation().size() > MOST_FINDINGS) {
+                    lines.add(">[" + (scene.explanation().size() - MOST_FINDINGS) + " more lines not shown]");
+                }
+            }
         }
         return lines;
     }

@@ -159,6 +159,23 @@ class BehaviourCatalogueTest {
     }
 
     /**
+     * A slip of our own that only a graze shows (the distance -b/a where the discriminant is 0, the
+     * 2 forgotten): neither answer the handout allows (our touching point, or the six steps' no
+     * hit), so the note calls it a mistake, never something the handout leaves open, and it is no
+     * tested finding.
+     */
+    @Test
+    void aWrongAnswerAtAGrazeIsAnUntestedMistakeNeverOneTheHandoutLeavesOpen(@TempDir Path folder) throws Exception {
+        ProbeFindings findings = ProbedSolution.correct().sphere("double s = s1 > 0 ? s1 : s2;",
+                "double s = discriminant == 0 ? -b / a : s1 > 0 ? s1 : s2;").findings(folder);
+
+        assertThat(findings.tested()).as("the tested findings").isEmpty();
+        assertThat(findings.untested()).as("the untested notes").singleElement().asString()
+                .startsWith("a mistake not tested by the course's scenes: for a ray that grazes a sphere")
+                .doesNotContain("leave it open");
+    }
+
+    /**
      * A slip the catalogue has no model of (one channel of the specular term takes another's
      * light) is shown by its simplest counterexample, in which only that channel differs, and
      * said to be unrecognised: never named as something it is not.

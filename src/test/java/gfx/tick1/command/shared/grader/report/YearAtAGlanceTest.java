@@ -16,6 +16,9 @@ import org.junit.jupiter.api.Test;
 class YearAtAGlanceTest {
 
     private static final String FACT = "your illuminate gives negative diffuse light when N.L < 0";
+    private static final String UNTESTED = "a mistake not tested by the course's scenes: for a ray that grazes a sphere"
+            + " (from (0, 0, 0) along (0, 0, 1), sphere at (0, 1, 5) of radius 1), your intersectionWith returns"
+            + " a hit at s = 0.2";
 
     private static StudentResult result(String id, boolean passed, List<String> lines, Findings found, long millis) {
         return new StudentResult(new Submission("S" + id + "_" + id + "_assignsubmission_file_", id, "S" + id, null,
@@ -30,16 +33,27 @@ class YearAtAGlanceTest {
                             List.of("handout section 5, Figure 6(b).")), 800),
             result("2", false, List.of("verdict: far root: every pixel matches its render of tick1.xml exactly.",
                     "reread: handout section 4, steps 4 and 5."),
-                    new Findings(Variant.FAR_ROOT, List.of(), List.of(), List.of(),
+                    new Findings(Variant.FAR_ROOT, List.of(), List.of(UNTESTED), List.of(),
                             List.of("handout section 4, steps 4 and 5.")), 2_000),
             result("3", true, List.of("note: " + FACT
                     + " (tick1.xml and the hidden scene do not show this; handout section 5)"),
-                    new Findings(null, List.of(), List.of(FACT), List.of(), List.of()), 70_000));
+                    new Findings(null, List.of(FACT), List.of(), List.of(), List.of()), 70_000));
 
     @Test
-    void aFindingIsCountedAmongTheFailedAndANoteAtAPassAmongThePassed() {
+    void aFindingIsCountedAmongTheFailedAndAFindingAtAPassAmongThePassed() {
         assertThat(YearAtAGlance.html(COHORT, List.of("0.00", "0.00", "1.00")))
                 .as("the findings' row").contains("<tr><td>" + Html.escape(FACT) + "</td><td>1</td><td>1</td></tr>");
+    }
+
+    @Test
+    void anUntestedNoteIsCountedByItsStudentsResultApartFromTheTestedFindings() {
+        String html = YearAtAGlance.html(COHORT, List.of("0.00", "0.00", "1.00"));
+        String row = "<tr><td>" + Html.escape(CellText.bounded(UNTESTED, CellText.MAX_CELL))
+                + "</td><td>1</td><td>0</td></tr>";
+        assertThat(html).as("the untested note's row, under the failed student who had it").contains(row);
+        assertThat(html.indexOf(row)).as("the untested notes' table comes after the tested findings' table")
+                .isGreaterThan(html.indexOf("Notes on what the course's scenes do not test"))
+                .isGreaterThan(html.indexOf("<tr><td>" + Html.escape(FACT)));
     }
 
     @Test

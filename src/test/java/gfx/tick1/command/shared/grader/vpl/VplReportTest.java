@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.model.Category;
+import gfx.tick1.command.shared.grader.model.LongFindings;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -192,5 +193,33 @@ class VplReportTest {
     @Test
     void textIsCleanedOfControlCharactersAndLoneCarriageReturns() {
         assertThat(VplText.clean("a\rb\r\nc\u0007d\u202Ee\tf")).as("cleaned").isEqualTo("ab\ncde f");
+    }
+
+    /** The text of a comment's quoted lines, joined as they were before the report wrapped them. */
+    private static String unwrapped(String comment) {
+        return String.join("", VplParser.lines(comment).stream().filter(line -> line.kind() == Kind.PREFORMATTED)
+                .map(VplParser.Line::text).toList());
+    }
+
+    @Test
+    void everyFindingAndTheRereadLineOfALongExplanationReachTheStudent() {
+        String comment = VplParser.proposedComment(received(VplReport.of(result(false, "differs from ours",
+                LongFindings.REASON, failed("tick1.xml", false, "98343 pixels differ", "behaviour: "
+                        + LongFindings.INTERSECTION, "behaviour: " + LongFindings.ILLUMINATE, LongFindings.REREAD)),
+                List.of(), TEN)));
+
+        assertThat(unwrapped(comment)).as("the comment, unwrapped")
+                .contains("behaviour: " + LongFindings.INTERSECTION, "behaviour: " + LongFindings.ILLUMINATE,
+                        LongFindings.REREAD).doesNotContain("not shown");
+    }
+
+    @Test
+    void aLongReasonIsCutAfterAWholeFindingAndSaysTheRestIsBelow() {
+        String comment = VplParser.proposedComment(received(VplReport.of(result(false, "differs from ours",
+                LongFindings.REASON, failed("tick1.xml", false, "98343 pixels differ")), List.of(), TEN)));
+
+        assertThat(unwrapped(comment.substring(0, comment.indexOf("-tick1.xml: failed")))).as("the reason's section")
+                .isEqualTo(LongFindings.HEAD + " " + LongFindings.sentence(LongFindings.INTERSECTION)
+                        + " (more below)");
     }
 }
