@@ -49,9 +49,11 @@ public final class ResultStore {
     private static final String WRITING = ".writing-";
     /**
      * Changes when the way a result is stored or keyed changes, so that older results are graded again
-     * (2: what the grade found is stored beside its words; 3: the sandbox's rules are part of the key).
+     * (2: what the grade found is stored beside its words; 3: the sandbox's rules are part of the key; 4: a
+     * pass's tested facts are stored apart from its notes on what the scenes do not test, and reasons are a
+     * sentence a finding).
      */
-    private static final String FORMAT = "tick1 grade result 3";
+    private static final String FORMAT = "tick1 grade result 4";
 
     private final Path folder;
 
