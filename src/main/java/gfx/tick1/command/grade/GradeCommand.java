@@ -120,8 +120,9 @@ public final class GradeCommand implements Callable<Integer> {
     private String gradeRange;
 
     @Option(names = "--no-sandbox",
-            description = "Run the student's code without the sandbox, with your permissions, your files and the "
-                    + "network: only for code you trust, or where bubblewrap cannot run.")
+            description = "Run the student's code without the sandbox, in a Java process limited only in time and "
+                    + "heap, with your permissions, your files and the network: for your own code where bubblewrap "
+                    + "cannot run (macOS, Windows), or code you trust. Not with --format vpl.")
     private boolean noSandbox;
 
     @Override
@@ -142,7 +143,8 @@ public final class GradeCommand implements Callable<Integer> {
     Integer call(PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
         Sandbox sandbox;
         if (noSandbox) {
-            err.println("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions; it can "
+            err.println("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions, without "
+                    + "a sandbox, in a Java process limited only in time (--time-limit) and heap (--memory); it can "
                     + "read, change and send anything you can");
             sandbox = Sandbox.unconfined();
         } else {

@@ -408,6 +408,63 @@ class DiffCommandTest {
         }
     }
 
+    /** Runs {@code diff} with these arguments as on a machine without bubblewrap (macOS, Windows). */
+    private static CliRun withoutBubblewrap(String... args) {
+        String bwrap = System.getProperty("tick1.grade.bwrap");
+        System.setProperty("tick1.grade.bwrap", "/nonexistent/bwrap");
+        try {
+            return CliRun.of(args);
+        } finally {
+            if (bwrap == null) {
+                System.clearProperty("tick1.grade.bwrap");
+            } else {
+                System.setProperty("tick1.grade.bwrap", bwrap);
+            }
+        }
+    }
+
+    @Test
+    void withoutTheSandboxTheLineThatSaysBehaviourCouldNotBeCheckedNamesNoSandbox() throws IOException {
+        CliRun run = withoutBubblewrap("diff", write("Renderer.java", StarterKit.source("Renderer")).toString());
+        assertThat(hints(run)).as(run.transcript()).singleElement().asString().contains("--no-sandbox");
+    }
+
+    private Path correct(String className) throws IOException {
+        return write(className + ".java",
+                Files.readString(Path.of("src/test/resources/students/correct/" + className + ".java")));
+    }
+
+    @Test
+    void withNoSandboxAWrongMethodGetsItsCounterexampleWhereThereIsNoBubblewrap() throws IOException {
+        Path sphere = write("Sphere.java", Files.readString(Path.of("src/test/resources/students/correct/Sphere.java"))
+                .replace("double s = s1 > 0 ? s1 : s2;", "double s = s2;"));
+        CliRun run = withoutBubblewrap("diff", "--no-sandbox", sphere.toString(), correct("Renderer").toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(run.out()).as(run.transcript()).startsWith("your intersectionWith gives the answers of \""
+                + Variant.FAR_ROOT.title() + "\" on all ").contains("; for example, for ");
+        assertThat(hints(run)).as(run.transcript()).contains("hint: reread handout " + Variant.FAR_ROOT.reread() + ".");
+    }
+
+    @Test
+    void withNoSandboxACorrectSolutionBehavesAsOursWhereThereIsNoBubblewrap() throws IOException {
+        WrittenStyles.Style style = WrittenStyles.all().values().iterator().next();
+        CliRun run = withoutBubblewrap("diff", "--no-sandbox", write("Sphere.java", style.sphere()).toString(),
+                write("Renderer.java", style.renderer()).toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
+        assertThat(run.out().lines().limit(2)).as(run.transcript()).hasSize(2).allMatch(line -> line.startsWith("your ")
+                && line.contains(" behaves as ours on "));
+    }
+
+    @Test
+    void withNoSandboxOneLineSaysTheMethodsRanUnsandboxedAndHowTheyWereLimited() throws IOException {
+        WrittenStyles.Style style = WrittenStyles.all().values().iterator().next();
+        CliRun run = withoutBubblewrap("diff", "--no-sandbox", write("Sphere.java", style.sphere()).toString(),
+                write("Renderer.java", style.renderer()).toString());
+        assertThat(run.err().lines()).as(run.transcript()).singleElement().asString()
+                .startsWith("tick1 diff: note: --no-sandbox: your methods ran without a sandbox")
+                .contains("time", "heap");
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("mistakes")
     void aMistakeExitsOneNamesItsMethodAndGivesItsProbesHints(Variant mistake, String className, String method,

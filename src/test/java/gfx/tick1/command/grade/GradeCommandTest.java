@@ -366,7 +366,8 @@ class GradeCommandTest {
         CliRun run = grade(StudentSolution.correct(), "--no-sandbox");
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
         assertThat(run.err().lines()).singleElement().asString()
-                .startsWith("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions");
+                .startsWith("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions")
+                .as("the one line says what still limits the code").contains("limited only in time", "heap");
     }
 
     @Test

@@ -535,6 +535,21 @@ public final class Sandbox {
     }
 
     /**
+     * A process for {@link #wrap}'s command in this sandbox: as {@link #processFor} makes one; or,
+     * with no sandbox, in the grader's environment (the code is the user's own, and on Windows Java
+     * needs some of it, SystemRoot among them) but for the variables that would give the harness's
+     * JVM options of their own and so change its limits.
+     */
+    ProcessBuilder process(List<String> wrappedCommand) {
+        if (confined) {
+            return processFor(wrappedCommand);
+        }
+        ProcessBuilder builder = new ProcessBuilder(wrappedCommand);
+        builder.environment().keySet().removeAll(List.of("JAVA_TOOL_OPTIONS", "_JAVA_OPTIONS", "JDK_JAVA_OPTIONS"));
+        return builder;
+    }
+
+    /**
      * What a control group adds to one run in the sandbox, in seconds: the median of {@code runs}
      * times making, limiting and removing one, plus the median extra time of starting a program
      * through the shell that joins it; NaN where no group can be made. (The kernel's accounting
