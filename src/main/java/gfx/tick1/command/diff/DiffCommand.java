@@ -50,7 +50,7 @@ import picocli.CommandLine;
                     + "grade uses, and one line each says that it behaves as ours or where it does not; exit 0 when "
                     + "they behave as ours and nothing else differs. Without the sandbox a line says behaviour could "
                     + "not be checked, unless --no-sandbox runs your methods without it. A file is recognised by "
-                    + "its class. Colour on a terminal only."})
+                    + "its class. Colour on a terminal only (not with NO_COLOR set, nor TERM=dumb)."})
 public final class DiffCommand implements Callable<Integer> {
 
     @ExitStatus("nothing differs in meaning, or only the methods that behave as ours on every input")
@@ -125,7 +125,8 @@ public final class DiffCommand implements Callable<Integer> {
                         + "compare; expected code nested at most a few thousand deep");
             }
         }
-        Colours colours = new Colours(CommandLine.Help.Ansi.AUTO.enabled());
+        Colours colours = new Colours(Colours.wanted(System.console() != null, System.getenv(),
+                CommandLine.Help.Ansi.AUTO.enabled()));
         List<String> report = new ArrayList<>();
         boolean onlyMethodsDiffer = true;
         for (int i = 0; i < theirs.size(); i++) {
@@ -250,8 +251,10 @@ public final class DiffCommand implements Callable<Integer> {
         return lines;
     }
 
+    /** The file's text, without the byte-order mark Windows editors may put first (javac refuses one). */
     private static String read(Path file) throws IOException {
-        return Files.readString(file, StandardCharsets.UTF_8);
+        String text = Files.readString(file, StandardCharsets.UTF_8);
+        return text.startsWith("\uFEFF") ? text.substring(1) : text;
     }
 
     /**
@@ -282,6 +285,17 @@ public final class DiffCommand implements Callable<Integer> {
 
     /** ANSI colours for a terminal, or the text as it is. */
     record Colours(boolean on) {
+        /**
+         * Whether to colour: only on a console ({@code console}: standard output is not redirected)
+         * that can show colours ({@code ansi}: picocli's guess, which knows the Windows consoles that
+         * cannot), unless the environment {@code env} asks for none: NO_COLOR set (no-color.org), or
+         * TERM=dumb (Emacs's shell, some IDEs' consoles).
+         */
+        static boolean wanted(boolean console, Map<String, String> env, boolean ansi) {
+            String noColour = env.get("NO_COLOR");
+            return console && ansi && (noColour == null || noColour.isEmpty()) && !"dumb".equals(env.get("TERM"));
+        }
+
         String red(String text) {
             return paint("31", text);
         }

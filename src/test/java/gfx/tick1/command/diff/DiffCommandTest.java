@@ -465,6 +465,49 @@ class DiffCommandTest {
                 .contains("time", "heap");
     }
 
+    /**
+     * Files as a Windows editor may save them (a UTF-8 byte-order mark, CRLF line ends), in a folder whose
+     * name has spaces and a letter beyond ASCII, are compared as the same files saved plainly, to the word.
+     */
+    @Test
+    void filesSavedOnWindowsInAFolderNamedWithSpacesAndAnEAreDiffedAsThePlainOnes() throws IOException {
+        gfx.tick1.FileNames.assumeTheyCanHold("Zoë");
+        String sphere = Files.readString(Path.of("src/test/resources/students/correct/Sphere.java"))
+                .replace("double s = s1 > 0 ? s1 : s2;", "double s = s2;");
+        String renderer = Files.readString(Path.of("src/test/resources/students/correct/Renderer.java"));
+        Path plain = Files.createDirectories(dir.resolve("plain"));
+        Path windows = Files.createDirectories(dir.resolve("Tick 1 (copy) Zoë"));
+        CliRun asPlain = withoutBubblewrap("diff", "--no-sandbox",
+                Files.writeString(plain.resolve("Sphere.java"), sphere).toString(),
+                Files.writeString(plain.resolve("Renderer.java"), renderer).toString());
+        CliRun asSaved = withoutBubblewrap("diff", "--no-sandbox",
+                Files.writeString(windows.resolve("Sphere.java"), savedOnWindows(sphere)).toString(),
+                Files.writeString(windows.resolve("Renderer.java"), savedOnWindows(renderer)).toString());
+        assertThat(asPlain.out()).as(asPlain.transcript()).contains("@@ " + INTERSECTION + " @@", "for example");
+        assertThat(asSaved.status()).as(asSaved.transcript()).isEqualTo(asPlain.status());
+        assertThat(asSaved.out().replace(windows.toString(), "FOLDER")).as(asSaved.transcript())
+                .isEqualTo(asPlain.out().replace(plain.toString(), "FOLDER"));
+    }
+
+    /** A file as a Windows editor may save it: a UTF-8 byte-order mark, then CRLF line ends. */
+    private static String savedOnWindows(String source) {
+        return "\uFEFF" + source.replace("\r\n", "\n").replace("\n", "\r\n");
+    }
+
+    @Test
+    void coloursAreOnOnlyOnAConsoleThatCanShowThemAndNotWithNoColourNorOnADumbTerminal() {
+        java.util.Map<String, String> xterm = java.util.Map.of("TERM", "xterm-256color");
+        assertThat(DiffCommand.Colours.wanted(true, xterm, true)).as("a terminal").isTrue();
+        assertThat(DiffCommand.Colours.wanted(false, xterm, true)).as("output redirected").isFalse();
+        assertThat(DiffCommand.Colours.wanted(true, xterm, false)).as("a console without ANSI colours").isFalse();
+        assertThat(DiffCommand.Colours.wanted(true, java.util.Map.of("TERM", "xterm", "NO_COLOR", "1"), true))
+                .as("NO_COLOR").isFalse();
+        assertThat(DiffCommand.Colours.wanted(true, java.util.Map.of("TERM", "xterm", "NO_COLOR", ""), true))
+                .as("NO_COLOR empty, which no-color.org says is not set").isTrue();
+        assertThat(DiffCommand.Colours.wanted(true, java.util.Map.of("TERM", "dumb"), true)).as("TERM=dumb")
+                .isFalse();
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("mistakes")
     void aMistakeExitsOneNamesItsMethodAndGivesItsProbesHints(Variant mistake, String className, String method,

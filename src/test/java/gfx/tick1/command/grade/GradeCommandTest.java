@@ -370,6 +370,49 @@ class GradeCommandTest {
                 .as("the one line says what still limits the code").contains("limited only in time", "heap");
     }
 
+    /** A file as a Windows editor may save it: a UTF-8 byte-order mark, then CRLF line ends. */
+    private static String savedOnWindows(String source) {
+        return "\uFEFF" + source.replace("\r\n", "\n").replace("\n", "\r\n");
+    }
+
+    /**
+     * A solution with a mistake, as a student on Windows keeps it (saved by a Windows editor, in a folder
+     * whose name has spaces and a letter beyond ASCII), is graded as the same files saved plainly, to
+     * the word: with the sandbox where it can be made, and with --no-sandbox anywhere.
+     */
+    @org.junit.jupiter.params.ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"in the sandbox", "--no-sandbox"})
+    void aSolutionSavedOnWindowsInAFolderNamedWithSpacesAndAnEIsGradedAsThePlainOne(String how)
+            throws IOException, InterruptedException {
+        gfx.tick1.FileNames.assumeTheyCanHold("Zoë");
+        boolean sandboxed = !how.startsWith("--");
+        if (sandboxed) {
+            try {
+                gfx.tick1.command.shared.grader.sandbox.Sandbox.confined();
+            } catch (gfx.tick1.command.shared.grader.sandbox.Sandbox.Unavailable e) {
+                org.junit.jupiter.api.Assumptions.abort("the sandbox cannot be made here: " + e.getMessage());
+            }
+        }
+        StudentSolution mistake = StudentSolution.correct().editSphere(NEAR_ROOT, "double s = s2;");
+        Path plain = dir.resolve("plain");
+        Path windows = dir.resolve("Tick 1 (copy) Zoë");
+        StudentSolution saved = new StudentSolution(savedOnWindows(mistake.sphere()),
+                savedOnWindows(mistake.renderer()));
+        assertThat(saved.sphere()).startsWith("\uFEFF").contains("\r\n");
+        String[] options = sandboxed ? new String[0] : new String[] {"--no-sandbox"};
+        CliRun asPlain = grade(plain, mistake, options);
+        CliRun asSaved = grade(windows, saved, options);
+        assertThat(asPlain.status()).as(asPlain.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(asPlain.out()).as(asPlain.transcript()).contains("tick1.xml: FAIL");
+        assertThat(asSaved.status()).as(asSaved.transcript()).isEqualTo(asPlain.status());
+        assertThat(asSaved.out().replace(windows.toString(), "FOLDER")).as(asSaved.transcript())
+                .isEqualTo(asPlain.out().replace(plain.toString(), "FOLDER"));
+        assertThat(Files.list(windows.resolve("report")).map(file -> file.getFileName().toString()).sorted().toList())
+                .as("the images of the failing scene, in the report folder of that name")
+                .isEqualTo(Files.list(plain.resolve("report")).map(file -> file.getFileName().toString()).sorted()
+                        .toList()).isNotEmpty();
+    }
+
     @Test
     void withoutBubblewrapTheGradeRefusesInOneLineNamingThePackage() throws IOException {
         String property = "tick1.grade.bwrap";
