@@ -201,10 +201,11 @@ class CommandLineHelpTest {
     }
 
     @Test
-    void aMissingDefaultSceneSaysHowToNameOne() {
+    void aMissingDefaultSceneSaysToBeginWithTheStarterKitOrToNameOne() {
         CliRun run = CliRun.of("-q", "-o", "-");
         assertThat(run.status()).as(run.transcript()).isEqualTo(RenderCommand.EXIT_BAD_SCENE);
-        assertThat(run.err()).isEqualTo("tick1: basic_scene.xml: no such file (give a scene with -i SCENE.xml; see "
+        assertThat(run.err()).isEqualTo("tick1: basic_scene.xml: no such file (to begin, tick1 starter writes the "
+                + "starter kit and its basic_scene.xml into tick1/; or give a scene with -i SCENE.xml; see "
                 + "tick1 --help)" + System.lineSeparator());
     }
 

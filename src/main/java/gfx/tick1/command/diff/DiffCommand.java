@@ -2,6 +2,7 @@ package gfx.tick1.command.diff;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
+import gfx.tick1.command.shared.grader.grading.CodeProbe;
 import gfx.tick1.command.shared.javacode.JavaMembers;
 import gfx.tick1.command.shared.javacode.ReferenceMembers;
 import gfx.tick1.command.shared.javacode.SameMeaning;
@@ -23,6 +24,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.FutureTask;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine;
@@ -47,7 +49,8 @@ import picocli.CommandLine;
                     + "files compile, your intersectionWith and illuminate are first run in the sandbox on the inputs "
                     + "grade uses, and one line each says that it behaves as ours or where it does not; exit 0 when "
                     + "they behave as ours and nothing else differs. Without the sandbox a line says behaviour could "
-                    + "not be checked. A file is recognised by its class. Colour on a terminal only."})
+                    + "not be checked, unless --no-sandbox runs your methods without it. A file is recognised by "
+                    + "its class. Colour on a terminal only (not with NO_COLOR set, nor TERM=dumb)."})
 public final class DiffCommand implements Callable<Integer> {
 
     @ExitStatus("nothing differs in meaning, or only the methods that behave as ours on every input")
@@ -64,6 +67,12 @@ public final class DiffCommand implements Callable<Integer> {
 
     @Parameters(arity = "1..2", paramLabel = "FILE.java", description = "Your Sphere.java and/or Renderer.java.")
     private List<Path> files;
+
+    @Option(names = "--no-sandbox",
+            description = "The code is yours: run your methods without the sandbox, where bubblewrap is missing or "
+                    + "cannot run (macOS, Windows), in a Java process limited only in time and heap, with your "
+                    + "permissions.")
+    private boolean noSandbox;
 
     /**
      * The stack of the thread that parses and compares: both recurse through the syntax tree, so
@@ -116,7 +125,8 @@ public final class DiffCommand implements Callable<Integer> {
                         + "compare; expected code nested at most a few thousand deep");
             }
         }
-        Colours colours = new Colours(CommandLine.Help.Ansi.AUTO.enabled());
+        Colours colours = new Colours(Colours.wanted(System.console() != null, System.getenv(),
+                CommandLine.Help.Ansi.AUTO.enabled()));
         List<String> report = new ArrayList<>();
         boolean onlyMethodsDiffer = true;
         for (int i = 0; i < theirs.size(); i++) {
@@ -182,7 +192,14 @@ public final class DiffCommand implements Callable<Integer> {
             starter.put(className, StarterKit.source(className));
         }
         try {
-            return Hints.of(given, starter);
+            Hints.Said said = Hints.of(given, starter, noSandbox);
+            if (noSandbox && said.ran()) {
+                PrintWriter err = spec.commandLine().getErr();
+                err.println("tick1 diff: note: --no-sandbox: your methods ran without a sandbox, in "
+                        + CodeProbe.LIMITS);
+                err.flush();
+            }
+            return said;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             out.println(colours.yellow("behaviour could not be checked: stopped before your methods had run"));
@@ -249,8 +266,10 @@ public final class DiffCommand implements Callable<Integer> {
         return lines;
     }
 
+    /** The file's text, without the byte-order mark Windows editors may put first (javac refuses one). */
     private static String read(Path file) throws IOException {
-        return Files.readString(file, StandardCharsets.UTF_8);
+        String text = Files.readString(file, StandardCharsets.UTF_8);
+        return text.startsWith("\uFEFF") ? text.substring(1) : text;
     }
 
     /**
@@ -281,6 +300,17 @@ public final class DiffCommand implements Callable<Integer> {
 
     /** ANSI colours for a terminal, or the text as it is. */
     record Colours(boolean on) {
+        /**
+         * Whether to colour: only on a console ({@code console}: standard output is not redirected)
+         * that can show colours ({@code ansi}: picocli's guess, which knows the Windows consoles that
+         * cannot), unless the environment {@code env} asks for none: NO_COLOR set (no-color.org), or
+         * TERM=dumb (Emacs's shell, some IDEs' consoles).
+         */
+        static boolean wanted(boolean console, Map<String, String> env, boolean ansi) {
+            String noColour = env.get("NO_COLOR");
+            return console && ansi && (noColour == null || noColour.isEmpty()) && !"dumb".equals(env.get("TERM"));
+        }
+
         String red(String text) {
             return paint("31", text);
         }

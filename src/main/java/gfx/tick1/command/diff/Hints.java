@@ -12,26 +12,31 @@ import java.util.Map;
  * method is not reported). For each given file's method, one line first: "behaves as ours on N
  * inputs", or what differs; after the diff, the notes on what the course's scenes cannot show and
  * the hints of what to reread. When the methods cannot run (no sandbox, the files do not
- * compile), one line says that behaviour could not be checked.
+ * compile), one line says that behaviour could not be checked. With {@code --no-sandbox} they run
+ * without the sandbox.
  */
 final class Hints {
 
-    /** The lines before the diff, the lines after it, and whether the methods behave as ours. */
-    record Said(List<String> first, List<String> after, boolean behavesAsOurs) {
+    /** The lines before the diff, the lines after it, whether the methods ran, and whether they behave as ours. */
+    record Said(List<String> first, List<String> after, boolean ran, boolean behavesAsOurs) {
     }
 
     private Hints() {
     }
 
-    /** What to say of {@code theirs} (class name to source), with {@code starter} for the classes not given. */
-    static Said of(Map<String, String> theirs, Map<String, String> starter) throws InterruptedException {
+    /**
+     * What to say of {@code theirs} (class name to source), with {@code starter} for the classes not
+     * given; {@code unsandboxed} runs the methods without the sandbox ({@code --no-sandbox}).
+     */
+    static Said of(Map<String, String> theirs, Map<String, String> starter, boolean unsandboxed)
+            throws InterruptedException {
         String sphere = theirs.getOrDefault("Sphere", starter.get("Sphere"));
         String renderer = theirs.getOrDefault("Renderer", starter.get("Renderer"));
-        CodeProbe.Lines hints = CodeProbe.probe(sphere, renderer, List.copyOf(theirs.keySet()));
+        CodeProbe.Lines hints = CodeProbe.probe(sphere, renderer, List.copyOf(theirs.keySet()), unsandboxed);
         List<String> first = new ArrayList<>(hints.behaviour());
         if (hints.whyNone() != null) {
             first.add(hints.whyNone());
         }
-        return new Said(first, hints.hints(), hints.behavesAsOurs());
+        return new Said(first, hints.hints(), hints.whyNone() == null, hints.behavesAsOurs());
     }
 }

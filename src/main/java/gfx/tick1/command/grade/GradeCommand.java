@@ -125,8 +125,9 @@ public final class GradeCommand implements Callable<Integer> {
     private String gradeRange;
 
     @Option(names = "--no-sandbox",
-            description = "Run the student's code without the sandbox, with your permissions, your files and the "
-                    + "network: only for code you trust, or where bubblewrap cannot run.")
+            description = "Run the student's code without the sandbox, in a Java process limited only in time and "
+                    + "heap, with your permissions, your files and the network: for your own code where bubblewrap "
+                    + "cannot run (macOS, Windows), or code you trust. Not with --format vpl.")
     private boolean noSandbox;
 
     @Override
@@ -195,7 +196,8 @@ public final class GradeCommand implements Callable<Integer> {
     /** No sandbox, with --no-sandbox (said at once, before the student's code runs), or bubblewrap's. */
     private Sandbox sandbox(PrintWriter err) throws InterruptedException {
         if (noSandbox) {
-            err.println("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions; it can "
+            err.println("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions, without "
+                    + "a sandbox, in a Java process limited only in time (--time-limit) and heap (--memory); it can "
                     + "read, change and send anything you can");
             return Sandbox.unconfined();
         }
@@ -258,6 +260,10 @@ public final class GradeCommand implements Callable<Integer> {
     private String checkOptions() {
         if (target == null) {
             return "give --sphere and --renderer (one student), or --submissions (a cohort)";
+        }
+        if (noSandbox && target.cohort != null) {
+            return "--submissions never runs students' code without the sandbox: leave out --no-sandbox, which "
+                    + "is for one student's code that is yours";
         }
         int jobs = jobs();
         double maxGrade = maxGrade() == null ? 1 : maxGrade();

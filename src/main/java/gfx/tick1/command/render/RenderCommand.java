@@ -3,6 +3,7 @@ package gfx.tick1.command.render;
 import gfx.tick1.command.shared.cli.Version;
 import gfx.tick1.command.shared.cli.ExitStatus;
 import gfx.tick1.command.shared.cli.ExitStatuses;
+import gfx.tick1.command.shared.cli.Invocation;
 import gfx.tick1.engine.image.ImageFormat;
 import gfx.tick1.engine.image.PngOutput;
 import gfx.tick1.engine.io.IoErrors;
@@ -232,7 +233,10 @@ public final class RenderCommand implements Callable<Integer> {
             err.println("tick1: " + input + ": not a valid file name");
         } catch (SceneException e) {
             boolean defaultSceneMissing = inputIsTheDefault() && !Files.exists(Path.of(input));
-            String hint = defaultSceneMissing ? " (give a scene with -i SCENE.xml; see tick1 --help)" : "";
+            // Most often a first run in an empty folder: the kit comes first, and it has the scene.
+            String tick1 = Invocation.command();
+            String hint = defaultSceneMissing ? " (to begin, " + tick1 + " starter writes the starter kit and its "
+                    + "basic_scene.xml into tick1/; or give a scene with -i SCENE.xml; see " + tick1 + " --help)" : "";
             err.println("tick1: " + e.getMessage() + hint);
         }
         return false;

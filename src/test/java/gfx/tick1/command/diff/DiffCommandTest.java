@@ -442,6 +442,106 @@ class DiffCommandTest {
                 .contains(RefusedNamespaces.WHAT_BWRAP_SAYS, "user namespaces").doesNotContain("install");
     }
 
+    /** Runs {@code diff} with these arguments as on a machine without bubblewrap (macOS, Windows). */
+    private static CliRun withoutBubblewrap(String... args) {
+        String bwrap = System.getProperty("tick1.grade.bwrap");
+        System.setProperty("tick1.grade.bwrap", "/nonexistent/bwrap");
+        try {
+            return CliRun.of(args);
+        } finally {
+            if (bwrap == null) {
+                System.clearProperty("tick1.grade.bwrap");
+            } else {
+                System.setProperty("tick1.grade.bwrap", bwrap);
+            }
+        }
+    }
+
+    @Test
+    void withoutTheSandboxTheLineThatSaysBehaviourCouldNotBeCheckedNamesNoSandbox() throws IOException {
+        CliRun run = withoutBubblewrap("diff", write("Renderer.java", StarterKit.source("Renderer")).toString());
+        assertThat(hints(run)).as(run.transcript()).singleElement().asString().contains("--no-sandbox");
+    }
+
+    private Path correct(String className) throws IOException {
+        return write(className + ".java",
+                Files.readString(Path.of("src/test/resources/students/correct/" + className + ".java")));
+    }
+
+    @Test
+    void withNoSandboxAWrongMethodGetsItsCounterexampleWhereThereIsNoBubblewrap() throws IOException {
+        Path sphere = write("Sphere.java", Files.readString(Path.of("src/test/resources/students/correct/Sphere.java"))
+                .replace("double s = s1 > 0 ? s1 : s2;", "double s = s2;"));
+        CliRun run = withoutBubblewrap("diff", "--no-sandbox", sphere.toString(), correct("Renderer").toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(run.out()).as(run.transcript()).startsWith("your intersectionWith gives the answers of \""
+                + Variant.FAR_ROOT.title() + "\" on all ").contains("; for example, for ");
+        assertThat(hints(run)).as(run.transcript()).contains("hint: reread handout " + Variant.FAR_ROOT.reread() + ".");
+    }
+
+    @Test
+    void withNoSandboxACorrectSolutionBehavesAsOursWhereThereIsNoBubblewrap() throws IOException {
+        WrittenStyles.Style style = WrittenStyles.all().values().iterator().next();
+        CliRun run = withoutBubblewrap("diff", "--no-sandbox", write("Sphere.java", style.sphere()).toString(),
+                write("Renderer.java", style.renderer()).toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
+        assertThat(run.out().lines().limit(2)).as(run.transcript()).hasSize(2).allMatch(line -> line.startsWith("your ")
+                && line.contains(" behaves as ours on "));
+    }
+
+    @Test
+    void withNoSandboxOneLineSaysTheMethodsRanUnsandboxedAndHowTheyWereLimited() throws IOException {
+        WrittenStyles.Style style = WrittenStyles.all().values().iterator().next();
+        CliRun run = withoutBubblewrap("diff", "--no-sandbox", write("Sphere.java", style.sphere()).toString(),
+                write("Renderer.java", style.renderer()).toString());
+        assertThat(run.err().lines()).as(run.transcript()).singleElement().asString()
+                .startsWith("tick1 diff: note: --no-sandbox: your methods ran without a sandbox")
+                .contains("time", "heap");
+    }
+
+    /**
+     * Files as a Windows editor may save them (a UTF-8 byte-order mark, CRLF line ends), in a folder whose
+     * name has spaces and a letter beyond ASCII, are compared as the same files saved plainly, to the word.
+     */
+    @Test
+    void filesSavedOnWindowsInAFolderNamedWithSpacesAndAnEAreDiffedAsThePlainOnes() throws IOException {
+        gfx.tick1.FileNames.assumeTheyCanHold("Zoë");
+        String sphere = Files.readString(Path.of("src/test/resources/students/correct/Sphere.java"))
+                .replace("double s = s1 > 0 ? s1 : s2;", "double s = s2;");
+        String renderer = Files.readString(Path.of("src/test/resources/students/correct/Renderer.java"));
+        Path plain = Files.createDirectories(dir.resolve("plain"));
+        Path windows = Files.createDirectories(dir.resolve("Tick 1 (copy) Zoë"));
+        CliRun asPlain = withoutBubblewrap("diff", "--no-sandbox",
+                Files.writeString(plain.resolve("Sphere.java"), sphere).toString(),
+                Files.writeString(plain.resolve("Renderer.java"), renderer).toString());
+        CliRun asSaved = withoutBubblewrap("diff", "--no-sandbox",
+                Files.writeString(windows.resolve("Sphere.java"), savedOnWindows(sphere)).toString(),
+                Files.writeString(windows.resolve("Renderer.java"), savedOnWindows(renderer)).toString());
+        assertThat(asPlain.out()).as(asPlain.transcript()).contains("@@ " + INTERSECTION + " @@", "for example");
+        assertThat(asSaved.status()).as(asSaved.transcript()).isEqualTo(asPlain.status());
+        assertThat(asSaved.out().replace(windows.toString(), "FOLDER")).as(asSaved.transcript())
+                .isEqualTo(asPlain.out().replace(plain.toString(), "FOLDER"));
+    }
+
+    /** A file as a Windows editor may save it: a UTF-8 byte-order mark, then CRLF line ends. */
+    private static String savedOnWindows(String source) {
+        return "\uFEFF" + source.replace("\r\n", "\n").replace("\n", "\r\n");
+    }
+
+    @Test
+    void coloursAreOnOnlyOnAConsoleThatCanShowThemAndNotWithNoColourNorOnADumbTerminal() {
+        java.util.Map<String, String> xterm = java.util.Map.of("TERM", "xterm-256color");
+        assertThat(DiffCommand.Colours.wanted(true, xterm, true)).as("a terminal").isTrue();
+        assertThat(DiffCommand.Colours.wanted(false, xterm, true)).as("output redirected").isFalse();
+        assertThat(DiffCommand.Colours.wanted(true, xterm, false)).as("a console without ANSI colours").isFalse();
+        assertThat(DiffCommand.Colours.wanted(true, java.util.Map.of("TERM", "xterm", "NO_COLOR", "1"), true))
+                .as("NO_COLOR").isFalse();
+        assertThat(DiffCommand.Colours.wanted(true, java.util.Map.of("TERM", "xterm", "NO_COLOR", ""), true))
+                .as("NO_COLOR empty, which no-color.org says is not set").isTrue();
+        assertThat(DiffCommand.Colours.wanted(true, java.util.Map.of("TERM", "dumb"), true)).as("TERM=dumb")
+                .isFalse();
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("mistakes")
     void aMistakeExitsOneNamesItsMethodAndGivesItsProbesHints(Variant mistake, String className, String method,

@@ -372,7 +372,51 @@ class GradeCommandTest {
         CliRun run = grade(StudentSolution.correct(), "--no-sandbox");
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
         assertThat(run.err().lines()).singleElement().asString()
-                .startsWith("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions");
+                .startsWith("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions")
+                .as("the one line says what still limits the code").contains("limited only in time", "heap");
+    }
+
+    /** A file as a Windows editor may save it: a UTF-8 byte-order mark, then CRLF line ends. */
+    private static String savedOnWindows(String source) {
+        return "\uFEFF" + source.replace("\r\n", "\n").replace("\n", "\r\n");
+    }
+
+    /**
+     * A solution with a mistake, as a student on Windows keeps it (saved by a Windows editor, in a folder
+     * whose name has spaces and a letter beyond ASCII), is graded as the same files saved plainly, to
+     * the word: with the sandbox where it can be made, and with --no-sandbox anywhere.
+     */
+    @org.junit.jupiter.params.ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"in the sandbox", "--no-sandbox"})
+    void aSolutionSavedOnWindowsInAFolderNamedWithSpacesAndAnEIsGradedAsThePlainOne(String how)
+            throws IOException, InterruptedException {
+        gfx.tick1.FileNames.assumeTheyCanHold("Zoë");
+        boolean sandboxed = !how.startsWith("--");
+        if (sandboxed) {
+            try {
+                gfx.tick1.command.shared.grader.sandbox.Sandbox.confined();
+            } catch (gfx.tick1.command.shared.grader.sandbox.Sandbox.Unavailable e) {
+                org.junit.jupiter.api.Assumptions.abort("the sandbox cannot be made here: " + e.getMessage());
+            }
+        }
+        StudentSolution mistake = StudentSolution.correct().editSphere(NEAR_ROOT, "double s = s2;");
+        Path plain = dir.resolve("plain");
+        Path windows = dir.resolve("Tick 1 (copy) Zoë");
+        StudentSolution saved = new StudentSolution(savedOnWindows(mistake.sphere()),
+                savedOnWindows(mistake.renderer()));
+        assertThat(saved.sphere()).startsWith("\uFEFF").contains("\r\n");
+        String[] options = sandboxed ? new String[0] : new String[] {"--no-sandbox"};
+        CliRun asPlain = grade(plain, mistake, options);
+        CliRun asSaved = grade(windows, saved, options);
+        assertThat(asPlain.status()).as(asPlain.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(asPlain.out()).as(asPlain.transcript()).contains("tick1.xml: FAIL");
+        assertThat(asSaved.status()).as(asSaved.transcript()).isEqualTo(asPlain.status());
+        assertThat(asSaved.out().replace(windows.toString(), "FOLDER")).as(asSaved.transcript())
+                .isEqualTo(asPlain.out().replace(plain.toString(), "FOLDER"));
+        assertThat(Files.list(windows.resolve("report")).map(file -> file.getFileName().toString()).sorted().toList())
+                .as("the images of the failing scene, in the report folder of that name")
+                .isEqualTo(Files.list(plain.resolve("report")).map(file -> file.getFileName().toString()).sorted()
+                        .toList()).isNotEmpty();
     }
 
     @Test
@@ -451,13 +495,13 @@ class GradeCommandTest {
         assertThat(run.err().lines().findFirst()).hasValueSatisfying(line -> assertThat(line)
                 .contains("--submissions", "--sphere"));
     }
+
     @Test
     void aDownloadWithNoSubmissionsIsOneLineExitTwoAndWritesNothing() throws IOException {
         Path download = Files.createDirectory(dir.resolve("download"));
         Path report = dir.resolve("report");
 
-        CliRun run = CliRun.of("grade", "--submissions", download.toString(), "--report", report.toString(),
-                "--no-sandbox");
+        CliRun run = CliRun.of("grade", "--submissions", download.toString(), "--report", report.toString());
 
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
         assertThat(run.err().lines().filter(line -> !line.startsWith("tick1 grade: warning: ")))
@@ -473,12 +517,22 @@ class GradeCommandTest {
             0, 0, 0, 0, 0});
         Path report = parent.resolve("report");
 
-        CliRun run = CliRun.of("grade", "--submissions", parent.toString(), "--report", report.toString(),
-                "--no-sandbox");
+        CliRun run = CliRun.of("grade", "--submissions", parent.toString(), "--report", report.toString());
 
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
         assertThat(run.err().lines().filter(line -> !line.startsWith("tick1 grade: warning: ")))
                 .as(run.transcript()).singleElement().asString().contains(parent.resolve("Tick 1.zip").toString());
         assertThat(report).as("the report folder").doesNotExist();
+    }
+
+    @Test
+    void aCohortIsNeverGradedWithoutTheSandbox() throws IOException {
+        Path download = Files.createDirectory(dir.resolve("download"));
+        CliRun run = CliRun.of("grade", "--submissions", download.toString(), "--report",
+                dir.resolve("report").toString(), "--no-sandbox");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines()).as(run.transcript()).singleElement().asString()
+                .contains("--submissions never runs students' code without the sandbox");
+        assertThat(dir.resolve("report")).as("the report folder").doesNotExist();
     }
 }

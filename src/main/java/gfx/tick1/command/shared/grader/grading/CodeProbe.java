@@ -40,20 +40,28 @@ public final class CodeProbe {
     private static final Duration TIME_LIMIT = Duration.ofSeconds(30);
     private static final int MEMORY_MEGABYTES = 512;
 
+    /** The limits of a probe's JVM that hold without the sandbox too, in words. */
+    public static final String LIMITS = "a Java process of their own limited only in time (" + TIME_LIMIT.toSeconds()
+            + " s to compile, as long again to run) and heap (" + MEMORY_MEGABYTES + " MiB)";
+
     private CodeProbe() {
     }
 
     /**
      * Probes {@code sphere} and {@code renderer} (sources of package gfx.tick1); hints only of the
-     * methods of the files named in {@code asked} ("Sphere", "Renderer").
+     * methods of the files named in {@code asked} ("Sphere", "Renderer"). With {@code unsandboxed}
+     * (the student's own code, on a machine without bubblewrap) the methods run without the
+     * sandbox, in a JVM of their own held only to the time limit and the heap ({@link #LIMITS}).
      */
-    public static Lines probe(String sphere, String renderer, List<String> asked) throws InterruptedException {
+    public static Lines probe(String sphere, String renderer, List<String> asked, boolean unsandboxed)
+            throws InterruptedException {
         Sandbox sandbox;
         try {
-            sandbox = Sandbox.confined();
+            sandbox = unsandboxed ? Sandbox.unconfined() : Sandbox.confined();
         } catch (Sandbox.Unavailable e) {
             return Lines.none("behaviour could not be checked: it comes from running your methods in "
-                    + "the sandbox, and " + e.getMessage() + (e.remedy() == null ? "" : ": " + e.remedy()));
+                    + "the sandbox, and " + e.getMessage() + (e.remedy() == null ? "" : ": " + e.remedy())
+                    + "; if the code is yours, --no-sandbox runs them without one");
         }
         Path work = null;
         try {

@@ -303,6 +303,21 @@ public final class Sandbox {
     }
 
     /**
+     * A process for {@link #wrap}'s command in this sandbox: as {@link #processFor} makes one; or,
+     * with no sandbox, in the grader's environment (the code is the user's own, and on Windows Java
+     * needs some of it, SystemRoot among them) but for the variables that would give the harness's
+     * JVM options of their own and so change its limits.
+     */
+    ProcessBuilder process(List<String> wrappedCommand) {
+        if (confined) {
+            return processFor(wrappedCommand);
+        }
+        ProcessBuilder builder = new ProcessBuilder(wrappedCommand);
+        builder.environment().keySet().removeAll(List.of("JAVA_TOOL_OPTIONS", "_JAVA_OPTIONS", "JDK_JAVA_OPTIONS"));
+        return builder;
+    }
+
+    /**
      * Makes the control group of one run, held to a run's totals, and removes it: what each run's
      * group costs beyond the run. Only where {@link Enforcement#totals} holds.
      */

@@ -193,7 +193,7 @@ final class SandboxedProcess {
                 (long) (heapMegabytes + TOTAL_BEYOND_HEAP_MEGABYTES) << 20, RunLimits.PROCESSES_LIMIT, oneCore));
         try {
             sandbox.warm(binds);
-            Process process = Sandbox.processFor(sandbox.wrap(command, binds,
+            Process process = sandbox.process(sandbox.wrap(command, binds,
                     new RunLimits(cpuSeconds, heapMegabytes + NON_HEAP_MEGABYTES, oneCore), cgroup, hiddenScenes))
                     .redirectErrorStream(true).start();
             return new Started(process, cgroup);
