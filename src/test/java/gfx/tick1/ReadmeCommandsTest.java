@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatCode;
 
 import gfx.tick1.command.render.RenderCommand;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
 import gfx.tick1.command.shared.cli.MainClass;
 import java.io.File;
 import java.io.IOException;
@@ -101,7 +102,10 @@ class ReadmeCommandsTest {
         List<String> lines = studentCommands();
         assertThat(lines).as("the section's commands").hasSizeGreaterThan(3)
                 .anySatisfy(line -> assertThat(line).startsWith("java -jar tick1.jar "));
-        for (String line : lines) {
+        for (String written : lines) {
+            // Where no sandbox can be made, a student gives grade --no-sandbox, as the section says.
+            String line = !SandboxNeeded.available() && written.startsWith("java -jar tick1.jar grade ")
+                    ? written + " --no-sandbox" : written;
             ProcessBuilder shell = new ProcessBuilder("sh", "-c", line).directory(kit.toFile())
                     .redirectErrorStream(true).redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
             shell.environment().put("PATH", Path.of(java).getParent() + File.pathSeparator + System.getenv("PATH"));

@@ -2,6 +2,7 @@ package gfx.tick1.engine.image;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.awt.image.BufferedImage;
@@ -217,6 +218,8 @@ class PngOutputTest {
     void anInterruptedWriteLeavesTheEarlierImageAndNoTemporaryFile() throws Exception {
         Path kill = Path.of("/bin/kill");
         assumeTrue(Files.isExecutable(kill), "needs /bin/kill to send SIGINT");
+        assumeFalse(sigintIgnored(), "SIGINT is ignored here (the tests were started in the background, with & or "
+                + "nohup), and so in the writer's JVM too: run them in the foreground to test Ctrl-C");
         Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), StalledWrite.class.getName(), target.toString())
                 .redirectErrorStream(true).start();
@@ -234,6 +237,20 @@ class PngOutputTest {
         }
         assertThat(target).hasBinaryContent(EarlierImage.bytes());
         assertThat(dir.toFile().list()).containsExactly("out.png");
+    }
+
+    /**
+     * Whether this process ignores SIGINT, as a child of a shell's background job does: a JVM started
+     * so ignores it too, and Ctrl-C cannot be tested (bit 2 of SigIgn in /proc/self/status).
+     */
+    private static boolean sigintIgnored() throws IOException {
+        Path status = Path.of("/proc/self/status");
+        if (!Files.isReadable(status)) {
+            return false;
+        }
+        return Files.readAllLines(status).stream().filter(line -> line.startsWith("SigIgn:"))
+                .map(line -> Long.parseUnsignedLong(line.substring("SigIgn:".length()).strip(), 16))
+                .anyMatch(mask -> (mask & (1L << 1)) != 0);
     }
 
     /** The other JVM of the test above. */

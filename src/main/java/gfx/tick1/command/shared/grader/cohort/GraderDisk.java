@@ -58,12 +58,12 @@ final class GraderDisk {
 
     /** {@link #shortOfSpace(Path)}, with the stat at {@code stat}. */
     static String shortOfSpace(Path work, Path stat) throws InterruptedException {
-        long free;
-        try {
-            free = Files.getFileStore(work).getUsableSpace();
-        } catch (IOException e) {
-            return "the free space of the grader's temporary folder cannot be read (" + e.getMessage() + ")";
+        // statvfs on the folder itself (File's), not Files.getFileStore, which looks the folder's mount up
+        // in the mount table and finds none in a chroot, whose mounts are named as outside it.
+        if (!Files.isDirectory(work)) {
+            return "the free space of the grader's temporary folder cannot be read (" + work + " is not a folder)";
         }
+        long free = work.toFile().getUsableSpace();
         if (free < FULL_BYTES) {
             return "the grader's temporary folder was full when its run failed (" + (free >> 20) + " MiB free, less "
                     + "than the " + (FULL_BYTES >> 20) + " MiB tick1's own part of a run needs): free some space and "

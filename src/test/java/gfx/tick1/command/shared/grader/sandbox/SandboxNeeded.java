@@ -20,6 +20,11 @@ public final class SandboxNeeded implements ExecutionCondition {
                 : ConditionEvaluationResult.disabled("needs the sandbox: " + why);
     }
 
+    /** Whether a sandbox can be made on this machine (asked once). */
+    public static boolean available() {
+        return why() == null;
+    }
+
     private static synchronized String why() {
         if (!asked) {
             try {
