@@ -60,9 +60,6 @@ final class GraderDisk {
     static String shortOfSpace(Path work, Path stat) throws InterruptedException {
         // statvfs on the folder itself (File's), not Files.getFileStore, which looks the folder's mount up
         // in the mount table and finds none in a chroot, whose mounts are named as outside it.
-        if (!Files.isDirectory(work)) {
-            return "the free space of the grader's temporary folder cannot be read (" + work + " is not a folder)";
-        }
         long free = work.toFile().getUsableSpace();
         if (free < FULL_BYTES) {
             return "the grader's temporary folder was full when its run failed (" + (free >> 20) + " MiB free, less "
