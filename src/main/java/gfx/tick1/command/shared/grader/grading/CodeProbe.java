@@ -1,6 +1,7 @@
 package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
+import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.command.shared.kit.StarterKit;
@@ -93,8 +94,8 @@ public final class CodeProbe {
         Path output = Files.createDirectory(work.resolve("output"));
         sandbox.share(output, true);
         StudentProcess.CompiledAndRendered run = process.compileAndRender(sources,
-                new StudentProcess.Batch(scenes, List.of(), 1, 1, true, false), output, "Sphere.java", "Renderer.java",
-                TIME_LIMIT);
+                new StudentProcess.Batch(scenes, List.of(), 1, 1, SceneBatch.PUBLIC), output, "Sphere.java",
+                "Renderer.java", TIME_LIMIT);
         if (!run.compiled().compiled()) {
             return Lines.none("behaviour could not be checked: it comes from running your "
                     + "methods, and the files do not compile with the starter code"

@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.grader.grading;
 
+import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
 import gfx.tick1.engine.render.ReferenceRenderer;
 import gfx.tick1.engine.scene.BundledScenes;
 import gfx.tick1.engine.scene.Intersection;
@@ -34,6 +35,9 @@ public final class Grading {
      * message text of the student's code).
      */
     public record CourseScene(String name, Path file, Scene scene, boolean hidden) {
+        SceneBatch batch() {
+            return hidden ? SceneBatch.HIDDEN : SceneBatch.PUBLIC;
+        }
     }
 
     /** The limits and sizes that change a grade. */
@@ -61,9 +65,10 @@ public final class Grading {
     public static Grading prepare(Path work, Path extraScenes, Limits limits) throws IOException {
         Path bundled = Files.createDirectory(work.resolve("bundled"));
         List<CourseScene> scenes = new ArrayList<>();
-        scenes.add(load(BundledScenes.TICK1, BundledScenes.extract(BundledScenes.TICK1, bundled), false));
+        scenes.add(load(BundledScenes.TICK1, BundledScenes.extract(BundledScenes.TICK1, bundled), SceneBatch.PUBLIC));
         if (extraScenes == null) {
-            scenes.add(load(BundledScenes.HIDDEN, BundledScenes.extract(BundledScenes.HIDDEN, bundled), true));
+            scenes.add(load(BundledScenes.HIDDEN, BundledScenes.extract(BundledScenes.HIDDEN, bundled),
+                    SceneBatch.HIDDEN));
         } else {
             if (!Files.isDirectory(extraScenes)) {
                 throw new IOException(extraScenes + ": not a folder (--scenes wants a folder of *.xml scenes)");
@@ -75,7 +80,7 @@ public final class Grading {
                     throw new IOException(extraScenes + ": no *.xml scene files in the folder");
                 }
                 for (Path file : xml) {
-                    scenes.add(load(file.toString(), file, true));
+                    scenes.add(load(file.toString(), file, SceneBatch.HIDDEN));
                 }
             }
         }
@@ -91,20 +96,20 @@ public final class Grading {
             Path batch = Files.createDirectory(folder.resolve(kind.folder()));
             int index = 0;
             for (CourseScene scene : scenes) {
-                if (kind.holds(scene)) {
+                if (scene.batch() == kind) {
                     Files.copy(scene.file(), batch.resolve(index++ + ".xml"));
                 }
             }
         }
     }
 
-    private static CourseScene load(String name, Path file, boolean hidden) {
+    private static CourseScene load(String name, Path file, SceneBatch batch) {
         Scene scene = new SceneLoader(file, false).getScene();
         if (scene.getPointLight() == null) {
             // The handout's illuminate() starts with scene.getPointLight().getPosition().
             throw new SceneException(file + ": no <point-light>: the starter code needs one to grade with");
         }
-        return new CourseScene(name, file, scene, hidden);
+        return new CourseScene(name, file, scene, batch == SceneBatch.HIDDEN);
     }
 
     public List<CourseScene> scenes() {
@@ -113,7 +118,7 @@ public final class Grading {
 
     /** The scenes of one batch (public or hidden), in grading order. */
     List<CourseScene> batch(SceneBatch kind) {
-        return scenes.stream().filter(kind::holds).toList();
+        return scenes.stream().filter(scene -> scene.batch() == kind).toList();
     }
 
     /** The folder that {@link #copyScenes} made in {@code folder} for one batch's scenes. */

@@ -8,6 +8,7 @@ import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.sandbox.NoImage;
+import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess.Outcome;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.scene.Intersection;

@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.grader.grading;
 import gfx.tick1.command.shared.grader.grading.Grading.CourseScene;
 import gfx.tick1.command.shared.grader.sandbox.NoImage;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
+import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess.Outcome;
 import java.io.IOException;
@@ -82,14 +83,13 @@ final class SceneRuns {
     private StudentProcess.Result run(SceneBatch kind, CompileStep.Started started, Path work, Duration left)
             throws IOException, InterruptedException {
         List<CourseScene> batch = grading.batch(kind);
-        boolean hidden = kind == SceneBatch.HIDDEN;
         if (batch.isEmpty()) {
             return null;
         }
         Grading.Limits limits = grading.limits();
         return process.render(started.classes(), new StudentProcess.Batch(Grading.batchScenes(scenes, kind),
-                sceneFiles(batch.size()), limits.width(), limits.height(), !hidden, hidden),
-                CompileStep.childFolder(sandbox, work, hidden ? "hidden-run" : PUBLIC_RUN), left,
+                sceneFiles(batch.size()), limits.width(), limits.height(), kind),
+                CompileStep.childFolder(sandbox, work, kind == SceneBatch.HIDDEN ? "hidden-run" : PUBLIC_RUN), left,
                 limits.timeLimit());
     }
 

@@ -42,8 +42,8 @@ record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDis
         Path hiddenRunFilter;
         try {
             boolean processes = Boolean.getBoolean(PROCESSES_PROPERTY);
-            seccompFilter = SeccompFilter.writeForThisMachine(false, processes);
-            hiddenRunFilter = SeccompFilter.writeForThisMachine(true, processes);
+            seccompFilter = SeccompFilter.writeForThisMachine(SceneBatch.PUBLIC, processes);
+            hiddenRunFilter = SeccompFilter.writeForThisMachine(SceneBatch.HIDDEN, processes);
         } catch (IOException e) {
             throw new Sandbox.Unavailable("cannot write the sandbox's seccomp filter (" + e.getMessage() + ")");
         }

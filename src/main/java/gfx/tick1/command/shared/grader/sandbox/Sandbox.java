@@ -251,15 +251,15 @@ public final class Sandbox {
 
     /**
      * The command that runs {@code command} inside the sandbox, with {@code binds}, held to
-     * {@code limits} and, where there is one, to {@code cgroup}'s totals; with {@code hiddenScenes},
+     * {@code limits} and, where there is one, to {@code cgroup}'s totals; for a hidden {@code batch},
      * under the hidden runs' stricter seccomp filter.
      */
-    List<String> wrap(List<String> command, List<Bind> binds, RunLimits limits, Cgroup cgroup, boolean hiddenScenes) {
+    List<String> wrap(List<String> command, List<Bind> binds, RunLimits limits, Cgroup cgroup, SceneBatch batch) {
         if (!confined) {
             return command;
         }
         List<String> wrapped = new ArrayList<>(RunLimits.startCommand(cgroup,
-                hiddenScenes ? host.hiddenRunFilter() : host.seccompFilter()));
+                batch == SceneBatch.HIDDEN ? host.hiddenRunFilter() : host.seccompFilter()));
         wrapped.addAll(limits.programs(uid, job));
         wrapped.addAll(List.of("--", host.bwrap().toString(),
                 "--unshare-all", "--unshare-user", "--disable-userns",
@@ -362,9 +362,8 @@ public final class Sandbox {
      */
     private void selfTest() throws Unavailable, InterruptedException {
         try {
-            Process process = processFor(wrap(List.of(TRUE.toString()),
-                    List.of(new Bind(TRUE, TRUE.toString(), false)), new RunLimits(5, 256, false), null, false))
-                    .redirectErrorStream(true).start();
+            Process process = processFor(wrap(List.of(TRUE.toString()), List.of(new Bind(TRUE, TRUE.toString(),
+                    false)), new RunLimits(5, 256, false), null, SceneBatch.PUBLIC)).redirectErrorStream(true).start();
             process.getOutputStream().close();
             byte[] said = process.getInputStream().readNBytes(4096);
             if (!process.waitFor(10, TimeUnit.SECONDS)) {

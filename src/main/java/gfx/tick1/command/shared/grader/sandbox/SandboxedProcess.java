@@ -33,19 +33,18 @@ final class SandboxedProcess {
 
     /**
      * What to run: the harness's arguments; the folders bound in; the file system of the output
-     * folder among them, whose caps the run is held to (or null: none is); the time limit, which for
-     * a run that compiles first starts again when the harness logs "compiled" in {@code progress}
-     * (null for any other run); its JVM; and whether it renders the organiser's hidden scenes (then
-     * under the stricter seccomp filter: {@link SeccompFilter}).
+     * folder among them, whose caps the run is held to (or null: none is); its time; its JVM; and
+     * the batch of scenes it renders (a hidden batch under the stricter seccomp filter:
+     * {@link SeccompFilter}).
      * Made by {@link #of} and the methods that return a changed copy, in the order the folders are bound.
      */
-    record Request(List<String> harnessArguments, List<Bind> binds, OutputDisk output, Duration timeLimit,
-            Path progress,
-            Jvm jvm, boolean hiddenScenes) {
+    record Request(List<String> harnessArguments, List<Bind> binds, OutputDisk output, Time time, Jvm jvm,
+            SceneBatch batch) {
 
         /** The harness run with {@code harnessArguments} in {@code jvm} within {@code timeLimit}, nothing bound in. */
         static Request of(List<String> harnessArguments, Duration timeLimit, Jvm jvm) {
-            return new Request(List.copyOf(harnessArguments), List.of(), null, timeLimit, null, jvm, false);
+            return new Request(List.copyOf(harnessArguments), List.of(), null, new Time(timeLimit, null), jvm,
+                    SceneBatch.PUBLIC);
         }
 
         /** The same run with {@code folder} bound in, read-only, at {@code inside}. */
@@ -60,34 +59,40 @@ final class SandboxedProcess {
 
         /** The same run with {@code disk}'s folder bound in, writable, at {@code inside}, as its output folder. */
         Request output(OutputDisk disk, String inside) {
-            return new Request(harnessArguments, plus(new Bind(disk.folder(), inside, true)), disk, timeLimit,
-                    progress, jvm, hiddenScenes);
+            return new Request(harnessArguments, plus(new Bind(disk.folder(), inside, true)), disk, time, jvm, batch);
         }
 
         /** The same run compiling first: its time limit starts again when {@code progress} says it compiled. */
         Request compilingFirst(Path progress) {
-            return new Request(harnessArguments, binds, output, timeLimit, progress, jvm, hiddenScenes);
+            return new Request(harnessArguments, binds, output, new Time(time.limit(), progress), jvm, batch);
         }
 
-        /** The same run rendering the organiser's hidden scenes, under the stricter filter, or not. */
-        Request hidingScenes(boolean hidden) {
-            return new Request(harnessArguments, binds, output, timeLimit, progress, jvm, hidden);
+        /** The same run rendering {@code scenes}. */
+        Request rendering(SceneBatch scenes) {
+            return new Request(harnessArguments, binds, output, time, jvm, scenes);
         }
 
         /** The same run with {@code all} bound in instead. */
         Request withBinds(List<Bind> all) {
-            return new Request(harnessArguments, List.copyOf(all), output, timeLimit, progress, jvm, hiddenScenes);
-        }
-
-        /** How long the run may go on once the harness logs that it compiled: none for a run that does not compile. */
-        Duration thenLimit() {
-            return progress == null ? Duration.ZERO : timeLimit;
+            return new Request(harnessArguments, List.copyOf(all), output, time, jvm, batch);
         }
 
         private List<Bind> plus(Bind bind) {
             List<Bind> all = new ArrayList<>(binds);
             all.add(bind);
             return all;
+        }
+    }
+
+    /**
+     * How long a run may take: {@code limit}; for a run that compiles first, the log {@code progress}
+     * it writes (null for any other run), and as long again from the moment that says "compiled".
+     */
+    record Time(Duration limit, Path progress) {
+
+        /** How long the run may go on once the harness logs that it compiled: none for a run that does not compile. */
+        Duration thenLimit() {
+            return progress == null ? Duration.ZERO : limit;
         }
     }
 
@@ -126,9 +131,9 @@ final class SandboxedProcess {
         if (stopped) {
             throw new InterruptedException("the grade was stopped");
         }
-        int cpuSeconds = (int) Math.ceil(request.timeLimit().plus(request.thenLimit()).toMillis() / 1000.0) + 1;
-        try (Started started = start(sandbox, command, request.binds(), cpuSeconds, request.jvm(),
-                request.hiddenScenes())) {
+        Time time = request.time();
+        int cpuSeconds = (int) Math.ceil(time.limit().plus(time.thenLimit()).toMillis() / 1000.0) + 1;
+        try (Started started = start(sandbox, command, request.binds(), cpuSeconds, request.jvm(), request.batch())) {
             Process process = started.process();
             running = process;
             try {
@@ -181,12 +186,11 @@ final class SandboxedProcess {
     /**
      * Starts {@code command} in {@code sandbox} with {@code binds}, at most {@code cpuSeconds} of
      * processor time, the heap of {@code jvm} and the address space and totals that go with it; on
-     * one core when it says so; with {@code hiddenScenes}, under the hidden runs' filter. Its
+     * one core when it says so; for a hidden {@code batch}, under the hidden runs' filter. Its
      * standard streams are the caller's to use.
      */
     static Started start(Sandbox sandbox, List<String> command, List<Bind> binds, int cpuSeconds, Jvm jvm,
-            boolean hiddenScenes)
-            throws IOException {
+            SceneBatch batch) throws IOException {
         int heapMegabytes = jvm.heapMegabytes();
         boolean oneCore = jvm.oneCore();
         Cgroup cgroup = sandbox.cgroupFor(new Cgroup.Totals(
@@ -194,7 +198,7 @@ final class SandboxedProcess {
         try {
             sandbox.warm(binds);
             Process process = sandbox.process(sandbox.wrap(command, binds,
-                    new RunLimits(cpuSeconds, heapMegabytes + NON_HEAP_MEGABYTES, oneCore), cgroup, hiddenScenes))
+                    new RunLimits(cpuSeconds, heapMegabytes + NON_HEAP_MEGABYTES, oneCore), cgroup, batch))
                     .redirectErrorStream(true).start();
             return new Started(process, cgroup);
         } catch (IOException | RuntimeException e) {
@@ -215,18 +219,19 @@ final class SandboxedProcess {
      * channel the student's code could use later), and counting the output folder.
      */
     private static Waited await(Process process, Request request) throws IOException, InterruptedException {
+        Time time = request.time();
         long start = System.nanoTime();
-        long deadline = start + request.timeLimit().toNanos();
+        long deadline = start + time.limit().toNanos();
         long compiledAt = -1, counted = start;
         while (true) {
-            boolean polling = request.progress() != null && compiledAt < 0;
+            boolean polling = time.progress() != null && compiledAt < 0;
             boolean ended = process.waitFor(polling ? COMPILED_POLL_MILLIS : COUNT_EVERY_MILLIS, TimeUnit.MILLISECONDS);
             long now = System.nanoTime();
             if (polling) {
-                String logged = ChildOutput.readText(request.progress());
+                String logged = ChildOutput.readText(time.progress());
                 if (logged != null && logged.lines().anyMatch(StudentHarness.COMPILED::equals)) {
                     compiledAt = now;
-                    deadline = now + request.thenLimit().toNanos();
+                    deadline = now + time.thenLimit().toNanos();
                 }
             }
             long compileNanos = (compiledAt >= 0 ? compiledAt : now) - start;

@@ -88,11 +88,14 @@ final class SeccompFilter {
     private static final int MADV_PAGEOUT = 21;
 
     /**
-     * One architecture's numbers: AUDIT_ARCH_* (linux/audit.h), ioctl's and madvise's, and those of
-     * the calls refused outright.
+     * One architecture's numbers: AUDIT_ARCH_* (linux/audit.h), ioctl's and madvise's, those of
+     * the calls refused outright, of those refused in hidden runs, and of those that start processes.
      */
-    private record Architecture(int audit, int ioctl, int madvise, int[] refused, int[] numbering, int cloneCall,
-            int clone3Call, int[] starting) {
+    private record Architecture(int audit, int ioctl, int madvise, int[] refused, int[] numbering, Starting starting) {
+    }
+
+    /** The numbers of clone and clone3, which may start a thread, and of the calls that only start a process. */
+    private record Starting(int cloneCall, int clone3Call, int[] processes) {
     }
 
     // The numbers are the kernel's: x86-64's arch/x86/entry/syscalls/syscall_64.tbl, AArch64's
@@ -103,36 +106,27 @@ final class SeccompFilter {
     // clone (56 and 220) and clone3 (435); refused as starting a process: fork and vfork (x86-64 only), pidfd_open.
     private static final Architecture X86_64 = new Architecture(0xc000003e, 16, 28,
             new int[] {285, 188, 189, 190, 425, 426, 427, 463, 221, 440},
-            new int[] {22, 293, 41, 319, 447, 206, 29, 240, 323}, 56, 435, new int[] {57, 58, 434});
+            new int[] {22, 293, 41, 319, 447, 206, 29, 240, 323}, new Starting(56, 435, new int[] {57, 58, 434}));
     private static final Architecture AARCH64 = new Architecture(0xc00000b7, 29, 233,
             new int[] {47, 5, 6, 7, 425, 426, 427, 463, 223, 440},
-            new int[] {59, 198, 279, 447, 0, 194, 180, 282}, 220, 435, new int[] {434});
+            new int[] {59, 198, 279, 447, 0, 194, 180, 282}, new Starting(220, 435, new int[] {434}));
 
     private SeccompFilter() {
     }
 
-    /**
-     * The filter for the host's architecture, or null where tick1 has none (it then warns); with
-     * {@code hiddenScenes}, a hidden run's; with {@code processes}, one that lets a run start
-     * processes (for the tests that hold the limits against what other programs can do).
-     */
-    static byte[] forThisMachine(boolean hiddenScenes, boolean processes) {
-        return forArchitecture(System.getProperty("os.arch", ""), hiddenScenes, processes);
-    }
-
     /** The filter for an architecture as Java names it ({@code os.arch}), or null where tick1 has none. */
     static byte[] forArchitecture(String name) {
-        return forArchitecture(name, false, false);
+        return forArchitecture(name, SceneBatch.PUBLIC, false);
     }
 
     /**
-     * The filter for an architecture, a hidden run's with {@code hiddenScenes}, one that lets a run
-     * start processes with {@code processes}; or null where tick1 has none.
+     * The filter for an architecture, for {@code batch}, one that lets a run start processes with
+     * {@code processes}; or null where tick1 has none.
      */
-    static byte[] forArchitecture(String name, boolean hiddenScenes, boolean processes) {
+    static byte[] forArchitecture(String name, SceneBatch batch, boolean processes) {
         return switch (name) {
-            case "amd64", "x86_64" -> program(X86_64, hiddenScenes, processes);
-            case "aarch64" -> program(AARCH64, hiddenScenes, processes);
+            case "amd64", "x86_64" -> program(X86_64, batch, processes);
+            case "aarch64" -> program(AARCH64, batch, processes);
             default -> null;
         };
     }
@@ -141,7 +135,7 @@ final class SeccompFilter {
      * The filter as bwrap reads it: struct sock_filter ({@code u16 code; u8 jt, jf; u32 k}) in the
      * machine's byte order, both of whose architectures are little-endian.
      */
-    private static byte[] program(Architecture architecture, boolean hiddenScenes, boolean processes) {
+    private static byte[] program(Architecture architecture, SceneBatch batch, boolean processes) {
         Program code = new Program();
         code.add(LOAD_WORD, ARCHITECTURE);
         code.jump(JUMP_EQUAL, architecture.audit(), "number", null);
@@ -152,15 +146,15 @@ final class SeccompFilter {
         for (int refused : architecture.refused()) {
             code.jump(JUMP_EQUAL, refused, "refuse", null);
         }
-        for (int numbering : hiddenScenes ? architecture.numbering() : new int[0]) {
+        for (int numbering : batch == SceneBatch.HIDDEN ? architecture.numbering() : new int[0]) {
             code.jump(JUMP_EQUAL, numbering, "refuse", null);
         }
         if (!processes) {
-            for (int starting : architecture.starting()) {
+            for (int starting : architecture.starting().processes()) {
                 code.jump(JUMP_EQUAL, starting, "not permitted", null);
             }
-            code.jump(JUMP_EQUAL, architecture.clone3Call(), "no such call", null);
-            code.jump(JUMP_EQUAL, architecture.cloneCall(), "clone", null);
+            code.jump(JUMP_EQUAL, architecture.starting().clone3Call(), "no such call", null);
+            code.jump(JUMP_EQUAL, architecture.starting().cloneCall(), "clone", null);
         }
         code.jump(JUMP_EQUAL, architecture.ioctl(), "ioctl", null);
         code.jump(JUMP_EQUAL, architecture.madvise(), "madvise", "allow");
@@ -228,12 +222,13 @@ final class SeccompFilter {
     }
 
     /**
-     * The filter written to a new file of the grader's alone, deleted when this program ends, for
-     * the shell that starts each sandbox to open for bwrap; null where there is no filter. With
-     * {@code hiddenScenes}, a hidden run's; with {@code processes}, one that lets runs start processes.
+     * The filter for the host's architecture written to a new file of the grader's alone, deleted
+     * when this program ends, for the shell that starts each sandbox to open for bwrap; null where
+     * tick1 has none (it then warns). For {@code batch}; with {@code processes}, one that lets runs
+     * start processes (for the tests that hold the limits against what other programs can do).
      */
-    static Path writeForThisMachine(boolean hiddenScenes, boolean processes) throws IOException {
-        byte[] program = forThisMachine(hiddenScenes, processes);
+    static Path writeForThisMachine(SceneBatch batch, boolean processes) throws IOException {
+        byte[] program = forArchitecture(System.getProperty("os.arch", ""), batch, processes);
         if (program == null) {
             return null;
         }

@@ -92,10 +92,10 @@ public final class StudentProcess implements AutoCloseable {
 
     /**
      * The scenes one run renders: the files {@code sceneFiles} in the folder {@code scenes}, at
-     * {@code width} x {@code height}; with {@code probes}, the harness also runs the probes. The
-     * organiser's hidden scenes ({@code hidden}) render under the stricter seccomp filter.
+     * {@code width} x {@code height}, of the public {@code kind} (the harness then also runs the
+     * probes) or the organiser's hidden one (under the stricter seccomp filter).
      */
-    public record Batch(Path scenes, List<String> sceneFiles, int width, int height, boolean probes, boolean hidden) {
+    public record Batch(Path scenes, List<String> sceneFiles, int width, int height, SceneBatch kind) {
     }
 
     private final Sandbox sandbox;
@@ -219,7 +219,7 @@ public final class StudentProcess implements AutoCloseable {
         int cpuSeconds = ((int) Math.ceil(timeLimit.toMillis() / 1000.0) + 1) * CompileServer.COMPILES_PER_START;
         Launch launch = launch(request);
         return SandboxedProcess.start(compilerSandbox, launch.command(), launch.binds(), cpuSeconds, request.jvm(),
-                false);
+                request.batch());
     }
 
     private int compilerHeap() {
@@ -268,7 +268,7 @@ public final class StudentProcess implements AutoCloseable {
      */
     private static List<String> renderArguments(Batch batch, List<String> code) {
         List<String> arguments = new ArrayList<>(List.of("render"));
-        if (batch.probes()) {
+        if (batch.kind() == SceneBatch.PUBLIC) {
             arguments.add(StudentHarness.PROBES);
         }
         arguments.addAll(code);
@@ -319,7 +319,7 @@ public final class StudentProcess implements AutoCloseable {
         try (OutputDisk disk = sandbox.outputDisk(output)) {
             Run run = run(Request.of(renderArguments(batch, List.of(CLASSES)), timeLeft, studentJvm())
                     .reading(classes, CLASSES).reading(batch.scenes(), SCENES).output(disk, OUTPUT)
-                    .hidingScenes(batch.hidden()));
+                    .rendering(batch.kind()));
             return rendered(run, output, batch, timeLimit);
         }
     }
@@ -410,8 +410,8 @@ public final class StudentProcess implements AutoCloseable {
         try (OutputDisk disk = sandbox.outputDisk(output)) {
             // With the probes, so that the classes they load are in the archive too.
             List<String> code = List.of(StudentHarness.COMPILE_FIRST, SOURCES, "Sphere.java", "Renderer.java");
-            Run run = run(Request.of(renderArguments(new Batch(scenes, List.of("0.xml"), 8, 6, true, false), code),
-                    ARCHIVE_TIME_LIMIT, new Jvm(compilerHeap(), false,
+            Batch batch = new Batch(scenes, List.of("0.xml"), 8, 6, SceneBatch.PUBLIC);
+            Run run = run(Request.of(renderArguments(batch, code), ARCHIVE_TIME_LIMIT, new Jvm(compilerHeap(), false,
                             List.of("-XX:ArchiveClassesAtExit=" + inside(output, OUTPUT) + "/" + SHARED_ARCHIVE)))
                     .reading(sources, SOURCES).reading(scenes, SCENES).output(disk, OUTPUT));
             Path archive = output.resolve(SHARED_ARCHIVE);

@@ -59,9 +59,9 @@ class SeccompFilterTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("machines")
     void noRunCanStartAProcessButEveryRunMayStartThreads(Machine machine) {
-        for (boolean hidden : new boolean[] {false, true}) {
-            byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), hidden, false);
-            String run = hidden ? " in a hidden run" : " in a public run";
+        for (SceneBatch batch : SceneBatch.values()) {
+            byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), batch, false);
+            String run = batch == SceneBatch.HIDDEN ? " in a hidden run" : " in a public run";
             assertThat(run(filter, machine.audit(), machine.cloneCall(), THREAD)).as("clone of a thread" + run)
                     .isEqualTo(ALLOW);
             assertThat(run(filter, machine.audit(), machine.cloneCall(), SPAWN)).as("clone of a process" + run)
@@ -81,7 +81,7 @@ class SeccompFilterTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("machines")
     void aFilterThatLetsRunsStartProcessesAllowsCloneOfAProcess(Machine machine) {
-        byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), false, true);
+        byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), SceneBatch.PUBLIC, true);
         assertThat(run(filter, machine.audit(), machine.cloneCall(), SPAWN)).as("clone of a process").isEqualTo(ALLOW);
         assertThat(run(filter, machine.audit(), machine.clone3Call(), 0, 88)).as("clone3").isEqualTo(ALLOW);
     }
@@ -89,7 +89,7 @@ class SeccompFilterTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("machines")
     void aHiddenRunCannotMakeThePipesSocketsAndMemfdsTheKernelNumbersForTheWholeMachine(Machine machine) {
-        byte[] hidden = SeccompFilter.forArchitecture(machine.osArch(), true, false);
+        byte[] hidden = SeccompFilter.forArchitecture(machine.osArch(), SceneBatch.HIDDEN, false);
         assertThat(run(hidden, machine.audit(), machine.pipe2(), 0, 0)).as("pipe2 in a hidden run").isEqualTo(REFUSED);
         assertThat(run(hidden, machine.audit(), machine.socket(), 1, 1, 0)).as("socket in a hidden run")
                 .isEqualTo(REFUSED);
