@@ -33,7 +33,7 @@ class SharedArchiveTest {
         Path harness = Files.createDirectory(dir.resolve("harness"));
         StudentProcess.writeHarness(harness);
         Files.setPosixFilePermissions(harness, PosixFilePermissions.fromString("rwxr-xr-x"));
-        Files.setPosixFilePermissions(harness.resolve(StudentProcess.HARNESS_JAR),
+        Files.setPosixFilePermissions(harness.resolve(HarnessJvm.HARNESS_JAR),
                 PosixFilePermissions.fromString("r--r--r--"));
         Path archive = Files.createDirectory(dir.resolve("archive"));
         StudentProcess process = new StudentProcess(sandbox, harness, 512);
@@ -42,6 +42,6 @@ class SharedArchiveTest {
 
         assertThat(withArchive).as("the archive's run must render its scene, or no archive is kept")
                 .isNotSameAs(process);
-        assertThat(archive.resolve(StudentProcess.SHARED_ARCHIVE)).isRegularFile();
+        assertThat(archive.resolve(HarnessJvm.SHARED_ARCHIVE)).isRegularFile();
     }
 }
