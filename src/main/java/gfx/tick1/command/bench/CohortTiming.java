@@ -9,6 +9,7 @@ import gfx.tick1.command.shared.grader.model.Submission.SourceFile;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import gfx.tick1.engine.io.ProgressLine;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Writer;
@@ -103,7 +104,8 @@ final class CohortTiming {
                     new Grading.Limits(width, height, Duration.ofSeconds(60), DEFAULT_MEMORY_MEGABYTES,
                             ReferenceChoice.either));
             CohortGrade.Done done = new CohortGrade(grading, sandbox, jobs, new ResultStore(report.resolve("state")),
-                    new PrintWriter(Writer.nullWriter()), false).run(submissions, work);
+                    new PrintWriter(Writer.nullWriter()), new ProgressLine(new PrintWriter(Writer.nullWriter()), false,
+                    Duration.ZERO, Duration.ZERO)).run(submissions, work);
             double wall = (System.nanoTime() - start) / 1e9;
             List<SubmissionGrader.Phases> phases = done.phases();
             SandboxOverheads overheads = new SandboxOverheads(sandbox);

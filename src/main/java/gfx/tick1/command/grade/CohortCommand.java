@@ -17,12 +17,15 @@ import gfx.tick1.command.shared.grader.sandbox.ChildOutput;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.IoErrors;
+import gfx.tick1.engine.io.Counted;
 import gfx.tick1.engine.io.OnExit;
+import gfx.tick1.engine.io.ProgressLine;
 import gfx.tick1.engine.scene.SceneException;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.time.ZonedDateTime;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -40,6 +43,8 @@ final class CohortCommand {
 
     /** The folder inside the report folder where each result is kept as soon as it is known. */
     static final String STATE_FOLDER = "state";
+    /** How long a stop waits for the grades it cut short to end and delete what they began to store. */
+    private static final Duration STOP_WAIT = Duration.ofMinutes(1);
 
     private final GradeOptions options;
     private final CohortOptions cohortOptions;
@@ -50,6 +55,8 @@ final class CohortCommand {
     private Worksheet worksheet;
     /** The grade of a pass: --max-grade, else the worksheet's Maximum Grade, else 1. */
     private double maxGrade;
+    /** How many submissions the download holds, once read. */
+    private volatile int submissionCount;
 
     CohortCommand(GradeOptions options, CohortOptions cohortOptions, Sandbox sandbox, PrintWriter out,
             PrintWriter err) {
@@ -59,6 +66,9 @@ final class CohortCommand {
         this.out = out;
         this.err = err;
     }
+
+    /** Whether the grade ran to its end, or was stopped first (Ctrl-C, SIGTERM): whichever comes first holds. */
+    private enum Ending { RUNNING, ENDED, STOPPED }
 
     int call() throws IOException, InterruptedException {
         List<Submission> submissions;
@@ -74,6 +84,7 @@ final class CohortCommand {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, cohortOptions.submissions() + ": no submissions: it "
                     + "holds only the report folder or the worksheet");
         }
+        submissionCount = submissions.size();
         if (options.scenesFolder() == null) {
             err.println("tick1 grade: the built-in hidden scene is public (it is in tick1): anyone can pass it by "
                     + "copying its images; give scenes of your own with --scenes");
@@ -93,11 +104,14 @@ final class CohortCommand {
         AtomicReference<CohortGrade> running = new AtomicReference<>();
         // At the end, or on Ctrl-C or SIGTERM: stop the students' processes and delete the work
         // folder. Finished results are in the store already; the one being stored is renamed into
-        // place whole or not at all.
-        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> stop(running, work));
+        // place whole or not at all. Stopped, the JVM ends when its shutdown hooks do, whatever the
+        // grade's threads are doing: so the hook waits for them, and says itself that the grade stopped.
+        AtomicReference<Ending> ending = new AtomicReference<>(Ending.RUNNING);
+        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> stop(running, ending, work));
         try {
             return gradeAndReport(submissions, work, running);
         } finally {
+            ending.compareAndSet(Ending.RUNNING, Ending.ENDED);
             cleanUp.now();
         }
     }
@@ -121,11 +135,31 @@ final class CohortCommand {
         maxGrade = given != null ? given : sheet != null ? sheet : 1;
     }
 
-    /** Stops the grade, if it runs, and deletes the work folder; for the shutdown hook and the end alike. */
-    private void stop(AtomicReference<CohortGrade> running, Path work) {
+    /**
+     * Stops the grade, if it runs, and deletes the work folder; for the shutdown hook and the end alike.
+     * When the grade has not ended first ({@code ending}), it waits for every job's grade to end (what a
+     * grade cut short began to store is then deleted) and says in one line that it stopped, and how many
+     * results are kept.
+     */
+    private void stop(AtomicReference<CohortGrade> running, AtomicReference<Ending> ending, Path work) {
+        boolean stopped = ending.compareAndSet(Ending.RUNNING, Ending.STOPPED);
         CohortGrade cohort = running.getAndSet(null);
         if (cohort != null) {
             cohort.stop();
+            try {
+                cohort.awaitEnd(STOP_WAIT);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        if (stopped) {
+            Path state = options.reportFolder().resolve(STATE_FOLDER);
+            err.println("tick1 grade: stopped: " + (cohort == null ? "before any submission was graded; the results "
+                    + "of earlier runs are kept in " + state + "; run the same command again to grade the rest"
+                    : "the results of " + cohort.kept() + " of " + Counted.of(submissionCount, "submission")
+                    + " are kept in " + state + "; run the same command again to grade the other "
+                    + (submissionCount - cohort.kept())) + " and write the report");
+            err.flush();
         }
         GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
     }
@@ -151,14 +185,12 @@ final class CohortCommand {
                     + ": cannot write the report: " + IoErrors.describe(e));
         }
         CohortGrade cohort = new CohortGrade(grading, sandbox, cohortOptions.jobs(), store, err,
-                System.console() != null);
+                new ProgressLine(err, System.console() != null, Duration.ZERO, Duration.ZERO));
         running.set(cohort);
         CohortGrade.Done done = cohort.run(submissions, work);
         if (cohort.stopped()) {
-            // Stopped part way: the report of the last whole run stays as it was.
-            throw new CommandFailure(GradeCommand.EXIT_STOPPED, "stopped; the results finished so far are kept in "
-                    + options.reportFolder().resolve(STATE_FOLDER) + ": run the same command again to grade "
-                    + "the rest and write the report");
+            // Stopped part way (the shutdown hook says so): the report of the last whole run stays as it was.
+            return GradeCommand.EXIT_STOPPED;
         }
         return report(done);
     }

@@ -591,7 +591,7 @@ class GradeCohortTest {
      * {@code dir}/tmp as its temporary folder (where its work folder goes), which the sandbox's
      * users can pass through.
      */
-    private static Process gradeInAJvmOfItsOwn(Path dir, String... args) throws IOException {
+    static Process gradeInAJvmOfItsOwn(Path dir, String... args) throws IOException {
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
         Path temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
                 PosixFilePermissions.fromString("rwx--x--x")));

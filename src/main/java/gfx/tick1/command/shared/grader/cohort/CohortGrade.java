@@ -22,6 +22,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -75,22 +76,26 @@ public final class CohortGrade {
     private final int jobs;
     final ResultStore store;
     final PrintWriter err;
-    private final boolean showProgress;
+    private final ProgressLine line;
     private final List<StudentProcess> processes = Collections.synchronizedList(new ArrayList<>());
     private volatile boolean stopping;
+    /** Counted down when {@link #run} has ended: every job's grade ended, and each result kept or deleted. */
+    private final CountDownLatch ended = new CountDownLatch(1);
+    /** The submissions whose results are in the store: from earlier runs, and graded whole by this one. */
+    private final AtomicInteger kept = new AtomicInteger();
 
     /**
      * Grades with {@code grading}'s scenes and limits in {@code sandbox}, storing results in
-     * {@code store}; {@code showProgress} for an updating line on {@code err}.
+     * {@code store}; {@code err} gets what a grade says there, and {@code line} how many are graded.
      */
     public CohortGrade(Grading grading, Sandbox sandbox, int jobs, ResultStore store, PrintWriter err,
-            boolean showProgress) {
+            ProgressLine line) {
         this.grading = grading;
         this.sandbox = sandbox;
         this.jobs = jobs;
         this.store = store;
         this.err = err;
-        this.showProgress = showProgress;
+        this.line = line;
     }
 
     /** Whether {@link #stop()} was called: the results are then not the whole cohort's. */
@@ -122,9 +127,26 @@ public final class CohortGrade {
         processes.remove(process);
     }
 
+    /**
+     * Waits, at most {@code most}, for {@link #run} to end once {@link #stop()} has been called:
+     * every grade it cut short then has its half-written result deleted.
+     */
+    public void awaitEnd(Duration most) throws InterruptedException {
+        ended.await(most.toMillis(), TimeUnit.MILLISECONDS);
+    }
+
+    /** How many submissions have their results stored: from earlier runs, and graded whole by this one. */
+    public int kept() {
+        return kept.get();
+    }
+
     /** Grades {@code submissions} in {@code work}, a folder of the grader's own. */
     public Done run(List<Submission> submissions, Path work) throws IOException, InterruptedException {
-        return new CohortRun(submissions, work).grade();
+        try {
+            return new CohortRun(submissions, work).grade();
+        } finally {
+            ended.countDown();
+        }
     }
 
     /** One run's state: what is to grade, what is known, and the jobs that grade it. */
@@ -196,6 +218,7 @@ public final class CohortGrade {
                 if (results[i] != null) {
                     images[i] = store.folderOf(key);
                     stored++;
+                    kept.incrementAndGet();
                 } else if (firstWithKey.putIfAbsent(key, i) != null) {
                     sameAsEarlier.put(i, key);
                 } else {
@@ -216,23 +239,16 @@ public final class CohortGrade {
             Progress progress = new Progress(todo.size());
             ExecutorService pool = Executors.newFixedThreadPool(count, new JobThreads());
             try {
-                // Every public run before any hidden one: the runs a student's report quotes then never come
-                // after a run that had a hidden scene, nor run beside one, so none can time it or feel it use
-                // the processor, whatever order the jobs take the submissions in.
-                List<Future<?>> begun = new ArrayList<>();
+                // Each student start to finish (compile, public run, hidden run, result stored), so that a
+                // stop keeps every student graded whole before it.
+                List<Future<?>> grades = new ArrayList<>();
                 for (int index : todo) {
-                    begun.add(pool.submit(() -> begin(index, progress)));
+                    grades.add(pool.submit(() -> grade(index, progress)));
                 }
-                awaitAll(begun);
-                List<Future<?>> finished = new ArrayList<>();
-                for (CohortJob job : idle) {
-                    finished.add(pool.submit(() -> finishAll(job, progress)));
-                }
-                awaitAll(finished);
+                awaitAll(grades);
             } finally {
                 pool.shutdownNow();
                 pool.awaitTermination(1, TimeUnit.MINUTES);
-                idle.forEach(CohortJob::forgetWaiting);   // grades stop() cut short between their halves
                 synchronized (processes) {
                     processes.forEach(StudentProcess::close);   // the jobs' warm compilers
                 }
@@ -253,25 +269,16 @@ public final class CohortGrade {
             }
         }
 
-        /** Begins the {@code index}-th submission's grade with an idle job: its public scenes. */
-        private Void begin(int index, Progress progress) throws InterruptedException {
+        /** Grades the {@code index}-th submission with an idle job, and stores its result. */
+        private Void grade(int index, Progress progress) throws InterruptedException {
             if (stopping) {
                 return null;
             }
             CohortJob job = idle.take();
             try {
-                guarded(index, progress, () -> job.begin(submissions.get(index), index, this));
+                guarded(index, progress, () -> job.grade(submissions.get(index), index, this));
             } finally {
                 idle.add(job);
-            }
-            return null;
-        }
-
-        /** Finishes, one after the other, the grades {@code job} began and left waiting for their hidden scenes. */
-        private Void finishAll(CohortJob job, Progress progress) throws InterruptedException {
-            for (CohortJob.Waiting next = job.nextWaiting(); next != null && !stopping; next = job.nextWaiting()) {
-                CohortJob.Waiting grade = next;
-                guarded(grade.index(), progress, () -> job.finish(grade, this));
             }
             return null;
         }
@@ -319,13 +326,14 @@ public final class CohortGrade {
             }
             String key = ResultStore.key(submission, grading, sandbox.enforcement());
             store.save(key, graded.result(), entry);
+            kept.incrementAndGet();
             results[index] = graded.result();
             images[index] = store.folderOf(key);
             phases.add(graded.phases());
         }
     }
 
-    /** One step of a grade: its result, or null when there is none yet or stop() cut it short. */
+    /** One grade: its result, or null when stop() cut it short. */
     @FunctionalInterface
     private interface Step {
         StudentResult run() throws IOException, InterruptedException;
@@ -346,7 +354,6 @@ public final class CohortGrade {
 
     /** One updating line on the terminal: how many are graded, of how many, and how many failed. */
     private final class Progress {
-        private final ProgressLine line = new ProgressLine(err, showProgress, Duration.ZERO, Duration.ZERO);
         private final int total;
         private int done, failed;
 

@@ -12,8 +12,6 @@ import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
-import java.util.Queue;
-import java.util.concurrent.ConcurrentLinkedQueue;
 
 /**
  * One job: a folder, a sandbox user and a process of its own, made when it first grades, with
@@ -38,7 +36,6 @@ final class CohortJob {
     private final int number;
     private final Path folder;
     private final StudentProcess shared;
-    private final Queue<Waiting> waiting = new ConcurrentLinkedQueue<>();
     private SubmissionGrader grader;
 
     CohortJob(CohortGrade cohort, int number, Path folder, StudentProcess shared) {
@@ -71,47 +68,22 @@ final class CohortJob {
     }
 
     /**
-     * Begins {@code submission}'s grade: stores its result when the grade ends there, else
-     * leaves it waiting for {@link #finish}. The result, or null when the grade waits or was
-     * cut short by stop().
+     * Grades {@code submission}, the {@code index}-th, start to finish, and stores its result. The
+     * result, or null when stop() cut the grade short (nothing is then stored).
      */
-    StudentResult begin(Submission submission, int index, Results run) throws IOException,
-            InterruptedException {
+    StudentResult grade(Submission submission, int index, Results run) throws IOException, InterruptedException {
         if (grader == null) {
             setUp();
         }
         Path submissionWork = Files.createDirectory(folder.resolve("submission-" + index));
         Path entry = cohort.store.newEntry();
-        boolean waits = false;
         try {
-            SubmissionGrader.Begun begun = grader.begin(submission, submissionWork, entry,
-                    new PrintWriter(Writer.nullWriter()), cohort.err);
-            if (begun instanceof SubmissionGrader.Halfway halfway) {
-                waiting.add(new Waiting(index, submissionWork, entry, halfway.setAside(submissionWork)));
-                waits = true;
-                return null;
-            }
-            return stored(((SubmissionGrader.Finished) begun).graded(), index, entry, run);
-        } catch (IOException | RuntimeException | Error e) {
+            return stored(grader.grade(submission, submissionWork, entry, new PrintWriter(Writer.nullWriter()),
+                    cohort.err), index, entry, run);
+        } finally {
+            // Stored, the entry has been renamed to its key; otherwise (an error, a stop) it goes.
             WorkFolder.delete(entry);
-            throw e;
-        } finally {
-            if (!waits) {
-                WorkFolder.delete(submissionWork);
-            }
-        }
-    }
-
-    /** Finishes a grade {@link #begin} left waiting, and stores its result; null when stop() cut it short. */
-    StudentResult finish(Waiting grade, Results run) throws IOException, InterruptedException {
-        try {
-            return stored(grader.finish(grade.halfway(), grade.work(), new PrintWriter(Writer.nullWriter())),
-                    grade.index(), grade.entry(), run);
-        } catch (IOException | RuntimeException | Error e) {
-            WorkFolder.delete(grade.entry());
-            throw e;
-        } finally {
-            WorkFolder.delete(grade.work());
+            WorkFolder.delete(submissionWork);
         }
     }
 
@@ -130,23 +102,6 @@ final class CohortJob {
         }
         run.storeResult(index, graded, entry);
         return graded.result();
-    }
-
-    /** The next grade waiting for its hidden scenes, or null. */
-    Waiting nextWaiting() {
-        return waiting.poll();
-    }
-
-    /** Deletes what the grades still waiting would have stored: stop() cut them short. */
-    void forgetWaiting() {
-        for (Waiting grade = waiting.poll(); grade != null; grade = waiting.poll()) {
-            WorkFolder.delete(grade.entry());
-            WorkFolder.delete(grade.work());
-        }
-    }
-
-    /** A grade begun and waiting for its hidden scenes: its submission, folders and first half. */
-    record Waiting(int index, Path work, Path entry, SubmissionGrader.Halfway halfway) {
     }
 
     /**

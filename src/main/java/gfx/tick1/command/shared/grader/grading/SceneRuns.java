@@ -16,8 +16,7 @@ import java.util.concurrent.CompletableFuture;
 /**
  * The grade's run steps: the public scenes (with the probes), then the hidden ones in a JVM of
  * their own, so that what the student's code prints while it has a hidden scene open is never
- * shown. Both share the one time limit, which the public run's time counts against, whenever the
- * hidden run starts: a cohort runs every public run before any hidden one.
+ * shown. Both share the one time limit, which the public run's time counts against.
  */
 final class SceneRuns {
 
@@ -33,7 +32,7 @@ final class SceneRuns {
     }
 
     /** The public run's output folder in a grade's work folder. */
-    static final String PUBLIC_RUN = "public-run";
+    private static final String PUBLIC_RUN = "public-run";
 
     private final Grading grading;
     private final Sandbox sandbox;

@@ -1,21 +1,14 @@
 package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
-import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
-import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.FileVisitResult;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.SimpleFileVisitor;
-import java.nio.file.attribute.BasicFileAttributes;
-import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -32,10 +25,6 @@ public final class SubmissionGrader {
 
     /** Where a grade's time went: JVM starts and javac, the student's code, the comparing and images. */
     public record Phases(long compileNanos, long renderNanos, long compareNanos) {
-
-        Phases plus(long compile, long render, long compare) {
-            return new Phases(compileNanos + compile, renderNanos + render, compareNanos + compare);
-        }
     }
 
     /**
@@ -56,10 +45,6 @@ public final class SubmissionGrader {
     /** The words of a matching image that their methods do not give. */
     public static final String NOT_FROM_THE_CODE = "the image does not come from your Sphere and Renderer";
 
-    /** Why a grade whose classes were too many to keep could not run its hidden scenes. */
-    static final String COMPILED_ONCE_ONLY = "its classes, too many to keep while the other submissions ran, could "
-            + "not be compiled again for the hidden scenes";
-
     private final Grading grading;
     private final CompileStep compiler;
     private final SceneRuns runs;
@@ -75,162 +60,41 @@ public final class SubmissionGrader {
     }
 
     /**
-     * Grades {@code submission}. {@code work} is an empty folder for this grade (the caller
-     * deletes it), {@code images} where the images of failing scenes go; {@code out} gets the
-     * tester's report, {@code err} a line when the images cannot be written.
+     * Grades {@code submission}: checks and compiles the files, runs the public scenes and the probes,
+     * then the hidden scenes in a JVM of their own, judges them, and gives the verdict. {@code work}
+     * is an empty folder for this grade (the caller deletes it), {@code images} where the images of
+     * failing scenes go; {@code out} gets the tester's report, {@code err} a line when the images
+     * cannot be written.
      */
     public Graded grade(Submission submission, Path work, Path images, PrintWriter out, PrintWriter err)
-            throws IOException, InterruptedException {
-        Begun begun = begin(submission, work, images, out, err);
-        return begun instanceof Halfway halfway ? finish(halfway, work, out) : ((Finished) begun).graded();
-    }
-
-    /**
-     * The first half of a grade: checks and compiles the files, runs the public scenes and the
-     * probes, and judges them, printing what the tester prints for them. It ends there when the
-     * code fails before any hidden scene could run; else {@link #finish} runs the hidden scenes,
-     * whenever the caller chooses. A cohort begins every grade before it finishes any, so that no
-     * run that a student's report quotes comes after a run that had a hidden scene, and none of
-     * them can time one or feel it use the processor.
-     */
-    public Begun begin(Submission submission, Path work, Path images, PrintWriter out, PrintWriter err)
             throws IOException, InterruptedException {
         long start = System.nanoTime();
         Explainer explainer = new Explainer(grading, submission, start, out);
         SourceCheck.Checked checked = SourceCheck.check(submission);
         if (checked instanceof SourceCheck.Problem problem) {
-            return new Finished(explainer.failed(problem.category(), problem.reason(), new Phases(0, 0, 0)));
+            return explainer.failed(problem.category(), problem.reason(), new Phases(0, 0, 0));
         }
-        SourceCheck.Sources sources = (SourceCheck.Sources) checked;
-        CompileStep.Started started = compiler.compile(submission, sources, work);
+        CompileStep.Started started = compiler.compile(submission, (SourceCheck.Sources) checked, work);
         long compileNanos = started.renderStart() - started.compileStart();
         if (!started.compiled().compiled()) {
-            return new Finished(explainer.didNotCompile(started.compiled(), new Phases(compileNanos, 0, 0)));
+            return explainer.didNotCompile(started.compiled(), new Phases(compileNanos, 0, 0));
         }
         out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
                 + " with the starter code.");
         SceneRuns.PublicRun run = runs.runPublic(started, work);
-        long compareStart = System.nanoTime();
+        long publicCompare = System.nanoTime();
         ProbeFindings probes = run.probes().join();
-        List<Judged> judged = new SceneJudge(grading, probes, new FeedbackImages(images, out, err), out)
+        List<Judged> publicScenes = new SceneJudge(grading, probes, new FeedbackImages(images, out, err), out)
                 .judgeBatch(SceneBatch.PUBLIC, run.ran(), List.of());
-        long now = System.nanoTime();
-        return new Halfway(new Halfway.Compiled(submission, sources, started),
-                new Halfway.PublicScenes(judged, probes, run.printed(), run.ran().took()),
-                new Halfway.Spent(new Phases(compileNanos, run.ran().took().toNanos(), now - compareStart),
-                        now - start));
-    }
-
-    /**
-     * The second half of a grade {@link #begin} left halfway: runs the hidden scenes in what the
-     * public run left of the time limit, judges them, and gives the verdict. {@code work} is the
-     * folder the grade began in, or, after {@link Halfway#setAside}, an empty one.
-     */
-    public Graded finish(Halfway halfway, Path work, PrintWriter out) throws IOException, InterruptedException {
-        long start = System.nanoTime();
-        Halfway.Compiled code = halfway.code;
-        Halfway.PublicScenes scenes = halfway.publicScenes;
-        Phases phases = halfway.spent.phases();
-        Explainer explainer = new Explainer(grading, code.submission(), start - halfway.spent.elapsedNanos(), out);
-        CompileStep.Started started = code.started();
-        long compileNanos = 0;
-        if (started == null) {
-            started = compiler.compile(code.submission(), code.sources(), work);
-            compileNanos = started.renderStart() - started.compileStart();
-            if (!started.compiled().compiled()) {
-                // In fixed words: this compile ran beside hidden runs, whose use of the machine may have decided it.
-                return explainer.failed(Category.Outcome.DOES_NOT_COMPILE, COMPILED_ONCE_ONLY,
-                        phases.plus(compileNanos, 0, 0));
-            }
-        }
-        SceneRuns.Ran hidden = runs.runHidden(started, work, scenes.took());
-        long compareStart = System.nanoTime();
-        List<Judged> judged = new ArrayList<>(scenes.judged());
-        judged.addAll(new SceneJudge(grading, scenes.probes(), new FeedbackImages(null, out, out), out)
-                .judgeBatch(SceneBatch.HIDDEN, hidden, scenes.judged()));
-        explainer.lastLinesPrinted(judged, scenes.printed());
-        return explainer.verdict(judged, scenes.probes(), phases.plus(compileNanos, hidden.took().toNanos(),
-                System.nanoTime() - compareStart));
-    }
-
-    /** What {@link #begin} gave: a whole grade, or one {@link Halfway} done. */
-    public sealed interface Begun permits Finished, Halfway {
-    }
-
-    /** A grade that ended before any hidden scene could run. */
-    public record Finished(Graded graded) implements Begun {
-    }
-
-    /**
-     * A grade whose public scenes are run and judged, and whose hidden ones are not yet: what
-     * {@link #finish} needs, and nothing of the public run's images.
-     */
-    public record Halfway(Compiled code, PublicScenes publicScenes, Spent spent) implements Begun {
-        /**
-         * The most bytes of compiled classes a grade set aside keeps on the grader's disk: far more
-         * than any solution's, far less than a compile may make.
-         */
-        static final long KEPT_CLASS_BYTES = 4L << 20;
-        /** The most class files a grade set aside keeps, as {@link #KEPT_CLASS_BYTES}. */
-        static final int KEPT_CLASS_FILES = 200;
-
-        /**
-         * The submission, its checked sources, and their compile: null once {@link #setAside} deleted the
-         * classes, which {@link #finish} then compiles again.
-         */
-        record Compiled(Submission submission, SourceCheck.Sources sources, CompileStep.Started started) {
-        }
-
-        /** The public scenes judged, the behaviour comparison's findings, what the code printed, and the run's time. */
-        record PublicScenes(List<Judged> judged, ProbeFindings probes, String printed, Duration took) {
-            PublicScenes {
-                judged = List.copyOf(judged);
-            }
-        }
-
-        /** The grade's time so far: by phase, and in all. */
-        record Spent(Phases phases, long elapsedNanos) {
-        }
-
-        /**
-         * This grade as it waits for its hidden scenes: with the public run's folder deleted from
-         * {@code work}, and, when the classes are more than a solution's, {@code work} emptied, so
-         * that {@link #finish} compiles them again. What waits on the grader's disk is then small
-         * whatever the code made.
-         */
-        public Halfway setAside(Path work) throws IOException {
-            deleted(work.resolve(SceneRuns.PUBLIC_RUN));
-            if (small(code.started().classes())) {
-                return this;
-            }
-            try (var entries = Files.list(work)) {
-                for (Path entry : entries.toList()) {
-                    deleted(entry);
-                }
-            }
-            return new Halfway(new Compiled(code.submission(), code.sources(), null), publicScenes, spent);
-        }
-
-        private static void deleted(Path folder) throws IOException {
-            String failed = WorkFolder.delete(folder);
-            if (failed != null) {
-                throw new IOException(failed);
-            }
-        }
-
-        /** Whether {@code classes} holds at most the kept bytes and files, by a walk that follows no link. */
-        private static boolean small(Path classes) throws IOException {
-            long[] bytesAndFiles = new long[2];
-            Files.walkFileTree(classes, new SimpleFileVisitor<>() {
-                @Override
-                public FileVisitResult visitFile(Path file, BasicFileAttributes attributes) {
-                    bytesAndFiles[0] += attributes.size();
-                    return ++bytesAndFiles[1] > KEPT_CLASS_FILES || bytesAndFiles[0] > KEPT_CLASS_BYTES
-                            ? FileVisitResult.TERMINATE : FileVisitResult.CONTINUE;
-                }
-            });
-            return bytesAndFiles[1] <= KEPT_CLASS_FILES && bytesAndFiles[0] <= KEPT_CLASS_BYTES;
-        }
+        long compareNanos = System.nanoTime() - publicCompare;
+        SceneRuns.Ran hidden = runs.runHidden(started, work, run.ran().took());
+        long hiddenCompare = System.nanoTime();
+        List<Judged> judged = new ArrayList<>(publicScenes);
+        judged.addAll(new SceneJudge(grading, probes, new FeedbackImages(null, out, out), out)
+                .judgeBatch(SceneBatch.HIDDEN, hidden, publicScenes));
+        explainer.lastLinesPrinted(judged, run.printed());
+        return explainer.verdict(judged, probes, new Phases(compileNanos, run.ran().took().plus(hidden.took())
+                .toNanos(), compareNanos + System.nanoTime() - hiddenCompare));
     }
 
     public static String count(int n, String noun) {
