@@ -13,6 +13,8 @@ import gfx.tick1.command.render.RenderJob;
 import gfx.tick1.command.render.Timings;
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatuses;
+import gfx.tick1.command.shared.cli.Invocation;
+import gfx.tick1.command.shared.cli.NameEncoding;
 import gfx.tick1.command.shared.cli.WholeTokenHelp;
 import gfx.tick1.command.starter.StarterCommand;
 import gfx.tick1.command.vpl.VplCommand;
@@ -20,6 +22,7 @@ import gfx.tick1.engine.scene.Misspelling;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Supplier;
 import picocli.CommandLine.HelpCommand;
 import picocli.CommandLine.ParameterException;
@@ -40,6 +43,11 @@ public final class Tick1 {
 
     public static void main(String[] args) {
         Timings.mainStarted();
+        Optional<String> lostLetters = NameEncoding.problem(args);
+        if (lostLetters.isPresent()) {
+            System.err.println(lostLetters.get());
+            System.exit(ExitStatuses.EXIT_USAGE);
+        }
         // A plain render starts on a guess at its options while picocli reads them (which takes
         // longer than rendering a small frame); the render command checks the guess.
         RenderJob ahead = CommandLineGuess.of(args).filter(guess -> guess.problem().isEmpty()).map(RenderJob::start)
@@ -57,7 +65,7 @@ public final class Tick1 {
 
     private static int outOfMemory(PrintWriter err) {
         err.println("tick1: Java ran out of memory (it may use " + (Runtime.getRuntime().maxMemory() >> 20)
-                + " MiB); give it more with JAVA_OPTS=-Xmx...");
+                + " MiB); give it more with " + Invocation.moreMemory());
         err.flush();
         return ExitStatuses.EXIT_INTERNAL;
     }
@@ -111,6 +119,9 @@ public final class Tick1 {
         commandLine.setHelpFactory(WholeTokenHelp::new);
         commandLine.setExecutionStrategy(Tick1::runUnlessAWordWasLeftOver);
         commandLine.setCaseInsensitiveEnumValuesAllowed(true);
+        // A word starting with @ is a file or folder name (a Moodle folder may be named so), never a
+        // file of further arguments.
+        commandLine.setExpandAtFiles(false);
         commandLine.setParameterExceptionHandler((reported, args) -> {
             UnmatchedArgumentException leftOver = leftOverWord(reported.getCommandLine());
             ParameterException e = leftOver != null ? leftOver : reported;
@@ -122,7 +133,8 @@ public final class Tick1 {
             if (message == null) {
                 message = e.getMessage().replaceAll("(?<!\\.)\\.$", "");
             }
-            err.println(name + ": " + message + suggestion(e) + " (see " + name + " --help)");
+            err.println(name + ": " + message + suggestion(e) + " (see " + Invocation.command()
+                    + name.substring("tick1".length()) + " --help)");
             err.flush();
             return ExitStatuses.EXIT_USAGE;
         });

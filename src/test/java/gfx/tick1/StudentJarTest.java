@@ -132,7 +132,12 @@ class StudentJarTest {
 
     /** One run of {@code java -jar tick1.jar args} in the bare root, in the student's folder {@code folder} there. */
     private CliRun run(String folder, String... args) throws IOException, InterruptedException {
-        Process process = start(folder, args);
+        return runIn("C.UTF-8", folder, args);
+    }
+
+    /** As {@link #run}, with LANG set to this locale. */
+    private CliRun runIn(String locale, String folder, String... args) throws IOException, InterruptedException {
+        Process process = start(locale, folder, args);
         if (!process.waitFor(RUN_LIMIT.toSeconds(), TimeUnit.SECONDS)) {
             process.destroyForcibly().waitFor();
         }
@@ -147,9 +152,9 @@ class StudentJarTest {
         return printed.resolve("err.txt");
     }
 
-    private Process start(String folder, String... args) throws IOException {
+    private Process start(String locale, String folder, String... args) throws IOException {
         List<String> command = new ArrayList<>(bareRoot);
-        command.addAll(List.of("--bind", home.toString(), HOME, "--chdir", folder, "--",
+        command.addAll(List.of("--setenv", "LANG", locale, "--bind", home.toString(), HOME, "--chdir", folder, "--",
                 Path.of(System.getProperty("java.home")).toRealPath().resolve("bin/java").toString(), "-jar", JAR));
         command.addAll(List.of(args));
         return new ProcessBuilder(command).redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")))
@@ -169,6 +174,17 @@ class StudentJarTest {
         assertThat(run.status()).as(run.transcript()).isEqualTo(1);
         assertThat(run.err().lines()).as(run.transcript()).singleElement().asString()
                 .contains("java -jar \"" + JAR + "\" starter writes the starter kit");
+    }
+
+    @Test
+    void inALocaleThatLosesTheFoldersLettersItStopsInOneLineSayingHowToStart()
+            throws IOException, InterruptedException {
+        give("scenes/basic_scene.xml", "basic_scene.xml");
+        CliRun run = runIn("C", HOME, "-i", "basic_scene.xml", "-o", "ours.png");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(2);
+        assertThat(run.err().lines()).as(run.transcript()).singleElement().asString()
+                .contains("the current folder's name has letters that Java cannot read", "LC_ALL=C.UTF-8 java -jar");
+        assertThat(home.resolve("ours.png")).as("nothing written, here or beside").doesNotExist();
     }
 
     @Test
@@ -266,7 +282,7 @@ class StudentJarTest {
     @Test
     void previewServesThePageAndEveryModuleItImports() throws IOException, InterruptedException {
         give("scenes/tick1.xml", "tick1.xml");
-        Process preview = start(HOME, "preview", "--no-open", "--port", "0", "tick1.xml");
+        Process preview = start("C.UTF-8", HOME, "preview", "--no-open", "--port", "0", "tick1.xml");
         try {
             URI page = null;
             for (long deadline = System.nanoTime() + RUN_LIMIT.toNanos(); page == null && preview.isAlive()

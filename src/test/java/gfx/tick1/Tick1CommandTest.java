@@ -129,6 +129,17 @@ class Tick1CommandTest {
     }
 
     @Test
+    void aWordStartingWithAnAtSignIsANameNotAFileOfArguments() throws IOException {
+        // picocli reads "@NAME" as a file of further arguments unless told not to; a folder so
+        // named then gave a stack trace.
+        Path folder = Files.createDirectory(dir.resolve("cohort"));
+        CliRun run = CliRun.of("compare", "@" + folder, dir.resolve("b.png").toString());
+        assertThat(run.err()).as("one line, about the file as named").hasLineCount(1).contains("@" + folder)
+                .doesNotContain("Exception");
+        assertThat(run.status()).as(run.err()).isNotZero();
+    }
+
+    @Test
     void anUnwritableOutputGivesStatusThreeAndLeavesNoTemporaryFile() throws IOException {
         Path output = dir.resolve("no-such-dir").resolve("out.png");
         CliRun run = CliRun.of("-i", "scenes/basic_scene.xml", "-o", output.toString(),

@@ -204,9 +204,16 @@ public final class GradeCommand implements Callable<Integer> {
         try {
             return Sandbox.confined();
         } catch (Sandbox.Unavailable e) {
-            String noSandbox = "give --no-sandbox to grade without a sandbox";
-            throw new CommandFailure(EXIT_USAGE, e.getMessage() + (e.remedy() == null ? vpl() ? "" : ": " + noSandbox
-                    : ": " + e.remedy() + (vpl() ? "" : ", or " + noSandbox)));
+            // --no-sandbox is offered only where it is allowed: one student's files, not VPL or a cohort.
+            List<String> remedies = new ArrayList<>();
+            if (e.remedy() != null) {
+                remedies.add(e.remedy());
+            }
+            if (!vpl() && target.cohort == null) {
+                remedies.add("give --no-sandbox to grade without a sandbox");
+            }
+            throw new CommandFailure(EXIT_USAGE, e.getMessage() + (remedies.isEmpty() ? "" : ": "
+                    + String.join(", or ", remedies)));
         }
     }
 

@@ -1,5 +1,6 @@
 package gfx.tick1.command.render;
 
+import gfx.tick1.command.shared.cli.Invocation;
 import gfx.tick1.engine.render.SamplePattern;
 import gfx.tick1.engine.scene.Intersection;
 import java.util.Optional;
@@ -56,8 +57,8 @@ public record RenderOptions(String input, boolean strict, int width, int height,
         long available = Runtime.getRuntime().maxMemory() / 2;
         if (needed > available) {
             return Optional.of(String.format("a %d x %d image needs about %d MiB, more than half of the %d MiB this "
-                    + "Java may use; raise that with JAVA_OPTS=-Xmx...", width, height, needed >> 20,
-                    Runtime.getRuntime().maxMemory() >> 20));
+                    + "Java may use; raise that with %s", width, height, needed >> 20,
+                    Runtime.getRuntime().maxMemory() >> 20, Invocation.moreMemory()));
         }
         return Optional.empty();
     }

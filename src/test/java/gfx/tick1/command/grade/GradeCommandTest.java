@@ -432,6 +432,28 @@ class GradeCommandTest {
                 .contains("bubblewrap is not installed", "install the bubblewrap package", "--no-sandbox");
     }
 
+    @Test
+    void withoutBubblewrapACohortIsNotToldOfTheOptionItRefuses() throws IOException, InterruptedException {
+        // A Moodle download's folder: "Full Name_participant id_assignsubmission_file_" (mod/assign, Moodle 4.x).
+        StudentSolution.correct().writeTo(dir.resolve("download").resolve("Ann Lee_101_assignsubmission_file_"));
+        CliRun run = CliRun.inJvm(dir, List.of("-Dtick1.grade.bwrap=" + dir.resolve("no-bwrap-here")), "grade",
+                "--submissions", dir.resolve("download").toString(), "--report", dir.resolve("cohort").toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines()).singleElement().asString().contains("install the bubblewrap package")
+                .as("--submissions refuses --no-sandbox, so it is not offered").doesNotContain("--no-sandbox");
+    }
+
+    @Test
+    void offLinuxTheGradeSaysTheSandboxNeedsLinuxAndOffersTheOptionNotAPackage()
+            throws IOException, InterruptedException {
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        CliRun run = CliRun.inJvm(dir, List.of("-Dos.name=Mac OS X"), "grade", "--sphere", files[0].toString(),
+                "--renderer", files[1].toString(), "--report", dir.resolve("report").toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
+        assertThat(run.err().lines()).singleElement().asString()
+                .contains("the sandbox needs Linux (this is Mac OS X)", "--no-sandbox").doesNotContain("apt-get");
+    }
+
     /** In a container or a chroot bubblewrap is there but the kernel gives it no namespaces: installing is no cure. */
     @Test
     void whereTheKernelRefusesNamespacesTheGradeSaysSoInOneLineNotThatBubblewrapIsMissing()

@@ -26,4 +26,14 @@ public final class Invocation {
         boolean quoted = classPath.chars().anyMatch(Character::isWhitespace);
         return "java -jar " + (quoted ? "\"" + classPath + "\"" : classPath);
     }
+
+    /** How to give this tick1's Java more heap: the launcher reads JAVA_OPTS, {@code java -jar} takes -Xmx. */
+    public static String moreMemory() {
+        return moreMemory(command());
+    }
+
+    /** As {@link #moreMemory()}, for tick1 started by this {@link #command()}. */
+    static String moreMemory(String command) {
+        return command.equals("tick1") ? "JAVA_OPTS=-Xmx..." : command.replaceFirst("^java ", "java -Xmx... ");
+    }
 }

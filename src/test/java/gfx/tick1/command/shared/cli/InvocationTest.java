@@ -29,4 +29,11 @@ class InvocationTest {
     void aJarOnTheClassPathWithAMainClassNamedIsNotJavaDashJar() {
         assertThat(Invocation.command("gfx.tick1.Tick1", "tick1.jar")).isEqualTo("tick1");
     }
+
+    @Test
+    void theLauncherTakesMoreHeapFromJavaOptsAndTheJarFromMinusXmx() {
+        assertThat(Invocation.moreMemory("tick1")).as("the launcher reads JAVA_OPTS").isEqualTo("JAVA_OPTS=-Xmx...");
+        assertThat(Invocation.moreMemory("java -jar \"Tick 1/tick1.jar\""))
+                .as("java -jar ignores JAVA_OPTS").isEqualTo("java -Xmx... -jar \"Tick 1/tick1.jar\"");
+    }
 }

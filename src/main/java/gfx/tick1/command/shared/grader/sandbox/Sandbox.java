@@ -111,6 +111,10 @@ public final class Sandbox {
      */
     public static Sandbox confined() throws Unavailable, InterruptedException {
         Path bwrap = Path.of(System.getProperty(BWRAP_PROPERTY, "/usr/bin/bwrap"));
+        if (!System.getProperty("os.name", "").startsWith("Linux")) {
+            // bubblewrap is Linux's alone: there is nothing to install.
+            throw new Unavailable("the sandbox needs Linux (this is " + System.getProperty("os.name") + ")");
+        }
         if (!Files.isExecutable(bwrap)) {
             throw new Unavailable("bubblewrap is not installed", "install the " + PACKAGE + " package (apt-get install "
                     + PACKAGE + ")");
