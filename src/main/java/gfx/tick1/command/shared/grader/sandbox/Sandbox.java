@@ -42,7 +42,6 @@ public final class Sandbox {
     private static final String BWRAP_PROPERTY = "tick1.grade.bwrap";
     private static final Path TRUE = Path.of("/usr/bin/true");
 
-
     /** A folder of the grader's, bound into the sandbox at {@code inside}, writable or not. */
     record Bind(Path outside, String inside, boolean writable) {
     }
@@ -176,12 +175,14 @@ public final class Sandbox {
         RunUsers.checkReachable(uid, folder);
     }
 
-    /**
-     * Makes {@code folder} readable (or, if {@code writable}, owned) by the run's user alone
-     * ({@link RunUsers#share}).
-     */
-    public void share(Path folder, boolean writable) throws IOException {
-        RunUsers.share(uid, folder, writable);
+    /** Makes {@code folder} readable by the run's user alone ({@link RunUsers#share}). */
+    public void share(Path folder) throws IOException {
+        RunUsers.share(uid, folder, false);
+    }
+
+    /** Makes {@code folder} owned, so writable, by the run's user alone ({@link RunUsers#share}). */
+    public void shareWritable(Path folder) throws IOException {
+        RunUsers.share(uid, folder, true);
     }
 
     /** What this sandbox holds the code to: results graded under other rules are graded again. */
@@ -191,44 +192,8 @@ public final class Sandbox {
     }
 
     /**
-     * Null when each run is held to totals by a control group of its own; else the one line that
-     * says they are not (the limits are then per process only).
-     */
-    public String totalsNotEnforced() {
-        return !confined || host.cgroups() != null ? null
-                : "no control group can be made here (cgroup v2 not delegated, cgroup v1 memory and pids not "
-                        + "writable): the limits are per process; memory, processes and CPU are not limited in all";
-    }
-
-    /**
-     * Null when the sandbox refuses the calls that reserve disk space a size does not show and those
-     * that drop pages from the host's page cache ({@link SeccompFilter}); else the one line that says
-     * it does not, on this machine.
-     */
-    public String callsNotRefused() {
-        return !confined || host.seccompFilter() != null ? null
-                : "tick1 has no seccomp filter for this machine (" + System.getProperty("os.arch") + "): disk space "
-                        + "the code reserves with fallocate is not counted in its output folder's limit, and a run "
-                        + "can drop the JDK's files from the page cache while another run going at the same time "
-                        + "times its reads";
-    }
-
-    /**
-     * Null when each run's output folder is a file system of its own whose size and number of
-     * files the kernel enforces; else the one line that says it is not.
-     */
-    public String diskNotEnforced() {
-        return !confined || host.ownDisks() ? null
-                : (uid < 0 ? "grading as a normal user" : "no file system can be mounted here")
-                        + ": the output folder of each run is on the host's disk, held to its limit by a count of "
-                        + "its files' names, which misses files the code deletes while it holds them open, and the "
-                        + "code can load what it writes there as machine code; a cohort's "
-                        + "compiler writes its class files there too, counted only once it has compiled";
-    }
-
-    /**
      * The file system of one run's output folder {@code folder}, an empty folder this sandbox has
-     * {@link #share shared} for writing: a tmpfs of its own where the sandbox can mount one (close
+     * {@link #shareWritable shared} for writing: a tmpfs of its own where the sandbox can mount one (close
      * it once the folder is read), else the folder as it is.
      */
     OutputDisk outputDisk(Path folder) throws IOException {
