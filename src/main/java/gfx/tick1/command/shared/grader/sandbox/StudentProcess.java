@@ -17,7 +17,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
@@ -181,26 +180,10 @@ public final class StudentProcess implements AutoCloseable {
     private Compiled copiedIfCompiled(Run run, Path written, Path output, Duration timeLimit) throws IOException {
         Compiled compiled = HarnessOutput.compiled(run, written, timeLimit, jvm.compilerHeap());
         if (compiled.compiled()) {
-            copyClasses(written.resolve(StudentHarness.CLASSES_FOLDER), output.resolve(StudentHarness.CLASSES_FOLDER));
+            ChildOutput.copy(written.resolve(StudentHarness.CLASSES_FOLDER),
+                    output.resolve(StudentHarness.CLASSES_FOLDER));
         }
         return compiled;
-    }
-
-    /**
-     * Copies the folders and regular files under {@code from} to {@code to}, and nothing else:
-     * no link is followed or copied.
-     */
-    private static void copyClasses(Path from, Path to) throws IOException {
-        try (var files = Files.walk(from)) {
-            for (Path file : files.toList()) {
-                Path copy = to.resolve(from.relativize(file).toString());
-                if (ChildOutput.isDirectory(file)) {
-                    Files.createDirectories(copy);
-                } else if (ChildOutput.isRegularFile(file)) {
-                    Files.copy(file, copy, LinkOption.NOFOLLOW_LINKS);
-                }
-            }
-        }
     }
 
     /**
