@@ -183,12 +183,7 @@ public final class GradeCommand implements Callable<Integer> {
         int status = call(sandbox, out, err);
         ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
                 .ifPresent(shortfall -> err.println("tick1 grade: warning: " + shortfall.line(options.scenesFolder())));
-        for (String warning : new String[] {sandbox.totalsNotEnforced(), sandbox.callsNotRefused(),
-                sandbox.diskNotEnforced()}) {
-            if (warning != null) {
-                err.println("tick1 grade: warning: " + warning);
-            }
-        }
+        sandbox.enforcement().warnings().forEach(warning -> err.println("tick1 grade: warning: " + warning));
         err.flush();
         return status;
     }

@@ -379,7 +379,8 @@ class GradeAttackTest {
         "hold-deleted-small-files | it made more than 10000 files and folders in its output folder"})
     void filesTheCodeDeletesWhileHoldingThemCountAgainstItsOutputFolder(String attack, String limit)
             throws Exception {
-        assumeThat(Sandbox.confined().diskNotEnforced()).as("the kernel holds the output folder here").isNull();
+        assumeThat(Sandbox.confined().enforcement().diskNotEnforced()).as("the kernel holds the output folder here")
+                .isNull();
         Grade grade = grade(attack, "--time-limit", "60");
         assertFailedAndHarmedNothing(grade);
         assertThat(grade.output()).contains("tick1.xml: FAIL: the program was stopped: " + limit);
@@ -687,8 +688,8 @@ class GradeAttackTest {
      */
     @Test
     void aRunCannotMapFilesItWroteAsCodeNorWriteItsCodeThroughProc() throws Exception {
-        assumeThat(Sandbox.confined().diskNotEnforced()).as("the output folder is a file system of its own (as root)")
-                .isNull();
+        assumeThat(Sandbox.confined().enforcement().diskNotEnforced())
+                .as("the output folder is a file system of its own (as root)").isNull();
         Grade grade = grade("native-code-from-its-own-files");
         assertThat(grade.output()).as("what the attack did").doesNotContain("native code:");
         assertThat(grade.status()).as("tick1.xml's run and the hidden scene's both refused it:\n" + grade.output())
@@ -780,7 +781,7 @@ class GradeAttackTest {
 
     /** Whether this machine gives each run a control group (the grade warns when it cannot). */
     private static boolean totalsEnforced() throws Sandbox.Unavailable, InterruptedException {
-        return Sandbox.confined().totalsNotEnforced() == null;
+        return Sandbox.confined().enforcement().totalsNotEnforced() == null;
     }
 
     @Test

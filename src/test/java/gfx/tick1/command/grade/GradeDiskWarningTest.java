@@ -46,7 +46,7 @@ class GradeDiskWarningTest {
     @Test
     void withoutOutputDisksTheGradeSaysSoInOneWarningLineAndGrades() throws Exception {
         Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
-        String warning = Sandbox.confined().diskNotEnforced();
+        String warning = Sandbox.confined().enforcement().diskNotEnforced();
         assertThat(warning).as("the sandbox's word that the output folder is on the host's disk").isNotNull();
 
         CliRun run = CliRun.of("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
@@ -69,7 +69,7 @@ class GradeDiskWarningTest {
 
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_CANNOT_WRITE);
         assertThat(run.err().lines().toList()).as("what the grade printed on stderr").hasSizeGreaterThan(1)
-                .endsWith("tick1 grade: warning: " + Sandbox.confined().diskNotEnforced())
+                .endsWith("tick1 grade: warning: " + Sandbox.confined().enforcement().diskNotEnforced())
                 .first().asString().contains("exists and is not a folder");
     }
 

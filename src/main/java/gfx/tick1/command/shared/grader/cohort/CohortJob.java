@@ -56,7 +56,7 @@ final class CohortJob {
             Sandbox jobSandbox = cohort.sandbox.forJob(number);
             Files.createDirectory(folder);
             cohort.grading.copyScenes(folder);
-            jobSandbox.share(folder, false);
+            jobSandbox.share(folder);
             StudentProcess process = shared.in(jobSandbox).withWarmCompiler(compilerFolder);
             cohort.started(process);
             grader = new SubmissionGrader(cohort.grading, jobSandbox, process, folder);

@@ -4,10 +4,8 @@ import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
-import gfx.tick1.command.shared.kit.StarterKit;
 import gfx.tick1.engine.io.Counted;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -83,16 +81,11 @@ public final class CodeProbe {
         Path harness = Files.createDirectory(work.resolve("harness"));
         StudentProcess.writeHarness(harness);
         StudentProcess process = new StudentProcess(sandbox, harness, MEMORY_MEGABYTES);
-        Path sources = Files.createDirectory(work.resolve("sources"));
-        Files.writeString(sources.resolve("Sphere.java"), sphere, StandardCharsets.UTF_8);
-        Files.writeString(sources.resolve("Renderer.java"), renderer, StandardCharsets.UTF_8);
-        for (String given : StarterKit.GIVEN_CLASSES) {
-            Files.writeString(sources.resolve(given + ".java"), StarterKit.source(given), StandardCharsets.UTF_8);
-        }
+        Path sources = StudentProcess.writeSources(work, sphere, renderer);
         Path scenes = Files.createDirectory(work.resolve("scenes"));
-        sandbox.share(work, false);
+        sandbox.share(work);
         Path output = Files.createDirectory(work.resolve("output"));
-        sandbox.share(output, true);
+        sandbox.shareWritable(output);
         StudentProcess.CompiledAndRendered run = process.compileAndRender(sources,
                 new StudentProcess.Batch(scenes, List.of(), 1, 1, SceneBatch.PUBLIC), output, "Sphere.java",
                 "Renderer.java", TIME_LIMIT);

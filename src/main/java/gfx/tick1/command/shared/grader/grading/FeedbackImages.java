@@ -1,6 +1,7 @@
 package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.grader.grading.Grading.CourseScene;
+import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult.Images;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.image.PngOutput;
 import gfx.tick1.engine.io.IoErrors;
@@ -17,10 +18,6 @@ import java.util.Optional;
  */
 final class FeedbackImages {
 
-    /** The file names written, in the feedback folder. */
-    record Written(String heatMap, String yours, String expected) {
-    }
-
     private final Path images;
     private final PrintWriter out;
     private final PrintWriter err;
@@ -33,10 +30,10 @@ final class FeedbackImages {
     }
 
     /** The names of the three images written for scene {@code number}, or empty when they could not be. */
-    Optional<Written> write(int number, CourseScene scene, BufferedImage image, ImageDifference difference,
+    Optional<Images> write(int number, CourseScene scene, BufferedImage image, ImageDifference difference,
             BufferedImage expected) {
         String stem = number + "-" + scene.name().replaceAll("[^A-Za-z0-9._-]", "_").replaceAll("\\.xml$", "");
-        Written names = new Written(stem + "-diff.png", stem + "-yours.png", stem + "-expected.png");
+        Images names = new Images(stem + "-diff.png", stem + "-yours.png", stem + "-expected.png");
         try {
             Files.createDirectories(images);
             PngOutput.write(difference.signedHeatMapWithLegend(), images.resolve(names.heatMap()));

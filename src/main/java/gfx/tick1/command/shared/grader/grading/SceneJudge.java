@@ -189,11 +189,10 @@ final class SceneJudge {
         }
         Explained explained = explain(scene, image, difference, lines);
         print(scene, lines);
-        Optional<FeedbackImages.Written> written = images.write(number, scene, image, difference,
+        Optional<SceneResult.Images> written = images.write(number, scene, image, difference,
                 againstHandout ? references.handout() : references.robust());
-        SceneResult result = written.map(names -> new SceneResult(scene.name(), false, false, lines,
-                new SceneResult.Images(names.heatMap(), names.yours(), names.expected())))
-                .orElseGet(() -> new SceneResult(scene.name(), false, false, lines, SceneResult.Images.NONE));
+        SceneResult result = new SceneResult(scene.name(), false, false, lines,
+                written.orElse(SceneResult.Images.NONE));
         Findings found = explained.found();
         return new Judged(result, explained.verdict(), explained.showedProbes(), written.isEmpty(),
                 new Findings(found.catalogued(), found.failed(), found.notes(),

@@ -16,9 +16,10 @@ import java.util.concurrent.CompletableFuture;
 /**
  * The grade's run steps: the public scenes (with the probes), then the hidden ones in a JVM of
  * their own, so that what the student's code prints while it has a hidden scene open is never
- * shown. Both share the one time limit, which the public run's time counts against.
+ * shown. Both share the one time limit, which the public run's time counts against. The runs render
+ * {@code grading}'s scenes, copied into {@code scenes}, with {@code process} in {@code sandbox}.
  */
-final class SceneRuns {
+record SceneRuns(Grading grading, Sandbox sandbox, StudentProcess process, Path scenes) {
 
     /** One run's outcomes and traced samples, in grading order, and how long it took. */
     record Ran(List<Outcome> outcomes, List<String> traces, Duration took) {
@@ -33,18 +34,6 @@ final class SceneRuns {
 
     /** The public run's output folder in a grade's work folder. */
     private static final String PUBLIC_RUN = "public-run";
-
-    private final Grading grading;
-    private final Sandbox sandbox;
-    private final StudentProcess process;
-    private final Path scenes;
-
-    SceneRuns(Grading grading, Sandbox sandbox, StudentProcess process, Path scenes) {
-        this.grading = grading;
-        this.sandbox = sandbox;
-        this.process = process;
-        this.scenes = scenes;
-    }
 
     /** Runs the public scenes and the probes, within the whole time limit, which starts as compiling ends. */
     PublicRun runPublic(CompileStep.Started started, Path work) throws IOException, InterruptedException {

@@ -64,31 +64,24 @@ public final class Submissions {
      */
     public static List<Submission> read(Path path, IntakeLimits limits) throws IOException {
         Submissions intake = new Submissions(path, limits);
-        if (Files.isDirectory(path)) {
-            try {
-                return intake.resolveAll(intake.readFolder(path));
-            } catch (CohortInputException e) {
-                throw e;
-            } catch (IOException e) {
-                throw new CohortInputException(path + ": cannot read the folder (" + reason(e) + ")");
-            }
-        }
-        if (!Files.isRegularFile(path)) {
+        boolean folder = Files.isDirectory(path);
+        if (!folder && !Files.isRegularFile(path)) {
             throw new CohortInputException(path + ": no such file or folder");
         }
-        Optional<String> notZip = FileKind.unlessZip(path);
+        Optional<String> notZip = folder ? Optional.empty() : FileKind.unlessZip(path);
         if (notZip.isPresent()) {
             throw new CohortInputException(path + ": " + notZip.get() + ", not a zip: --submissions wants Moodle's "
                     + "\"Download all submissions\" zip, or the folder it unpacks to (a grading worksheet goes to "
                     + "--worksheet)");
         }
         // The zip's entries are read while its channel is open: the submissions are resolved inside.
-        try (FileChannel channel = FileChannel.open(path, StandardOpenOption.READ)) {
-            return intake.resolveAll(intake.readZip(path, channel));
+        try (FileChannel channel = folder ? null : FileChannel.open(path, StandardOpenOption.READ)) {
+            return intake.resolveAll(folder ? intake.readFolder(path) : intake.readZip(path, channel));
         } catch (CohortInputException e) {
             throw e;
         } catch (IOException e) {
-            throw new CohortInputException(path + ": cannot read the download (" + reason(e) + ")");
+            throw new CohortInputException(path + ": cannot read the " + (folder ? "folder" : "download") + " ("
+                    + reason(e) + ")");
         }
     }
 

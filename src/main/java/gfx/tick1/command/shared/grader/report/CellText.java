@@ -39,18 +39,8 @@ final class CellText {
      * and escaped as {@link #cell}.
      */
     static String comment(String reason) {
-        String prose = ReasonText.of(reason).prose();
-        StringBuilder out = new StringBuilder(prose.length() + 16);
-        for (int i = 0; i < prose.length(); i++) {
-            char c = prose.charAt(i);
-            switch (c) {
-                case '&' -> out.append("&amp;");
-                case '<' -> out.append("&lt;");
-                case '>' -> out.append("&gt;");
-                default -> out.append(c);
-            }
-        }
-        return cell(FindingText.fitted(out.toString(), MAX_CELL - 1, CohortOutputs.REST));
+        String prose = ReasonText.of(reason).prose().replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
+        return cell(FindingText.fitted(prose, MAX_CELL - 1, CohortOutputs.REST));
     }
 
     /** A reason as one line of prose: runs of white space (line breaks included) as one space, no "( " padding. */

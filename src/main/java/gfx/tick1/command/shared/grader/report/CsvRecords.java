@@ -60,6 +60,11 @@ final class CsvRecords {
             return index < cells.size() ? cells.get(index).value() : "";
         }
 
+        /** The values of its cells, in order. */
+        List<String> values() {
+            return cells.stream().map(Cell::value).toList();
+        }
+
         /** A line on its own: one empty cell. */
         boolean blank() {
             return cells.size() == 1 && cells.get(0).end() == cells.get(0).start();

@@ -88,8 +88,8 @@ public final class Worksheet {
         identifier = column(name, header, IDENTIFIER);
         grade = column(name, header, GRADE);
         feedback = column(name, header, FEEDBACK);
-        fullName = header.cells().stream().map(CsvRecords.Cell::value).toList().indexOf(FULL_NAME);
-        maximum = header.cells().stream().map(CsvRecords.Cell::value).toList().indexOf(MAXIMUM_GRADE);
+        fullName = header.values().indexOf(FULL_NAME);
+        maximum = header.values().indexOf(MAXIMUM_GRADE);
     }
 
     /**
@@ -144,29 +144,22 @@ public final class Worksheet {
      * A fresh worksheet: {@link #HEADER}, then one row per mark in the order given, RFC 4180 quoting where a cell
      * needs it, CRLF line endings, UTF-8 without a byte-order mark (as Moodle's own download). Every cell is
      * bounded and kept from being a formula ({@link CellText#cell}); the feedback is plain text safe as HTML
-     * ({@link CellText#comment}).
+     * ({@link CellText#comment}). A row whose {@code Grade} and {@code Feedback comments} are those of the same
+     * participant's row in {@code earlier} keeps that row's {@code Last modified (grade)}: a grade is as old as
+     * its making, so an upload of an unchanged grade never claims to be newer than a change made in Moodle since.
+     * An earlier worksheet that cannot be read keeps no time.
      *
      * @param maxGrade the grade of a pass, for the {@code Maximum Grade} column
      * @param gradedAt when the grades were made, for {@code Last modified (grade)}
-     */
-    public static byte[] fresh(List<Mark> marks, double maxGrade, ZonedDateTime gradedAt) {
-        return fresh(marks, maxGrade, gradedAt, null);
-    }
-
-    /**
-     * {@link #fresh(List, double, ZonedDateTime)}, where a row whose {@code Grade} and {@code Feedback comments}
-     * are those of the same participant's row in {@code earlier} (the worksheet an earlier grade wrote, or null)
-     * keeps that row's {@code Last modified (grade)}: a grade is as old as its making, so an upload of an
-     * unchanged grade never claims to be newer than a change made in Moodle since. An earlier worksheet that
-     * cannot be read keeps no time.
+     * @param earlier  the worksheet an earlier grade wrote, or null
      */
     public static byte[] fresh(List<Mark> marks, double maxGrade, ZonedDateTime gradedAt, byte[] earlier) {
         Map<String, List<String>> earlierRows = new LinkedHashMap<>();
         try {
             List<CsvRecords.Row> rows = earlier == null ? List.of() : CsvRecords.read(earlier);
-            if (!rows.isEmpty() && rows.get(0).cells().stream().map(CsvRecords.Cell::value).toList().equals(HEADER)) {
+            if (!rows.isEmpty() && rows.get(0).values().equals(HEADER)) {
                 for (CsvRecords.Row row : rows.subList(1, rows.size())) {
-                    earlierRows.putIfAbsent(row.value(0), row.cells().stream().map(CsvRecords.Cell::value).toList());
+                    earlierRows.putIfAbsent(row.value(0), row.values());
                 }
             }
         } catch (CsvRecords.Malformed e) {
@@ -245,16 +238,6 @@ public final class Worksheet {
                     + "grading page");
         }
         return new Worksheet(name, worksheet, rows);
-    }
-
-    /** {@link #fill(List)} of a worksheet read from disk; the file itself is left as it is. */
-    public static Filled fill(Path worksheet, List<Mark> marks) throws CohortInputException {
-        return read(worksheet).fill(marks);
-    }
-
-    /** {@link #fill(List)} of a worksheet's bytes; {@code name} is for messages. */
-    public static Filled fill(String name, byte[] worksheet, List<Mark> marks) throws CohortInputException {
-        return parse(name, worksheet).fill(marks);
     }
 
     /**
@@ -352,10 +335,8 @@ public final class Worksheet {
     }
 
     private static int column(String name, CsvRecords.Row header, String title) throws CohortInputException {
-        for (int i = 0; i < header.cells().size(); i++) {
-            if (header.cells().get(i).value().equals(title)) {
-                return i;
-            }
+        if (header.values().contains(title)) {
+            return header.values().indexOf(title);
         }
         throw new CohortInputException(name + ":" + header.line() + ": no \"" + title + "\" column in the header; "
                 + "is this the assignment's grading worksheet" + (title.equals(FEEDBACK)

@@ -26,7 +26,7 @@ public final class ChildOutput {
 
     /** The most text read from one file of the child's. */
     static final int TEXT_CAP = 64 * 1024;
-    /** The cap on the probes' log: about 250 KB of answers to the random inputs, with room to spare. */
+    /** The cap on the probes' log: the answers to every random input, with room to spare. */
     static final int PROBES_CAP = 1 << 20;
 
     /** The eight bytes that begin every PNG file. */
@@ -59,6 +59,23 @@ public final class ChildOutput {
             return Files.readAttributes(folder, BasicFileAttributes.class, LinkOption.NOFOLLOW_LINKS).isDirectory();
         } catch (IOException e) {
             return false;
+        }
+    }
+
+    /**
+     * Copies the folders and regular files under {@code from} to {@code to}, and nothing else:
+     * no link is followed or copied.
+     */
+    static void copy(Path from, Path to) throws IOException {
+        try (var files = Files.walk(from)) {
+            for (Path file : files.toList()) {
+                Path copy = to.resolve(from.relativize(file).toString());
+                if (isDirectory(file)) {
+                    Files.createDirectories(copy);
+                } else if (isRegularFile(file)) {
+                    Files.copy(file, copy, LinkOption.NOFOLLOW_LINKS);
+                }
+            }
         }
     }
 

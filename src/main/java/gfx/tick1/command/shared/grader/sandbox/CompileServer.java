@@ -22,10 +22,10 @@ import java.util.regex.Pattern;
 
 /**
  * The warm compiler of one cohort job: a JVM in the sandbox that runs the harness's
- * {@code compile-server} and compiles submission after submission, so that javac's own warm-up
- * (about nine tenths of a fresh JVM's compile) is paid once, not once a submission. No code of
- * a student's runs in it ({@code -proc:none}): it reads sources and writes class files, which the
- * grader copies out for the JVMs that run the code. It is started again after any compile that
+ * {@code compile-server} and compiles submission after submission, so that javac's own warm-up,
+ * most of a fresh JVM's compile, is paid once, not once a submission. No code of a student's runs
+ * in it ({@code -proc:none}): it reads sources and writes class files, which the grader copies out
+ * for the JVMs that run the code. It is started again after any compile that
  * did not succeed (an error, the time limit, memory, its end) and after
  * {@value #COMPILES_PER_START} compiles, so that no compile inherits a compiler in a bad state
  * and its processor-time limit stays that of a bounded number of compiles. It may write in the
@@ -93,7 +93,7 @@ final class CompileServer implements AutoCloseable {
             disk = null;
             WorkFolder.delete(folder);
             Files.createDirectory(folder);
-            sandbox.share(folder, false);
+            sandbox.share(folder);
             disk = sandbox.compilerDisk(folder);
         }
         Path request = Files.createDirectory(folder.resolve(Integer.toString(next++)));
@@ -139,7 +139,7 @@ final class CompileServer implements AutoCloseable {
         Files.writeString(request.resolve(StudentHarness.NAMES_FILE), sphereName + "\0" + rendererName,
                 StandardCharsets.UTF_8);
         // The request's folders are the grader's, readable by the compiler: it may write in the output only.
-        sandbox.share(request, false);
+        sandbox.share(request);
         long deadline = System.nanoTime() + timeLimit.toNanos();
         boolean servedOthers = servedOthers();
         Attempt first = attempt(request, timeLimit);
@@ -159,7 +159,7 @@ final class CompileServer implements AutoCloseable {
 
     private Attempt attempt(Path request, Duration timeLimit) throws IOException, InterruptedException {
         Path output = Files.createDirectory(request.resolve(StudentHarness.OUTPUT_FOLDER));
-        sandbox.share(output, true);
+        sandbox.shareWritable(output);
         // This compile's own references: stop() may end the compiler meanwhile.
         Started compiler = ready(timeLimit);
         Answers heard = answers;

@@ -22,7 +22,7 @@ record RunLimits(int cpuSeconds, long addressSpaceMiB, boolean oneCore) {
     /** The most files the student's process may write, each at most this big (RLIMIT_FSIZE). */
     static final long FILE_SIZE_LIMIT = 64L << 20;
     private static final int OPEN_FILES_LIMIT = 256;
-    /** Threads count as processes: the JVM needs about 20; the student's code one. */
+    /** Threads count as processes: the JVM's own, with room to spare, and the student's code's one. */
     static final int PROCESSES_LIMIT = 96;
 
     /**

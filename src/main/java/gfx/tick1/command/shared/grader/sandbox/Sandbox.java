@@ -42,7 +42,6 @@ public final class Sandbox {
     private static final String BWRAP_PROPERTY = "tick1.grade.bwrap";
     private static final Path TRUE = Path.of("/usr/bin/true");
 
-
     /** A folder of the grader's, bound into the sandbox at {@code inside}, writable or not. */
     record Bind(Path outside, String inside, boolean writable) {
     }
@@ -52,15 +51,12 @@ public final class Sandbox {
 
     /** What this machine gives the sandbox: its bwrap, control groups, seccomp filter and output disks. */
     private final Host host;
-    /** Whether there is a bwrap: false for {@link #unconfined()}. */
-    private final boolean confined;
     /** The user the student's code runs as when the grader is root; -1 to keep the grader's. */
     private final int uid;
     /** Which of the grades this program runs at once this sandbox is for: 0 for a single grade. */
     private final int job;
     private Sandbox(Host host, int uid, int job) {
         this.host = host;
-        this.confined = host.bwrap() != null;
         this.uid = uid;
         this.job = job;
     }
@@ -162,8 +158,9 @@ public final class Sandbox {
         }
     }
 
+    /** Whether there is a bwrap: false for {@link #unconfined()}. */
     boolean isConfined() {
-        return confined;
+        return host.bwrap() != null;
     }
 
     /** The user the student's code runs as; -1 for the grader's own. */
@@ -180,59 +177,25 @@ public final class Sandbox {
         RunUsers.checkReachable(uid, folder);
     }
 
-    /**
-     * Makes {@code folder} readable (or, if {@code writable}, owned) by the run's user alone
-     * ({@link RunUsers#share}).
-     */
-    public void share(Path folder, boolean writable) throws IOException {
-        RunUsers.share(uid, folder, writable);
+    /** Makes {@code folder} readable by the run's user alone ({@link RunUsers#share}). */
+    public void share(Path folder) throws IOException {
+        RunUsers.share(uid, folder, false);
+    }
+
+    /** Makes {@code folder} owned, so writable, by the run's user alone ({@link RunUsers#share}). */
+    public void shareWritable(Path folder) throws IOException {
+        RunUsers.share(uid, folder, true);
     }
 
     /** What this sandbox holds the code to: results graded under other rules are graded again. */
     public Enforcement enforcement() {
-        return new Enforcement(confined, uid >= 0, confined && host.cgroups() != null,
-                confined && host.seccompFilter() != null, confined && host.ownDisks());
-    }
-
-    /**
-     * Null when each run is held to totals by a control group of its own; else the one line that
-     * says they are not (the limits are then per process only).
-     */
-    public String totalsNotEnforced() {
-        return !confined || host.cgroups() != null ? null
-                : "no control group can be made here (cgroup v2 not delegated, cgroup v1 memory and pids not "
-                        + "writable): the limits are per process; memory, processes and CPU are not limited in all";
-    }
-
-    /**
-     * Null when the sandbox refuses the calls that reserve disk space a size does not show and those
-     * that drop pages from the host's page cache ({@link SeccompFilter}); else the one line that says
-     * it does not, on this machine.
-     */
-    public String callsNotRefused() {
-        return !confined || host.seccompFilter() != null ? null
-                : "tick1 has no seccomp filter for this machine (" + System.getProperty("os.arch") + "): disk space "
-                        + "the code reserves with fallocate is not counted in its output folder's limit, and a run "
-                        + "can drop the JDK's files from the page cache while another run going at the same time "
-                        + "times its reads";
-    }
-
-    /**
-     * Null when each run's output folder is a file system of its own whose size and number of
-     * files the kernel enforces; else the one line that says it is not.
-     */
-    public String diskNotEnforced() {
-        return !confined || host.ownDisks() ? null
-                : (uid < 0 ? "grading as a normal user" : "no file system can be mounted here")
-                        + ": the output folder of each run is on the host's disk, held to its limit by a count of "
-                        + "its files' names, which misses files the code deletes while it holds them open, and the "
-                        + "code can load what it writes there as machine code; a cohort's "
-                        + "compiler writes its class files there too, counted only once it has compiled";
+        return new Enforcement(isConfined(), uid >= 0, isConfined() && host.cgroups() != null,
+                isConfined() && host.seccompFilter() != null, isConfined() && host.ownDisks());
     }
 
     /**
      * The file system of one run's output folder {@code folder}, an empty folder this sandbox has
-     * {@link #share shared} for writing: a tmpfs of its own where the sandbox can mount one (close
+     * {@link #shareWritable shared} for writing: a tmpfs of its own where the sandbox can mount one (close
      * it once the folder is read), else the folder as it is.
      */
     OutputDisk outputDisk(Path folder) throws IOException {
@@ -250,7 +213,7 @@ public final class Sandbox {
 
     /** A control group for one run held to {@code totals}, or null when none can be made. */
     Cgroup cgroupFor(Cgroup.Totals totals) throws IOException {
-        return confined && host.cgroups() != null ? Cgroup.create(host.cgroups(), totals) : null;
+        return isConfined() && host.cgroups() != null ? Cgroup.create(host.cgroups(), totals) : null;
     }
 
     /**
@@ -259,7 +222,7 @@ public final class Sandbox {
      * under the hidden runs' stricter seccomp filter.
      */
     List<String> wrap(List<String> command, List<Bind> binds, RunLimits limits, Cgroup cgroup, SceneBatch batch) {
-        if (!confined) {
+        if (!isConfined()) {
             return command;
         }
         List<String> wrapped = new ArrayList<>(RunLimits.startCommand(cgroup,
@@ -313,7 +276,7 @@ public final class Sandbox {
      * JVM options of their own and so change its limits.
      */
     ProcessBuilder process(List<String> wrappedCommand) {
-        if (confined) {
+        if (isConfined()) {
             return processFor(wrappedCommand);
         }
         ProcessBuilder builder = new ProcessBuilder(wrappedCommand);

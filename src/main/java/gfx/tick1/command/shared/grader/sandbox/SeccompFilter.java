@@ -114,14 +114,9 @@ final class SeccompFilter {
     private SeccompFilter() {
     }
 
-    /** The filter for an architecture as Java names it ({@code os.arch}), or null where tick1 has none. */
-    static byte[] forArchitecture(String name) {
-        return forArchitecture(name, SceneBatch.PUBLIC, false);
-    }
-
     /**
-     * The filter for an architecture, for {@code batch}, one that lets a run start processes with
-     * {@code processes}; or null where tick1 has none.
+     * The filter for an architecture as Java names it ({@code os.arch}), for {@code batch}, one that
+     * lets a run start processes with {@code processes}; or null where tick1 has none.
      */
     static byte[] forArchitecture(String name, SceneBatch batch, boolean processes) {
         return switch (name) {

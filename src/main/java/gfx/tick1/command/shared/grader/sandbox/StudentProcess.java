@@ -17,7 +17,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
@@ -116,8 +115,22 @@ public final class StudentProcess implements AutoCloseable {
      */
     public StudentProcess withWarmCompiler(Path folder) throws IOException {
         Files.createDirectory(folder);
-        jvm.sandbox().forCompiler().share(folder, false);
+        jvm.sandbox().forCompiler().share(folder);
         return new StudentProcess(jvm, folder);
+    }
+
+    /**
+     * Writes {@code sphere} and {@code renderer} as Sphere.java and Renderer.java into a new folder
+     * {@code work}/sources, with the starter kit's other classes beside them: the sources {@link #compile} takes.
+     */
+    public static Path writeSources(Path work, String sphere, String renderer) throws IOException {
+        Path sources = Files.createDirectory(work.resolve("sources"));
+        Files.writeString(sources.resolve("Sphere.java"), sphere, StandardCharsets.UTF_8);
+        Files.writeString(sources.resolve("Renderer.java"), renderer, StandardCharsets.UTF_8);
+        for (String given : StarterKit.GIVEN_CLASSES) {
+            Files.writeString(sources.resolve(given + ".java"), StarterKit.source(given), StandardCharsets.UTF_8);
+        }
+        return sources;
     }
 
     /**
@@ -132,7 +145,7 @@ public final class StudentProcess implements AutoCloseable {
         // Written in a folder of its own, whose class files are copied into output: what else the compile
         // left goes with its file system.
         Path written = Files.createDirectory(output.resolve("written"));
-        jvm.sandbox().share(written, true);
+        jvm.sandbox().shareWritable(written);
         try (OutputDisk disk = jvm.sandbox().outputDisk(written)) {
             Run run = run(Request.of(List.of("compile", SOURCES, OUTPUT, sphereName, rendererName), timeLimit,
                     jvm.compiler()).reading(sources, SOURCES).output(disk, OUTPUT));
@@ -167,26 +180,10 @@ public final class StudentProcess implements AutoCloseable {
     private Compiled copiedIfCompiled(Run run, Path written, Path output, Duration timeLimit) throws IOException {
         Compiled compiled = HarnessOutput.compiled(run, written, timeLimit, jvm.compilerHeap());
         if (compiled.compiled()) {
-            copyClasses(written.resolve(StudentHarness.CLASSES_FOLDER), output.resolve(StudentHarness.CLASSES_FOLDER));
+            ChildOutput.copy(written.resolve(StudentHarness.CLASSES_FOLDER),
+                    output.resolve(StudentHarness.CLASSES_FOLDER));
         }
         return compiled;
-    }
-
-    /**
-     * Copies the folders and regular files under {@code from} to {@code to}, and nothing else:
-     * no link is followed or copied.
-     */
-    private static void copyClasses(Path from, Path to) throws IOException {
-        try (var files = Files.walk(from)) {
-            for (Path file : files.toList()) {
-                Path copy = to.resolve(from.relativize(file).toString());
-                if (ChildOutput.isDirectory(file)) {
-                    Files.createDirectories(copy);
-                } else if (ChildOutput.isRegularFile(file)) {
-                    Files.copy(file, copy, LinkOption.NOFOLLOW_LINKS);
-                }
-            }
-        }
     }
 
     /**
@@ -282,19 +279,13 @@ public final class StudentProcess implements AutoCloseable {
      *     archive could not be made (Java then starts as it always does)
      */
     public StudentProcess withSharedArchive(Path folder, Path work) throws IOException, InterruptedException {
-        Path sources = Files.createDirectory(work.resolve("sources"));
-        for (String given : StarterKit.GIVEN_CLASSES) {
-            Files.writeString(sources.resolve(given + ".java"), StarterKit.source(given), StandardCharsets.UTF_8);
-        }
-        for (String student : List.of("Sphere", "Renderer")) {
-            Files.writeString(sources.resolve(student + ".java"), StarterKit.source(student), StandardCharsets.UTF_8);
-        }
+        Path sources = writeSources(work, StarterKit.source("Sphere"), StarterKit.source("Renderer"));
         Path scenes = Files.createDirectory(work.resolve("scenes"));
         Files.writeString(scenes.resolve("0.xml"), ARCHIVE_SCENE);
         Sandbox sandbox = jvm.sandbox();
-        sandbox.share(work, false);
+        sandbox.share(work);
         Path output = Files.createDirectory(work.resolve("output"));
-        sandbox.share(output, true);
+        sandbox.shareWritable(output);
         try (OutputDisk disk = sandbox.outputDisk(output)) {
             // With the probes, so that the classes they load are in the archive too.
             List<String> code = List.of(StudentHarness.COMPILE_FIRST, SOURCES, "Sphere.java", "Renderer.java");

@@ -40,7 +40,7 @@ class WorksheetTest {
     void aFilledWorksheetIsTheInputWithOnlyTheGradedCellsReplaced() throws Exception {
         byte[] input = utf8(worksheet("", "", "\"\"", "\"\""));
 
-        Worksheet.Filled filled = Worksheet.fill("grades.csv", input, MARKS);
+        Worksheet.Filled filled = Worksheet.parse("grades.csv", input).fill(MARKS);
 
         assertThat(new String(filled.bytes(), StandardCharsets.UTF_8)).isEqualTo(worksheet("1.00",
                 "\"Passed, every scene matched.\"", "\"0.00\"", "\"tick1.xml differs: \"\"R.V not clamped\"\".\""));
@@ -50,7 +50,7 @@ class WorksheetTest {
     void parsingAFilledWorksheetGivesTheInputsCellsBesideTheFilledOnes() throws Exception {
         byte[] input = utf8(worksheet("", "", "\"\"", "\"\""));
 
-        byte[] output = Worksheet.fill("grades.csv", input, MARKS).bytes();
+        byte[] output = Worksheet.parse("grades.csv", input).fill(MARKS).bytes();
 
         List<List<String>> before = cells(input);
         List<List<String>> after = cells(output);
@@ -77,7 +77,7 @@ class WorksheetTest {
 
     @Test
     void studentsWithoutASubmissionAndSubmissionsWithoutARowAreListed() throws Exception {
-        Worksheet.Filled filled = Worksheet.fill("grades.csv", utf8(worksheet("", "", "", "")), MARKS);
+        Worksheet.Filled filled = Worksheet.parse("grades.csv", utf8(worksheet("", "", "", ""))).fill(MARKS);
 
         assertThat(filled.withoutSubmission()).containsExactly("Participant 102 (Smith, John)");
         assertThat(filled.withoutRow()).containsExactly("Participant 999 (Nobody Known)");
@@ -90,7 +90,7 @@ class WorksheetTest {
                 + ",,Participant 8\r"
                 + "x,y,z";
 
-        byte[] output = Worksheet.fill("w.csv", utf8(input), List.of(new Worksheet.Mark("7", "A", 1, "ok"),
+        byte[] output = Worksheet.parse("w.csv", utf8(input)).fill(List.of(new Worksheet.Mark("7", "A", 1, "ok"),
                 new Worksheet.Mark("8", "B", 0.6667, "close"))).bytes();
 
         assertThat(new String(output, StandardCharsets.UTF_8)).isEqualTo("\uFEFFFeedback comments,Grade,Identifier\n"
@@ -104,7 +104,7 @@ class WorksheetTest {
         ZonedDateTime gradedAt = ZonedDateTime.of(2026, 12, 1, 18, 11, 0, 0, ZoneId.of("Europe/London"));
 
         byte[] csv = Worksheet.fresh(List.of(new Worksheet.Mark("42", "Zoë Ünal", 1, "Passed."),
-                new Worksheet.Mark("43", "Smith, John", 0, "It said \"hi\",\nthen stopped.")), 1, gradedAt);
+                new Worksheet.Mark("43", "Smith, John", 0, "It said \"hi\",\nthen stopped.")), 1, gradedAt, null);
 
         assertThat(new String(csv, StandardCharsets.UTF_8)).isEqualTo("Identifier,Full name,Email address,Status,"
                 + "Grade,Maximum Grade,Grade can be changed,Last modified (submission),Last modified (grade),"
@@ -120,7 +120,7 @@ class WorksheetTest {
         ZonedDateTime first = ZonedDateTime.of(2026, 12, 1, 18, 11, 0, 0, ZoneId.of("UTC"));
         ZonedDateTime second = first.plusDays(1);
         byte[] earlier = Worksheet.fresh(List.of(new Worksheet.Mark("42", "Ann", 1, "Passed."),
-                new Worksheet.Mark("43", "Bob", 0, "Failed.")), 1, first);
+                new Worksheet.Mark("43", "Bob", 0, "Failed.")), 1, first, null);
 
         byte[] again = Worksheet.fresh(List.of(new Worksheet.Mark("42", "Ann", 1, "Passed."),
                 new Worksheet.Mark("43", "Bob", 1, "Passed."), new Worksheet.Mark("44", "Cy", 1, "Passed.")), 1,
@@ -140,14 +140,14 @@ class WorksheetTest {
 
         byte[] fresh = Worksheet.fresh(MARKS, 1, now, "\"never closed".getBytes(StandardCharsets.UTF_8));
 
-        assertThat(fresh).isEqualTo(Worksheet.fresh(MARKS, 1, now));
+        assertThat(fresh).isEqualTo(Worksheet.fresh(MARKS, 1, now, null));
     }
 
     @Test
     void aFreshWorksheetIsOneAFillReadsBack() throws Exception {
-        byte[] fresh = Worksheet.fresh(MARKS, 1, ZonedDateTime.of(2026, 1, 2, 3, 4, 5, 0, ZoneId.of("UTC")));
+        byte[] fresh = Worksheet.fresh(MARKS, 1, ZonedDateTime.of(2026, 1, 2, 3, 4, 5, 0, ZoneId.of("UTC")), null);
 
-        Worksheet.Filled again = Worksheet.fill("grades.csv", fresh, MARKS);
+        Worksheet.Filled again = Worksheet.parse("grades.csv", fresh).fill(MARKS);
 
         assertThat(again.bytes()).isEqualTo(fresh);
         assertThat(again.withoutRow()).isEmpty();
@@ -164,7 +164,8 @@ class WorksheetTest {
     void aQuoteNeverClosedIsOneLineWithTheLineItOpensOn() {
         String input = HEADER + "\r\nParticipant 1,A,,,,,,,,ok,x\r\nParticipant 2,\"B\r\nno end";
 
-        assertThatThrownBy(() -> Worksheet.fill("w.csv", utf8(input), MARKS)).isInstanceOf(CohortInputException.class)
+        assertThatThrownBy(() -> Worksheet.parse("w.csv", utf8(input)).fill(MARKS))
+                .isInstanceOf(CohortInputException.class)
                 .hasMessage("w.csv:3: a quoted cell is never closed (a \" with no closing \")");
     }
 
@@ -172,20 +173,22 @@ class WorksheetTest {
     void textAfterAClosingQuoteIsMalformed() {
         String input = HEADER + "\n\"Participant 1\"x,A\n";
 
-        assertThatThrownBy(() -> Worksheet.fill("w.csv", utf8(input), MARKS)).hasMessage("w.csv:2: text after a "
-                + "closing quote in a cell (a quote inside a quoted cell is written \"\")");
+        assertThatThrownBy(() -> Worksheet.parse("w.csv", utf8(input)).fill(MARKS))
+                .hasMessage("w.csv:2: text after a closing quote in a cell (a quote inside a quoted cell is written "
+                        + "\"\")");
     }
 
     @Test
     void aHeaderWithoutTheFeedbackColumnIsOneLine() {
-        assertThatThrownBy(() -> Worksheet.fill("w.csv", utf8("Identifier,Grade\r\n"), MARKS))
+        assertThatThrownBy(() -> Worksheet.parse("w.csv", utf8("Identifier,Grade\r\n")).fill(MARKS))
                 .hasMessage("w.csv:1: no \"Feedback comments\" column in the header; is this the assignment's grading "
                         + "worksheet, with the feedback type \"Feedback comments\" turned on?");
     }
 
     @Test
     void aHeaderWithoutTheIdentifierColumnIsOneLine() {
-        assertThatThrownBy(() -> Worksheet.fill("w.csv", utf8("Identifier;Grade;Feedback comments\r\n"), MARKS))
+        assertThatThrownBy(() -> Worksheet.parse("w.csv", utf8("Identifier;Grade;Feedback comments\r\n"))
+                .fill(MARKS))
                 .hasMessage("w.csv:1: no \"Identifier\" column in the header; is this the assignment's grading "
                         + "worksheet, saved with commas?");
     }
@@ -194,14 +197,14 @@ class WorksheetTest {
     void aWorksheetThatIsNotUtf8IsOneLineWithTheLine() {
         byte[] input = (HEADER + "\r\nParticipant 1,Zo\u00eb,,,,,,,,,\r\n").getBytes(StandardCharsets.ISO_8859_1);
 
-        assertThatThrownBy(() -> Worksheet.fill("w.csv", input, MARKS)).hasMessage("w.csv:2: byte 0xEB is not UTF-8 "
-                + "(save the worksheet as \"CSV UTF-8\")");
+        assertThatThrownBy(() -> Worksheet.parse("w.csv", input).fill(MARKS))
+                .hasMessage("w.csv:2: byte 0xEB is not UTF-8 (save the worksheet as \"CSV UTF-8\")");
     }
 
     @Test
     void aGradeAboveTheRowsMaximumIsRefusedInOneLine() {
         String input = HEADER + "\r\nParticipant 101,Zoë Ünal,,Submitted for grading,,1.00,Yes,,,,Maths\r\n";
-        assertThatThrownBy(() -> Worksheet.fill("w.csv", utf8(input),
+        assertThatThrownBy(() -> Worksheet.parse("w.csv", utf8(input)).fill(
                 List.of(new Worksheet.Mark("101", "Zoë Ünal", 10, "Passed."))))
                 .hasMessage("w.csv:2: the grade 10.00 is above the row's Maximum Grade 1.00; give --max-grade 1.00 "
                         + "(the assignment's maximum)");
@@ -209,13 +212,13 @@ class WorksheetTest {
 
     @Test
     void aGradedRowTooShortForItsCellsIsOneLine() {
-        assertThatThrownBy(() -> Worksheet.fill("w.csv", utf8(HEADER + "\r\nParticipant 101,Zoë\r\n"), MARKS))
+        assertThatThrownBy(() -> Worksheet.parse("w.csv", utf8(HEADER + "\r\nParticipant 101,Zoë\r\n")).fill(MARKS))
                 .hasMessage("w.csv:2: the row has 2 cells, too few for its Grade and Feedback comments columns");
     }
 
     /** The cells of a fresh worksheet's rows after the header, read back. */
     private static List<List<String>> freshRows(List<Worksheet.Mark> marks) throws Exception {
-        byte[] csv = Worksheet.fresh(marks, 1, ZonedDateTime.of(2026, 1, 2, 3, 4, 5, 0, ZoneId.of("UTC")));
+        byte[] csv = Worksheet.fresh(marks, 1, ZonedDateTime.of(2026, 1, 2, 3, 4, 5, 0, ZoneId.of("UTC")), null);
         List<List<String>> rows = new ArrayList<>();
         for (CsvRecords.Row row : CsvRecords.read(csv).subList(1, marks.size() + 1)) {
             rows.add(row.cells().stream().map(CsvRecords.Cell::value).toList());
@@ -245,7 +248,7 @@ class WorksheetTest {
     void aFilledFeedbackCellThatStartsLikeAFormulaStartsWithAQuote() throws Exception {
         String input = HEADER + "\r\nParticipant 101,Zoë Ünal,,Submitted for grading,,1.00,Yes,,,,Maths\r\n";
 
-        byte[] output = Worksheet.fill("w.csv", utf8(input),
+        byte[] output = Worksheet.parse("w.csv", utf8(input)).fill(
                 List.of(new Worksheet.Mark("101", "Zoë Ünal", 0, "=HYPERLINK(\"http://x\")"))).bytes();
 
         assertThat(CsvRecords.read(output).get(1).value(9)).isEqualTo("'=HYPERLINK(\"http://x\")");
@@ -273,7 +276,7 @@ class WorksheetTest {
     void aFreshWorksheetsDateCarriesItsZoneSoMoodleReadsTheRightMoment() {
         ZonedDateTime gradedAt = ZonedDateTime.of(2026, 7, 1, 18, 11, 0, 0, ZoneId.of("Europe/London"));
 
-        String csv = new String(Worksheet.fresh(MARKS, 1, gradedAt), StandardCharsets.UTF_8);
+        String csv = new String(Worksheet.fresh(MARKS, 1, gradedAt, null), StandardCharsets.UTF_8);
 
         assertThat(csv).contains("\"Wednesday, 1 July 2026, 6:11 PM +01:00\"");
     }
