@@ -1,5 +1,7 @@
 package gfx.tick1.command.shared.grader.grading;
 
+import gfx.tick1.command.shared.behaviour.Behaviour;
+import gfx.tick1.command.shared.behaviour.BehaviourFindings;
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
 import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.StudentResult;
@@ -110,7 +112,7 @@ public final class SubmissionGrader {
                 + " with the starter code.");
         SceneRuns.PublicRun run = runs.runPublic(started, work);
         long compareStart = System.nanoTime();
-        ProbeFindings probes = run.probes().join();
+        BehaviourFindings probes = run.probes().join();
         List<Judged> judged = new SceneJudge(grading, probes, new FeedbackImages(images, out, err), out)
                 .judgeBatch(SceneBatch.PUBLIC, run.ran(), List.of());
         long now = System.nanoTime();
@@ -181,7 +183,7 @@ public final class SubmissionGrader {
         }
 
         /** The public scenes judged, the behaviour comparison's findings, what the code printed, and the run's time. */
-        record PublicScenes(List<Judged> judged, ProbeFindings probes, String printed, Duration took) {
+        record PublicScenes(List<Judged> judged, BehaviourFindings probes, String printed, Duration took) {
             PublicScenes {
                 judged = List.copyOf(judged);
             }
