@@ -2,7 +2,7 @@ package gfx.tick1;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.command.shared.grader.grading.WrittenStyles;
+import gfx.tick1.command.shared.behaviour.WrittenStyles;
 import java.io.IOException;
 import java.net.URI;
 import java.net.http.HttpClient;

@@ -1,8 +1,8 @@
 package gfx.tick1.command.coverage;
 
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.coverage.Caught;
 import gfx.tick1.command.shared.coverage.Coverage;
-import gfx.tick1.command.shared.diagnosis.Variant;
 import java.util.List;
 
 /** A {@link Coverage} as one HTML page: the table, what each scene alone catches, what none does, and the pairs. */

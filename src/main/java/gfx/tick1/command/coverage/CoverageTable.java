@@ -1,8 +1,8 @@
 package gfx.tick1.command.coverage;
 
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.coverage.Caught;
 import gfx.tick1.command.shared.coverage.Coverage;
-import gfx.tick1.command.shared.diagnosis.Variant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;

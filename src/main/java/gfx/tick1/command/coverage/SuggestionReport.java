@@ -1,7 +1,7 @@
 package gfx.tick1.command.coverage;
 
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.coverage.SceneSearch;
-import gfx.tick1.command.shared.diagnosis.Variant;
 import java.nio.file.Path;
 import java.util.List;
 

@@ -1,8 +1,9 @@
 package gfx.tick1.command.diff;
 
+import gfx.tick1.command.shared.behaviour.BehaviourCheck;
+import gfx.tick1.command.shared.behaviour.RunIn;
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
-import gfx.tick1.command.shared.grader.grading.CodeProbe;
 import gfx.tick1.command.shared.javacode.JavaMembers;
 import gfx.tick1.command.shared.javacode.ReferenceMembers;
 import gfx.tick1.command.shared.javacode.SameMeaning;
@@ -192,11 +193,11 @@ public final class DiffCommand implements Callable<Integer> {
             starter.put(className, StarterKit.source(className));
         }
         try {
-            Hints.Said said = Hints.of(given, starter, noSandbox);
+            Hints.Said said = Hints.of(given, starter, noSandbox ? RunIn.OWN_PROCESS : RunIn.SANDBOX);
             if (noSandbox && said.ran()) {
                 PrintWriter err = spec.commandLine().getErr();
                 err.println("tick1 diff: note: --no-sandbox: your methods ran without a sandbox, in "
-                        + CodeProbe.LIMITS);
+                        + BehaviourCheck.LIMITS);
                 err.flush();
             }
             return said;

@@ -1,6 +1,7 @@
 package gfx.tick1.command.diff;
 
-import gfx.tick1.command.shared.grader.grading.CodeProbe;
+import gfx.tick1.command.shared.behaviour.BehaviourCheck;
+import gfx.tick1.command.shared.behaviour.RunIn;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -26,13 +27,13 @@ final class Hints {
 
     /**
      * What to say of {@code theirs} (class name to source), with {@code starter} for the classes not
-     * given; {@code unsandboxed} runs the methods without the sandbox ({@code --no-sandbox}).
+     * given, their methods run {@code where}.
      */
-    static Said of(Map<String, String> theirs, Map<String, String> starter, boolean unsandboxed)
+    static Said of(Map<String, String> theirs, Map<String, String> starter, RunIn where)
             throws InterruptedException {
         String sphere = theirs.getOrDefault("Sphere", starter.get("Sphere"));
         String renderer = theirs.getOrDefault("Renderer", starter.get("Renderer"));
-        CodeProbe.Lines hints = CodeProbe.probe(sphere, renderer, List.copyOf(theirs.keySet()), unsandboxed);
+        BehaviourCheck.Lines hints = BehaviourCheck.check(sphere, renderer, List.copyOf(theirs.keySet()), where);
         List<String> first = new ArrayList<>(hints.behaviour());
         if (hints.whyNone() != null) {
             first.add(hints.whyNone());

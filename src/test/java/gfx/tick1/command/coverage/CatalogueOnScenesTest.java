@@ -2,10 +2,10 @@ package gfx.tick1.command.coverage;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.coverage.CatalogueOnScenes;
 import gfx.tick1.command.shared.coverage.Coverage;
 import gfx.tick1.command.shared.coverage.NamedScene;
-import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.engine.scene.BundledScenes;
 import gfx.tick1.engine.scene.Scene;
 import gfx.tick1.engine.scene.SceneLoader;

@@ -34,7 +34,7 @@ class CoverageCommandTest {
         Coverage coverage = CatalogueOnScenes.measure(GradingScenes.builtIn(), 160, 120);
         assertThat(lines.get(0)).isEqualTo("Mistake,Scene,Pixels differing");
         assertThat(lines).hasSize(1 + 2 * (coverage.mistakes().size() + coverage.pairs().size()))
-                .contains("far root,tick1.xml," + coverage.of(gfx.tick1.command.shared.diagnosis.Variant.FAR_ROOT)
+                .contains("far root,tick1.xml," + coverage.of(gfx.tick1.command.shared.behaviour.Variant.FAR_ROOT)
                         .pixels().get(0));
         assertThat(run.out()).contains("Caught by no scene:", "k_d swapped with k_s: no scene can show it");
     }

@@ -2,10 +2,10 @@ package gfx.tick1.command.coverage;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.coverage.CatalogueOnScenes;
 import gfx.tick1.command.shared.coverage.SceneSearch;
 import gfx.tick1.command.shared.diagnosis.SceneChange;
-import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.diagnosis.VariantRenderer;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.render.ReferenceRenderer;

@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.diagnosis.FloatShading;
-import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.diagnosis.VariantRenderer;
 import gfx.tick1.engine.image.PngOutput;
 import gfx.tick1.engine.scene.SceneLoader;

@@ -3,9 +3,9 @@ package gfx.tick1.command.diff;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.behaviour.Variant;
+import gfx.tick1.command.shared.behaviour.WrittenStyles;
 import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
-import gfx.tick1.command.shared.diagnosis.Variant;
-import gfx.tick1.command.shared.grader.grading.WrittenStyles;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.javacode.JavaMembers;
 import gfx.tick1.command.shared.javacode.ReferenceMembers;
@@ -400,8 +400,8 @@ class DiffCommandTest {
         assertThat(hints(run)).as(run.transcript()).isEmpty();
     }
 
-    static Stream<gfx.tick1.command.shared.grader.grading.WrittenStyles.Style> writtenStyles() {
-        return gfx.tick1.command.shared.grader.grading.WrittenStyles.all().values().stream();
+    static Stream<gfx.tick1.command.shared.behaviour.WrittenStyles.Style> writtenStyles() {
+        return gfx.tick1.command.shared.behaviour.WrittenStyles.all().values().stream();
     }
 
     /** A correct solution of a style of its own behaves as ours: nothing to fix, no hint, no note, exit 0. */

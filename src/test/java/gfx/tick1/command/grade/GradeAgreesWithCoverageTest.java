@@ -4,10 +4,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.coverage.CatalogueOnScenes;
 import gfx.tick1.command.shared.coverage.Coverage;
 import gfx.tick1.command.shared.coverage.GradingScenes;
-import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;

@@ -4,13 +4,14 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
-import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.preview.HeadlessChromium;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.report.Worksheet;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
-import gfx.tick1.command.preview.HeadlessChromium;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -28,13 +29,12 @@ import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.openqa.selenium.By;
 import org.openqa.selenium.support.ui.ExpectedConditions;
-import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
-import org.junit.jupiter.api.extension.ExtendWith;
 
 /**
  * {@code tick1 grade --submissions} on a generated cohort in Moodle's download form: correct

@@ -8,7 +8,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
-import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;

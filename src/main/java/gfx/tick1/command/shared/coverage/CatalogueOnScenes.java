@@ -1,7 +1,7 @@
 package gfx.tick1.command.shared.coverage;
 
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.diagnosis.ModelRenderer;
-import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.diagnosis.VariantRenderer;
 import gfx.tick1.engine.render.ReferenceRenderer;
 import gfx.tick1.engine.scene.Intersection;

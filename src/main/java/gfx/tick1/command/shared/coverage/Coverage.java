@@ -1,6 +1,6 @@
 package gfx.tick1.command.shared.coverage;
 
-import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.behaviour.Variant;
 import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;

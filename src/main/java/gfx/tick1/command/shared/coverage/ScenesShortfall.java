@@ -1,6 +1,6 @@
 package gfx.tick1.command.shared.coverage;
 
-import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.engine.scene.Scene;
 import gfx.tick1.engine.scene.SceneException;
 import java.io.IOException;

@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.diagnosis;
 
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.diagnosis.Diagnosis.Candidate;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.render.ReferenceRenderer;

@@ -1,5 +1,7 @@
 package gfx.tick1.command.shared.diagnosis;
 
+import gfx.tick1.command.shared.behaviour.Models;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.engine.math.Ray;
 import gfx.tick1.engine.math.Vector3;
 import gfx.tick1.engine.render.Camera;
@@ -11,7 +13,7 @@ import java.util.Set;
 import java.util.stream.IntStream;
 
 /**
- * Images of a scene as {@link MethodModels} with several entries at once render it: the slips of
+ * Images of a scene as {@link Models} with several entries at once render it: the slips of
  * intersectionWith or illuminate made together, as {@code grade} names two entries "together".
  * Render's own slips (rounding, rows upside down, red and blue swapped) are {@link VariantRenderer}'s
  * alone: no model of the two methods holds them.

@@ -1,10 +1,12 @@
 package gfx.tick1.command.shared.diagnosis;
 
-import static gfx.tick1.command.shared.diagnosis.Variant.BACKGROUND_ONLY;
-import static gfx.tick1.command.shared.diagnosis.Variant.RED_BLUE_SWAPPED;
-import static gfx.tick1.command.shared.diagnosis.Variant.ROUNDED_BYTES;
-import static gfx.tick1.command.shared.diagnosis.Variant.UPSIDE_DOWN;
+import static gfx.tick1.command.shared.behaviour.Variant.BACKGROUND_ONLY;
+import static gfx.tick1.command.shared.behaviour.Variant.RED_BLUE_SWAPPED;
+import static gfx.tick1.command.shared.behaviour.Variant.ROUNDED_BYTES;
+import static gfx.tick1.command.shared.behaviour.Variant.UPSIDE_DOWN;
 
+import gfx.tick1.command.shared.behaviour.Models;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.engine.math.Ray;
 import gfx.tick1.engine.math.Vector3;
 import gfx.tick1.engine.render.Camera;
@@ -105,7 +107,7 @@ public final class VariantRenderer {
             return ReferenceRenderer.BACKGROUND_COLOUR;
         }
         Sphere object = hit.getObjectHit();
-        return MethodModels.illuminate(new MethodModels.Shading(scene.getAmbientLighting(), scene.getPointLight(),
+        return Models.illuminate(new Models.Shading(scene.getAmbientLighting(), scene.getPointLight(),
                 object.getColour(), object.getPhong_kD(), object.getPhong_kS(), object.getPhong_n(),
                 hit.getLocation(), hit.getNormal()), model);
     }
@@ -117,7 +119,7 @@ public final class VariantRenderer {
     static RaycastHit closestHit(Scene scene, Ray ray, Set<Variant> model) {
         RaycastHit closest = new RaycastHit();
         for (Sphere sphere : scene.getObjects()) {
-            MethodModels.Hit hit = MethodModels.intersect(ray.getOrigin(), ray.getDirection(),
+            Models.Hit hit = Models.intersect(ray.getOrigin(), ray.getDirection(),
                     SphereGeometry.centre(sphere), SphereGeometry.radius(sphere), model);
             if (hit != null && hit.distance() < closest.getDistance()) {
                 closest = new RaycastHit(sphere, hit.distance(), hit.point(), hit.normal());

@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.diagnosis;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.engine.image.PngInput;
 import gfx.tick1.engine.render.GoldenImages;
 import gfx.tick1.engine.scene.BundledScenes;

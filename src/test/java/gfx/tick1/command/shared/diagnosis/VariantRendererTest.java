@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.diagnosis;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.render.GoldenImages;
 import gfx.tick1.engine.render.ReferenceRenderer;

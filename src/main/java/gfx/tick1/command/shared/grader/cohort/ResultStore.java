@@ -1,6 +1,6 @@
 package gfx.tick1.command.shared.grader.cohort;
 
-import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;

@@ -1,13 +1,14 @@
 package gfx.tick1.command.shared.grader.grading;
 
-import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.behaviour.BehaviourFindings;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader.Graded;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader.Phases;
 import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
-import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
+import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.engine.io.Counted;
@@ -53,7 +54,7 @@ final class Explainer {
     Graded failed(Category category, String reason, Phases phases) {
         out.println("FAILED: " + reason);
         return new Graded(result(List.of(), false, 0, category, "FAILED: " + reason, List.of()), false, phases,
-                ProbeFindings.of(null).behaviour());
+                BehaviourFindings.of(null).behaviour());
     }
 
     /** Code that did not compile: the compiler's errors, or why the compiler did not finish. */
@@ -73,7 +74,7 @@ final class Explainer {
                 : error.size();
         return new Graded(result(List.of(), false, 0, Category.Outcome.DOES_NOT_COMPILE,
                 "FAILED: " + heading + ": " + String.join("\n", error.subList(0, quoted)),
-                error.subList(quoted, error.size())), false, phases, ProbeFindings.of(null).behaviour(),
+                error.subList(quoted, error.size())), false, phases, BehaviourFindings.of(null).behaviour(),
                 List.copyOf(compiled.errors()));
     }
 
@@ -86,7 +87,7 @@ final class Explainer {
     }
 
     /** The verdict line, the notes of a pass, and the result with its row's reason. */
-    Graded verdict(List<Judged> judged, ProbeFindings probes, Phases phases) {
+    Graded verdict(List<Judged> judged, BehaviourFindings probes, Phases phases) {
         List<SceneResult> scenes = new ArrayList<>(judged.stream().map(Judged::result).toList());
         List<Judged> failures = judged.stream().filter(scene -> !(scene.verdict() instanceof SceneVerdict.Passed))
                 .toList();
@@ -139,7 +140,7 @@ final class Explainer {
      * match; then the tested findings; failing both, that tick1 does not recognise it. A hidden
      * scene is "hidden scene N", as on the feedback page: its file name may tell what it holds.
      */
-    private static String reasons(List<Judged> judged, ProbeFindings probes) {
+    private static String reasons(List<Judged> judged, BehaviourFindings probes) {
         StringBuilder text = new StringBuilder();
         int hidden = 0;
         boolean wrongImage = false;

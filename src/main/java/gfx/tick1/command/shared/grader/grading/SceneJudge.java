@@ -1,8 +1,9 @@
 package gfx.tick1.command.shared.grader.grading;
 
+import gfx.tick1.command.shared.behaviour.BehaviourFindings;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.diagnosis.Diagnoser;
 import gfx.tick1.command.shared.diagnosis.Diagnosis;
-import gfx.tick1.command.shared.diagnosis.Variant;
 import gfx.tick1.command.shared.grader.grading.Grading.CourseScene;
 import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
@@ -58,14 +59,14 @@ final class SceneJudge {
     }
 
     private final Grading grading;
-    private final ProbeFindings probes;
+    private final BehaviourFindings probes;
     private final FeedbackImages images;
     private final PrintWriter out;
     /** Whether a scene judged before the one being judged now has the behaviour comparison's findings. */
     private boolean probesShown;
 
     /** Judges with the behaviour comparison's {@code probes}, writing images with {@code images}. */
-    SceneJudge(Grading grading, ProbeFindings probes, FeedbackImages images, PrintWriter out) {
+    SceneJudge(Grading grading, BehaviourFindings probes, FeedbackImages images, PrintWriter out) {
         this.grading = grading;
         this.probes = probes;
         this.images = images;
@@ -169,7 +170,7 @@ final class SceneJudge {
         return new Judged(new SceneResult(scene.name(), true, false, lines, SceneResult.Images.NONE),
                 new SceneVerdict.WrongPixels(probes.anyFailed() ? new Category.Mistake(probes.label())
                         : Category.Outcome.UNRECOGNISED, null),
-                shows, false, shows ? probes.found() : Findings.NONE);
+                shows, false, shows ? found(probes) : Findings.NONE);
     }
 
     /** A wrong image of a scene that is not hidden: explained against the closer reference, its images written. */
@@ -218,7 +219,7 @@ final class SceneJudge {
         lines.addAll(diagnosis.report(imageSaysReread));
         List<String> reread = new ArrayList<>(imageSaysReread ? diagnosis.toReread().stream().toList() : List.of());
         boolean shows = !probesShown && (behaviourSays || !probes.untested().isEmpty());
-        Findings found = shows ? probes.found() : Findings.NONE;
+        Findings found = shows ? found(probes) : Findings.NONE;
         if (shows) {
             lines.addAll(probes.failureLines());
         } else if (!behaviourSays && !exact) {
@@ -235,6 +236,11 @@ final class SceneJudge {
                 : Category.Outcome.UNRECOGNISED;
         return new Explained(new SceneVerdict.WrongPixels(category, exactly), shows,
                 new Findings(catalogued, found.failed(), found.notes(), List.of(figures), reread));
+    }
+
+    /** What {@link BehaviourFindings#failureLines} words: the tested facts, the untested notes, what to reread. */
+    private static Findings found(BehaviourFindings behaviour) {
+        return new Findings(null, behaviour.facts(), behaviour.untested(), List.of(), behaviour.toReread());
     }
 
     private void print(CourseScene scene, List<String> lines) {

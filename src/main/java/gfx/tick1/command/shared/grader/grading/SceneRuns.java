@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.grader.grading;
 
+import gfx.tick1.command.shared.behaviour.BehaviourFindings;
 import gfx.tick1.command.shared.grader.grading.Grading.CourseScene;
 import gfx.tick1.command.shared.grader.sandbox.NoImage;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
@@ -29,7 +30,7 @@ record SceneRuns(Grading grading, Sandbox sandbox, StudentProcess process, Path 
      * The public run: what {@link Ran} holds, what the behaviour comparison found (judged in the
      * grader while the run's images are read), and the last of what the code printed.
      */
-    record PublicRun(Ran ran, CompletableFuture<ProbeFindings> probes, String printed) {
+    record PublicRun(Ran ran, CompletableFuture<BehaviourFindings> probes, String printed) {
     }
 
     /** The public run's output folder in a grade's work folder. */
@@ -40,10 +41,10 @@ record SceneRuns(Grading grading, Sandbox sandbox, StudentProcess process, Path 
         StudentProcess.Result result = run(SceneBatch.PUBLIC, started, work, grading.limits().timeLimit());
         if (result == null) {
             return new PublicRun(new Ran(List.of(), List.of(), Duration.ZERO),
-                    CompletableFuture.completedFuture(ProbeFindings.of(null)), "");
+                    CompletableFuture.completedFuture(BehaviourFindings.of(null)), "");
         }
         String log = result.probes();
-        return new PublicRun(ran(result, started), CompletableFuture.supplyAsync(() -> ProbeFindings.of(log)),
+        return new PublicRun(ran(result, started), CompletableFuture.supplyAsync(() -> BehaviourFindings.of(log)),
                 result.outputTail());
     }
 

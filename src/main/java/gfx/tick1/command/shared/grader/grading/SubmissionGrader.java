@@ -1,5 +1,7 @@
 package gfx.tick1.command.shared.grader.grading;
 
+import gfx.tick1.command.shared.behaviour.Behaviour;
+import gfx.tick1.command.shared.behaviour.BehaviourFindings;
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -83,7 +85,7 @@ public final class SubmissionGrader {
                 + " with the starter code.");
         SceneRuns.PublicRun run = runs.runPublic(started, work);
         long publicCompare = System.nanoTime();
-        ProbeFindings probes = run.probes().join();
+        BehaviourFindings probes = run.probes().join();
         List<Judged> publicScenes = new SceneJudge(grading, probes, new FeedbackImages(images, out, err), out)
                 .judgeBatch(SceneBatch.PUBLIC, run.ran(), List.of());
         long compareNanos = System.nanoTime() - publicCompare;

@@ -43,8 +43,8 @@ import javax.imageio.ImageIO;
  *       After each image is written, a grid of its pixels is traced again through the student's
  *       own methods into {@code OUTPUT/<index>.trace} ({@link SampleTrace}).
  *   <li>{@code render --probes ...}: as either form of {@code render}, and after the last scene
- *       calls the student's two methods on the fixed inputs of {@link ProbeCalls}, logging what
- *       they return in {@code OUTPUT/probes} ({@link ProbeRunner}).
+ *       calls the student's two methods on the fixed inputs of {@link BehaviourInputs}, logging what
+ *       they return in {@code OUTPUT/probes} ({@link AnswerLog}).
  * </ul>
  *
  * <p>Everything this process writes is written while the student's code runs in it, so
@@ -67,16 +67,16 @@ public final class StudentHarness {
     public static final String SOURCES_FOLDER = "sources", OUTPUT_FOLDER = "output";
     /** The line of the progress log that says compiling is over and the student's code may run. */
     public static final String COMPILED = "compiled";
-    /** The option of {@code render}, before any other, that runs the probes after the scenes. */
+    /** The option of {@code render}, before any other, that calls the two methods on fixed inputs after the scenes. */
     public static final String PROBES = "--probes";
-    /** The log of the probes, in the output folder. */
-    public static final String PROBES_FILE = ProbeRunner.PROBES_FILE;
+    /** The log of their answers, in the output folder. */
+    public static final String PROBES_FILE = AnswerLog.ANSWERS_FILE;
     /** The file of a scene's traced samples, beside its image: {@code <index>.trace}. */
     public static final String TRACE_SUFFIX = ".trace";
 
     /** The classes of the harness's jar: these and their nested classes are all of tick1 the child sees. */
     public static final List<Class<?>> CLASSES = List.of(StudentHarness.class, StudentCompiler.class,
-            StarterApi.class, ProbeCalls.class, ProbeRunner.class, SampleTrace.class, Bounded.class);
+            StarterApi.class, BehaviourInputs.class, AnswerLog.class, SampleTrace.class, Bounded.class);
 
     private StudentHarness() {
     }
@@ -166,7 +166,7 @@ public final class StudentHarness {
                 log(progress, "end " + index);
             }
             if (probes) {
-                ProbeRunner.probe(student, output.resolve(PROBES_FILE));
+                AnswerLog.write(student, output.resolve(PROBES_FILE));
             }
         }
         // Student code may have left threads running; the results are written, so stop here.

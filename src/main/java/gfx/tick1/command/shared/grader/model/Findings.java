@@ -1,6 +1,6 @@
 package gfx.tick1.command.shared.grader.model;
 
-import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.behaviour.Variant;
 import java.util.List;
 import java.util.function.UnaryOperator;
 

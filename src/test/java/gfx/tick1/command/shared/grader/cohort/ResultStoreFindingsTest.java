@@ -2,7 +2,7 @@ package gfx.tick1.command.shared.grader.cohort;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult;

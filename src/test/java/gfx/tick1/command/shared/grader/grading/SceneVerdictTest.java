@@ -2,10 +2,11 @@ package gfx.tick1.command.shared.grader.grading;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.command.shared.behaviour.BehaviourFindings;
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
 import gfx.tick1.command.shared.grader.model.Category;
-import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
+import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.NoImage;
 import java.io.IOException;
@@ -45,7 +46,7 @@ class SceneVerdictTest {
         Judged wrong = new Judged(scene("a line that does not give figures"),
                 new SceneVerdict.WrongPixels(new Category.Mistake("illuminate: N.L not clamped"), null), false, false);
 
-        StudentResult result = explainer(work).verdict(List.of(threw, wrong), ProbeFindings.of(null),
+        StudentResult result = explainer(work).verdict(List.of(threw, wrong), BehaviourFindings.of(null),
                 new SubmissionGrader.Phases(0, 0, 0)).result();
 
         assertThat(result.diagnosis()).as("the category of the first failing scene")
@@ -57,7 +58,7 @@ class SceneVerdictTest {
         Judged wrong = new Judged(scene("an explanation that does not start with the figures"),
                 new SceneVerdict.WrongPixels(Category.Outcome.UNRECOGNISED, null), false, false);
 
-        StudentResult result = explainer(work).verdict(List.of(wrong), ProbeFindings.of(null),
+        StudentResult result = explainer(work).verdict(List.of(wrong), BehaviourFindings.of(null),
                 new SubmissionGrader.Phases(0, 0, 0)).result();
 
         assertThat(result.reason()).as("the row's reason of a wrong image tick1 does not recognise")

@@ -2,11 +2,11 @@ package gfx.tick1.command.shared.grader.report;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.command.shared.diagnosis.Variant;
+import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
-import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
+import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import java.time.Duration;
 import java.util.List;

@@ -1,11 +1,10 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
-import gfx.tick1.command.shared.diagnosis.Variant;
 import java.util.List;
 
 /**
  * How one of the student's two methods behaved on the inputs of
- * {@link gfx.tick1.command.shared.grader.harness.ProbeCalls} that the course's scenes can show
+ * {@link gfx.tick1.command.shared.grader.harness.BehaviourInputs} that the course's scenes can show
  * (the tested edge cases, then the random inputs, in that order), compared with ours.
  *
  * @param method     "intersectionWith" or "illuminate"

@@ -1,11 +1,10 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
-import gfx.tick1.command.shared.diagnosis.MethodModels;
-import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Answer;
-import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Colour;
-import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Failed;
-import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Hit;
-import gfx.tick1.command.shared.grader.harness.ProbeCalls;
+import gfx.tick1.command.shared.behaviour.Answers.Answer;
+import gfx.tick1.command.shared.behaviour.Answers.Colour;
+import gfx.tick1.command.shared.behaviour.Answers.Failed;
+import gfx.tick1.command.shared.behaviour.Answers.Hit;
+import gfx.tick1.command.shared.grader.harness.BehaviourInputs;
 import gfx.tick1.engine.math.Vector3;
 import java.math.BigDecimal;
 import java.math.MathContext;
@@ -15,21 +14,22 @@ import java.math.MathContext;
  * can be written exactly (0.6, not 0.6000000000000001, is kept only when it is the double given),
  * and how round an input is, to choose the simplest counterexample.
  */
-final class InputWords {
+final class Words {
 
-    private InputWords() {
+    private Words() {
     }
 
-    static String ray(ProbeCalls.IntersectionCall call) {
+    static String ray(BehaviourInputs.IntersectionCall call) {
         return "the ray from O = " + vector(call.origin()) + " along D = " + vector(call.direction())
                 + " and the sphere of centre C = " + vector(call.centre()) + " and radius r = " + number(call.radius());
     }
 
-    static String shading(ProbeCalls.IlluminationCall call, boolean phongSet) {
-        ProbeCalls.LightInput light = call.light();
-        ProbeCalls.Material material = call.sphere().material();
-        boolean course = !phongSet || material.kD() == ProbeCalls.COURSE_KD && material.kS() == ProbeCalls.COURSE_KS
-                && material.n() == ProbeCalls.COURSE_N;
+    static String shading(BehaviourInputs.IlluminationCall call, boolean phongSet) {
+        BehaviourInputs.LightInput light = call.light();
+        BehaviourInputs.Material material = call.sphere().material();
+        boolean course = !phongSet || material.kD() == BehaviourInputs.COURSE_KD
+                && material.kS() == BehaviourInputs.COURSE_KS
+                && material.n() == BehaviourInputs.COURSE_N;
         String coefficients = course ? "" : ", k_d = " + number(material.kD()) + ", k_s = " + number(material.kS())
                 + ", n = " + number(material.n());
         return "P = " + vector(call.point()) + ", N = " + vector(call.normal()) + " on a sphere of colour C_diff = "
@@ -50,14 +50,14 @@ final class InputWords {
                     : "a hit at s = " + number(hit.distance(), everyDigit) + ", P = "
                     + vector(hit.point(), everyDigit) + ", N = " + vector(hit.normal(), everyDigit);
         }
-        return answer instanceof ProbeAnswers.None ? "no hit" : failure(answer);
+        return answer instanceof Answers.None ? "no hit" : failure(answer);
     }
 
-    static String hit(MethodModels.Hit hit) {
+    static String hit(Models.Hit hit) {
         return hit(hit, false);
     }
 
-    static String hit(MethodModels.Hit hit, boolean everyDigit) {
+    static String hit(Models.Hit hit, boolean everyDigit) {
         return hit == null ? "no hit" : "a hit at s = " + number(hit.distance(), everyDigit) + ", P = "
                 + vector(new double[] {hit.point().x, hit.point().y, hit.point().z}, everyDigit) + ", N = "
                 + vector(new double[] {hit.normal().x, hit.normal().y, hit.normal().z}, everyDigit);
@@ -140,13 +140,13 @@ final class InputWords {
         return rough;
     }
 
-    static double roughness(ProbeCalls.IntersectionCall call) {
+    static double roughness(BehaviourInputs.IntersectionCall call) {
         return roughness(concat(call.origin(), call.direction(), call.centre(), new double[] {call.radius()}));
     }
 
-    static double roughness(ProbeCalls.IlluminationCall call) {
-        ProbeCalls.LightInput light = call.light();
-        ProbeCalls.Material material = call.sphere().material();
+    static double roughness(BehaviourInputs.IlluminationCall call) {
+        BehaviourInputs.LightInput light = call.light();
+        BehaviourInputs.Material material = call.sphere().material();
         return roughness(concat(call.point(), call.normal(), material.colour(), call.ambient(), light.position(),
                 light.colour(), new double[] {material.kD(), material.kS(), material.n() / 10,
                     light.intensity() / (4 * Math.PI)}));

@@ -1,7 +1,5 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
-import gfx.tick1.command.shared.diagnosis.Variant;
-import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.engine.io.Counted;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -16,7 +14,7 @@ import java.util.stream.Stream;
  * course's scenes cannot show, always after the tested findings and always with the one label
  * {@link BehaviourJudge#UNTESTED}; the sections to reread, at most three.
  */
-final class ProbeFindings {
+public final class BehaviourFindings {
 
     /** The most sections a report lists to reread. */
     static final int SECTIONS = 3;
@@ -31,7 +29,7 @@ final class ProbeFindings {
     private final Behaviour behaviour;
     private final List<Finding> tested = new ArrayList<>();
 
-    private ProbeFindings(Behaviour behaviour) {
+    private BehaviourFindings(Behaviour behaviour) {
         this.behaviour = behaviour;
         if (behaviour.ran()) {
             Stream.of(behaviour.intersectionWith(), behaviour.illuminate()).filter(b -> !b.behavesAsOurs())
@@ -40,8 +38,8 @@ final class ProbeFindings {
     }
 
     /** The findings of the probes' log {@code log} (null when the child left none). */
-    static ProbeFindings of(String log) {
-        return new ProbeFindings(BehaviourJudge.judge(ProbeAnswers.parse(log)));
+    public static BehaviourFindings of(String log) {
+        return new BehaviourFindings(BehaviourJudge.judge(Answers.parse(log)));
     }
 
     private static Finding finding(MethodBehaviour b) {
@@ -65,17 +63,17 @@ final class ProbeFindings {
     }
 
     /** The comparison itself, for any report that wants the answers' verdicts. */
-    Behaviour behaviour() {
+    public Behaviour behaviour() {
         return behaviour;
     }
 
     /** Whether the probes ran (the child logged answers). */
-    boolean ran() {
+    public boolean ran() {
         return behaviour.ran();
     }
 
     /** Whether a method does not behave as ours on a tested input. */
-    boolean anyFailed() {
+    public boolean anyFailed() {
         return !tested.isEmpty();
     }
 
@@ -85,22 +83,22 @@ final class ProbeFindings {
     }
 
     /** The cohort chart's label of the first tested finding. */
-    String label() {
+    public String label() {
         return tested.get(0).label();
     }
 
     /** The notes on what the course's scenes cannot show, each with the label. */
-    List<String> untested() {
+    public List<String> untested() {
         return behaviour.ran() ? behaviour.intersectionWith().untested() : List.of();
     }
 
     /** The tested findings' facts, one a line. */
-    List<String> facts() {
+    public List<String> facts() {
         return tested.stream().map(Finding::fact).toList();
     }
 
     /** "behaviour: ..." lines for a failure's explanation, then the untested notes, then "reread: ..." lines. */
-    List<String> failureLines() {
+    public List<String> failureLines() {
         List<String> lines = new ArrayList<>();
         tested.forEach(f -> lines.add("behaviour: " + f.fact()));
         untested().forEach(note -> lines.add("note: " + note));
@@ -109,25 +107,21 @@ final class ProbeFindings {
     }
 
     /** The line for a wrong image when no method differs: what the comparison did find. */
-    String noFindingLine() {
+    public String noFindingLine() {
         return "behaviour: " + noFinding();
     }
 
     /** What the comparison did find when no method differs, as {@link #noFindingLine} words it. */
-    String noFinding() {
+    public String noFinding() {
         return behaviour.ran() ? "your intersectionWith and illuminate behave as ours on "
                 + Counted.of(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(),
                         "input")
                 : "your intersectionWith and illuminate could not be checked: the harness logged no answer";
     }
 
-    /** The findings {@link #failureLines} words: the tested facts, the untested notes and what to reread. */
-    Findings found() {
-        return new Findings(null, facts(), untested(), List.of(), toReread());
-    }
 
     /** The sections to reread as a failure's explanation names them: "handout section 4, ...". */
-    List<String> toReread() {
+    public List<String> toReread() {
         return sections().stream().map(section -> "handout " + section).toList();
     }
 
@@ -135,7 +129,7 @@ final class ProbeFindings {
      * The notes of a pass: each tested finding, which tick1.xml and the hidden scene do not show,
      * then the untested notes.
      */
-    List<String> notes() {
+    public List<String> notes() {
         List<String> notes = new ArrayList<>();
         tested.forEach(f -> notes.add(f.fact() + " (tick1.xml and the hidden scene do not show this; handout "
                 + f.section() + ")"));
@@ -151,7 +145,7 @@ final class ProbeFindings {
     }
 
     /** The tested facts for a row, a sentence each: a limit on the row cuts between findings, never inside one. */
-    String sentence() {
+    public String sentence() {
         return String.join(" ", facts().stream().map(fact -> capitalised(fact) + ".").toList());
     }
 

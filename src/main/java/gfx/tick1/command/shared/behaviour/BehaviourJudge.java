@@ -1,12 +1,10 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
-import gfx.tick1.command.shared.diagnosis.MethodModels;
-import gfx.tick1.command.shared.diagnosis.Variant;
-import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Answer;
-import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Colour;
-import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Hit;
-import gfx.tick1.command.shared.grader.grading.ProbeAnswers.None;
-import gfx.tick1.command.shared.grader.harness.ProbeCalls;
+import gfx.tick1.command.shared.behaviour.Answers.Answer;
+import gfx.tick1.command.shared.behaviour.Answers.Colour;
+import gfx.tick1.command.shared.behaviour.Answers.Hit;
+import gfx.tick1.command.shared.behaviour.Answers.None;
+import gfx.tick1.command.shared.grader.harness.BehaviourInputs;
 import gfx.tick1.engine.math.Ray;
 import gfx.tick1.engine.math.Vector3;
 import gfx.tick1.engine.scene.Intersection;
@@ -24,7 +22,7 @@ import java.util.stream.Stream;
 
 /**
  * Compares the student's answers with ours, input by input, and with the catalogue's models of
- * the same methods ({@link MethodModels}). An answer is ours when it agrees with the reference's
+ * the same methods ({@link Models}). An answer is ours when it agrees with the reference's
  * within {@link #TOLERANCE}: a hit's distance, point and normal relative to the input's size, a
  * colour channel by channel once both are clamped to [0, 1] as toRGB() clamps them (a colour
  * clamped by the student's code is a correct answer). A hit is also ours when it is the exact
@@ -71,22 +69,23 @@ final class BehaviourJudge {
         String counterexample();
     }
 
-    static Behaviour judge(ProbeAnswers answers) {
+    static Behaviour judge(Answers answers) {
         if (!answers.any()) {
             MethodBehaviour none = new MethodBehaviour("", 0, MethodBehaviour.Difference.NONE, List.of());
             return new Behaviour(false, none, none);
         }
         List<RayCase> rays = new ArrayList<>();
-        for (ProbeCalls.IntersectionCall call : ProbeCalls.INTERSECTIONS) {
+        for (BehaviourInputs.IntersectionCall call : BehaviourInputs.INTERSECTIONS) {
             if (!UNTESTED_EDGES.contains(call.name())) {
                 rays.add(new RayCase(call, answers.get(call.name())));
             }
         }
-        ProbeCalls.RANDOM_INTERSECTIONS.forEach(call -> rays.add(new RayCase(call, answers.get(call.name()))));
+        BehaviourInputs.RANDOM_INTERSECTIONS.forEach(call -> rays.add(new RayCase(call, answers.get(call.name()))));
         List<ShadeCase> shadings = new ArrayList<>();
-        ProbeCalls.ILLUMINATIONS.forEach(call -> shadings.add(new ShadeCase(call, answers.get(call.name()), false)));
-        ProbeCalls.RANDOM_ILLUMINATIONS.forEach(call -> shadings.add(new ShadeCase(call, answers.get(call.name()),
-                answers.phongSet())));
+        BehaviourInputs.ILLUMINATIONS.forEach(call -> shadings.add(new ShadeCase(call, answers.get(call.name()),
+                false)));
+        BehaviourInputs.RANDOM_ILLUMINATIONS.forEach(call -> shadings.add(new ShadeCase(call,
+                answers.get(call.name()), answers.phongSet())));
         MethodBehaviour intersection = judge("intersectionWith", rays, Variant.Method.INTERSECTION_WITH,
                 AnswerFacts.ofHits(rays));
         intersection = new MethodBehaviour(intersection.method(), intersection.inputs(), intersection.difference(),
@@ -146,11 +145,11 @@ final class BehaviourJudge {
      * The notes on the edge cases the course's scenes cannot show: none where the answer is ours
      * or the handout's six steps' (a correct answer too).
      */
-    private static List<String> untested(ProbeAnswers answers, List<RayCase> tested, List<Variant> testedMistake) {
+    private static List<String> untested(Answers answers, List<RayCase> tested, List<Variant> testedMistake) {
         List<String> notes = new ArrayList<>();
         List<RayCase> every = new ArrayList<>(tested);
         List<RayCase> edges = new ArrayList<>();
-        for (ProbeCalls.IntersectionCall call : ProbeCalls.INTERSECTIONS) {
+        for (BehaviourInputs.IntersectionCall call : BehaviourInputs.INTERSECTIONS) {
             if (UNTESTED_EDGES.contains(call.name())) {
                 edges.add(new RayCase(call, answers.get(call.name())));
             }
@@ -164,10 +163,10 @@ final class BehaviourJudge {
                 continue;
             }
             List<Variant> named = reproducing(every, Variant.Method.INTERSECTION_WITH);
-            MethodModels.Hit handout = edge.model(literal);
-            notes.add(UNTESTED + ": for " + situation(edge.call().name()) + " (" + InputWords.ray(edge.call())
-                    + "), your intersectionWith returns " + InputWords.hit(edge.answer()) + "; ours returns "
-                    + InputWords.hit(edge.model(OURS)) + ", the nearest root with s > 0"
+            Models.Hit handout = edge.model(literal);
+            notes.add(UNTESTED + ": for " + situation(edge.call().name()) + " (" + Words.ray(edge.call())
+                    + "), your intersectionWith returns " + Words.hit(edge.answer()) + "; ours returns "
+                    + Words.hit(edge.model(OURS)) + ", the nearest root with s > 0"
                     + (handout == null ? ", and the handout's six steps return no hit, also a correct answer" : "")
                     + (named.isEmpty() ? "" : "; every answer of yours is that of \"" + titles(named) + "\""));
         }
@@ -187,10 +186,10 @@ final class BehaviourJudge {
     }
 
     /** A ray, a sphere and what intersectionWith gave. */
-    record RayCase(ProbeCalls.IntersectionCall call, Answer answer) implements Case {
+    record RayCase(BehaviourInputs.IntersectionCall call, Answer answer) implements Case {
 
-        MethodModels.Hit model(Set<Variant> variants) {
-            return MethodModels.intersect(v(call.origin()), v(call.direction()), v(call.centre()), call.radius(),
+        Models.Hit model(Set<Variant> variants) {
+            return Models.intersect(v(call.origin()), v(call.direction()), v(call.centre()), call.radius(),
                     variants);
         }
 
@@ -207,10 +206,10 @@ final class BehaviourJudge {
             RaycastHit exact = Intersection.ROBUST.find(new Sphere(v(call.centre()), call.radius(), new Vector3(1)),
                     new Ray(v(call.origin()), v(call.direction())));
             return same(exact.getObjectHit() == null ? null
-                    : new MethodModels.Hit(exact.getDistance(), exact.getLocation(), exact.getNormal()));
+                    : new Models.Hit(exact.getDistance(), exact.getLocation(), exact.getNormal()));
         }
 
-        private boolean same(MethodModels.Hit expected) {
+        private boolean same(Models.Hit expected) {
             if (expected == null || answer instanceof None) {
                 return expected == null && answer instanceof None;
             }
@@ -227,35 +226,35 @@ final class BehaviourJudge {
         /** The input's roughness and our answer's: the simplest counterexample has round numbers in both. */
         @Override
         public double roughness() {
-            MethodModels.Hit ours = model(OURS);
-            return InputWords.roughness(call) + (ours == null ? 0 : InputWords.roughness(ours.distance(),
+            Models.Hit ours = model(OURS);
+            return Words.roughness(call) + (ours == null ? 0 : Words.roughness(ours.distance(),
                     ours.point().x, ours.point().y, ours.point().z));
         }
 
         @Override
         public String counterexample() {
-            String yours = InputWords.hit(answer, false);
-            String ours = InputWords.hit(model(OURS), false);
+            String yours = Words.hit(answer, false);
+            String ours = Words.hit(model(OURS), false);
             if (yours.equals(ours)) {
                 // Apart beyond the seventh digit (float arithmetic, say): every digit, so the two differ.
-                yours = InputWords.hit(answer, true);
-                ours = InputWords.hit(model(OURS), true);
+                yours = Words.hit(answer, true);
+                ours = Words.hit(model(OURS), true);
             }
-            return "for " + InputWords.ray(call) + ", yours returns " + yours + "; ours returns " + ours;
+            return "for " + Words.ray(call) + ", yours returns " + yours + "; ours returns " + ours;
         }
     }
 
     /** A point to shade and what illuminate gave. */
-    record ShadeCase(ProbeCalls.IlluminationCall call, Answer answer, boolean phongSet) implements Case {
+    record ShadeCase(BehaviourInputs.IlluminationCall call, Answer answer, boolean phongSet) implements Case {
 
         Vector3 model(Set<Variant> variants) {
             boolean set = phongSet;
-            ProbeCalls.LightInput light = call.light();
-            ProbeCalls.Material material = call.sphere().material();
-            return MethodModels.illuminate(new MethodModels.Shading(v(call.ambient()),
+            BehaviourInputs.LightInput light = call.light();
+            BehaviourInputs.Material material = call.sphere().material();
+            return Models.illuminate(new Models.Shading(v(call.ambient()),
                     new PointLight(v(light.position()), v(light.colour()), light.intensity()), v(material.colour()),
-                    set ? material.kD() : ProbeCalls.COURSE_KD, set ? material.kS() : ProbeCalls.COURSE_KS,
-                    set ? material.n() : ProbeCalls.COURSE_N, v(call.point()), v(call.normal())), variants);
+                    set ? material.kD() : BehaviourInputs.COURSE_KD, set ? material.kS() : BehaviourInputs.COURSE_KS,
+                    set ? material.n() : BehaviourInputs.COURSE_N, v(call.point()), v(call.normal())), variants);
         }
 
         @Override
@@ -272,19 +271,19 @@ final class BehaviourJudge {
         @Override
         public double roughness() {
             Vector3 ours = model(OURS);
-            return InputWords.roughness(call) + InputWords.roughness(ours.x, ours.y, ours.z);
+            return Words.roughness(call) + Words.roughness(ours.x, ours.y, ours.z);
         }
 
         @Override
         public String counterexample() {
-            String yours = InputWords.colour(answer, false);
-            String ours = InputWords.colour(model(OURS), false);
+            String yours = Words.colour(answer, false);
+            String ours = Words.colour(model(OURS), false);
             if (yours.equals(ours)) {
                 // Apart beyond the seventh digit (float arithmetic, say): every digit, so the two differ.
-                yours = InputWords.colour(answer, true);
-                ours = InputWords.colour(model(OURS), true);
+                yours = Words.colour(answer, true);
+                ours = Words.colour(model(OURS), true);
             }
-            return "for " + InputWords.shading(call, phongSet) + ", yours returns " + yours + "; ours returns " + ours;
+            return "for " + Words.shading(call, phongSet) + ", yours returns " + yours + "; ours returns " + ours;
         }
     }
 

@@ -1,4 +1,4 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
 import gfx.tick1.command.grade.StudentSolution;
 import java.util.LinkedHashMap;

@@ -1,9 +1,9 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
-import gfx.tick1.command.shared.grader.grading.BehaviourJudge.RayCase;
-import gfx.tick1.command.shared.grader.grading.BehaviourJudge.ShadeCase;
-import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Colour;
-import gfx.tick1.command.shared.grader.grading.ProbeAnswers.Hit;
+import gfx.tick1.command.shared.behaviour.Answers.Colour;
+import gfx.tick1.command.shared.behaviour.Answers.Hit;
+import gfx.tick1.command.shared.behaviour.BehaviourJudge.RayCase;
+import gfx.tick1.command.shared.behaviour.BehaviourJudge.ShadeCase;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -30,14 +30,14 @@ final class AnswerFacts {
                     boolean radius = cases.stream().filter(d -> hit(d) != null)
                             .allMatch(d -> Math.abs(BehaviourJudge.length(hit(d).normal()) - d.call().radius()) <= UNIT
                                     * Math.max(1, d.call().radius()));
-                    facts.add("the normal you return has length " + InputWords.number(length) + ", not 1"
-                            + (radius ? " (always the sphere's radius r)" : "") + ", for " + InputWords.ray(c.call()));
+                    facts.add("the normal you return has length " + Words.number(length) + ", not 1"
+                            + (radius ? " (always the sphere's radius r)" : "") + ", for " + Words.ray(c.call()));
                 });
         simplest(cases, c -> hit(c) != null && hit(c).distance() < 0).ifPresent(c -> facts.add(
-                "the distance you return is negative (s = " + InputWords.number(hit(c).distance()) + ") for "
-                        + InputWords.ray(c.call())));
+                "the distance you return is negative (s = " + Words.number(hit(c).distance()) + ") for "
+                        + Words.ray(c.call())));
         simplest(cases, c -> hit(c) != null && !onTheRay(c)).ifPresent(c -> facts.add(
-                "the point you return is not O + s D for the distance s you return, for " + InputWords.ray(c.call())));
+                "the point you return is not O + s D for the distance s you return, for " + Words.ray(c.call())));
         return facts;
     }
 
@@ -45,10 +45,10 @@ final class AnswerFacts {
         List<String> facts = new ArrayList<>();
         simplest(cases, c -> rgb(c) != null && (Double.isNaN(rgb(c)[0]) || Double.isNaN(rgb(c)[1])
                 || Double.isNaN(rgb(c)[2]))).ifPresent(c -> facts.add("the colour you return is NaN for "
-                        + InputWords.shading(c.call(), c.phongSet())));
+                        + Words.shading(c.call(), c.phongSet())));
         simplest(cases, c -> rgb(c) != null && (rgb(c)[0] < 0 || rgb(c)[1] < 0 || rgb(c)[2] < 0)).ifPresent(c ->
-                facts.add("the colour you return has a negative channel, " + InputWords.vector(rgb(c)) + ", for "
-                        + InputWords.shading(c.call(), c.phongSet())));
+                facts.add("the colour you return has a negative channel, " + Words.vector(rgb(c)) + ", for "
+                        + Words.shading(c.call(), c.phongSet())));
         return facts;
     }
 
@@ -74,6 +74,6 @@ final class AnswerFacts {
 
     private static <T> Optional<T> simplest(List<T> cases, Predicate<T> shows) {
         return cases.stream().filter(shows).min(Comparator.comparingDouble(c -> c instanceof RayCase r
-                ? InputWords.roughness(r.call()) : InputWords.roughness(((ShadeCase) c).call())));
+                ? Words.roughness(r.call()) : Words.roughness(((ShadeCase) c).call())));
     }
 }

@@ -1,9 +1,9 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.command.grade.StudentSolution;
-import gfx.tick1.command.shared.grader.harness.ProbeRunner;
+import gfx.tick1.command.shared.grader.harness.AnswerLog;
 import gfx.tick1.command.shared.grader.harness.StudentCompiler;
 import gfx.tick1.command.shared.kit.StarterKit;
 import java.nio.file.Files;
@@ -15,41 +15,41 @@ import java.util.Map;
 /**
  * A student's two files for the probe tests: the correct solution of the test resources, edited
  * (each edit must find its text exactly once), compiled in memory with the starter kit and probed
- * in this JVM by the harness's own {@link ProbeRunner}, as the sandbox's JVM would.
+ * in this JVM by the harness's own {@link AnswerLog}, as the sandbox's JVM would.
  */
-record ProbedSolution(String sphere, String renderer) {
+record CalledSolution(String sphere, String renderer) {
 
-    static ProbedSolution correct() {
-        return new ProbedSolution(StudentSolution.resource("Sphere.java"), StudentSolution.resource("Renderer.java"));
+    static CalledSolution correct() {
+        return new CalledSolution(StudentSolution.resource("Sphere.java"), StudentSolution.resource("Renderer.java"));
     }
 
-    ProbedSolution sphere(String text, String replacement) {
-        return new ProbedSolution(StudentSolution.replaceOnce(sphere, text, replacement), renderer);
+    CalledSolution sphere(String text, String replacement) {
+        return new CalledSolution(StudentSolution.replaceOnce(sphere, text, replacement), renderer);
     }
 
-    ProbedSolution renderer(String text, String replacement) {
-        return new ProbedSolution(sphere, StudentSolution.replaceOnce(renderer, text, replacement));
+    CalledSolution renderer(String text, String replacement) {
+        return new CalledSolution(sphere, StudentSolution.replaceOnce(renderer, text, replacement));
     }
 
     /** The correct solution with the body of intersectionWith after a, b and c written as {@code body}. */
-    ProbedSolution intersection(String body) {
+    CalledSolution intersection(String body) {
         int from = sphere.indexOf("        // A negative discriminant");
         String end = "        // Currently returning empty RaycastHit for no intersection\n"
                 + "        return new RaycastHit();\n";
         int to = sphere.indexOf(end);
         assertThat(from).as("the correct Sphere's intersection").isPositive();
         assertThat(to).isGreaterThan(from);
-        return new ProbedSolution(sphere.substring(0, from) + body + sphere.substring(to + end.length()), renderer);
+        return new CalledSolution(sphere.substring(0, from) + body + sphere.substring(to + end.length()), renderer);
     }
 
     /** The correct solution with the body of illuminate after n is read written as {@code body}. */
-    ProbedSolution shading(String body) {
+    CalledSolution shading(String body) {
         int from = renderer.indexOf("        // L and V, unit vectors");
         String end = "return ambient.add(diffuse).add(specular);\n";
         int to = renderer.indexOf(end);
         assertThat(from).as("the correct Renderer's shading").isPositive();
         assertThat(to).isGreaterThan(from);
-        return new ProbedSolution(sphere, renderer.substring(0, from) + body + renderer.substring(to + end.length()));
+        return new CalledSolution(sphere, renderer.substring(0, from) + body + renderer.substring(to + end.length()));
     }
 
     /** The probes' log of these two files. */
@@ -64,13 +64,13 @@ record ProbedSolution(String sphere, String renderer) {
         assertThat(compiled.errors()).as("the solution compiles").isEmpty();
         Path log = Files.createTempFile(folder, "probes", ".log");
         Files.delete(log);
-        ProbeRunner.probe(new InMemory(compiled.classes()), log);
+        AnswerLog.write(new InMemory(compiled.classes()), log);
         return Files.readString(log);
     }
 
     /** What the behaviour comparison finds of these two files. */
-    ProbeFindings findings(Path folder) throws Exception {
-        return ProbeFindings.of(probeLog(folder));
+    BehaviourFindings findings(Path folder) throws Exception {
+        return BehaviourFindings.of(probeLog(folder));
     }
 
     /** The compiled classes, loaded from memory, beside the JDK only. */

@@ -1,19 +1,19 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
-import gfx.tick1.command.shared.grader.harness.ProbeCalls;
+import gfx.tick1.command.shared.grader.harness.BehaviourInputs;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
 
 /**
- * What the student's methods answered on each of {@link ProbeCalls}, parsed from the log the child
+ * What the student's methods answered on each of {@link BehaviourInputs}, parsed from the log the child
  * wrote. The log is the student's process's, so it is read strictly: only lines of the harness's
  * form, for names of calls that exist, each name once (later lines for a name are ignored), and
  * at most a few hundred lines; anything else counts as no answer. What the code could forge this
  * way is only which of the grader's own fixed sentences it gets.
  */
-final class ProbeAnswers {
+final class Answers {
 
     /** What one call gave. */
     sealed interface Answer {
@@ -36,8 +36,8 @@ final class ProbeAnswers {
     }
 
     /** Every call's line, the phong line, and a few to spare. */
-    private static final int MAX_LINES = ProbeCalls.INTERSECTIONS.size() + ProbeCalls.ILLUMINATIONS.size()
-            + 2 * ProbeCalls.RANDOM_COUNT + 10;
+    private static final int MAX_LINES = BehaviourInputs.INTERSECTIONS.size() + BehaviourInputs.ILLUMINATIONS.size()
+            + 2 * BehaviourInputs.RANDOM_COUNT + 10;
     /** The longest number the harness writes: Double.toString's, with room to spare. */
     private static final int NUMBER_CHARS = 26;
 
@@ -45,23 +45,23 @@ final class ProbeAnswers {
     /** Whether the random shadings' k_d, k_s and n were set on the student's spheres (else the course's). */
     private Boolean phongSet;
 
-    private ProbeAnswers() {
+    private Answers() {
     }
 
     /**
      * The answers in {@code log} (null when the child left none), read word by word: a few
      * thousand lines, so no backtracking pattern is run on them.
      */
-    static ProbeAnswers parse(String log) {
-        ProbeAnswers parsed = new ProbeAnswers();
+    static Answers parse(String log) {
+        Answers parsed = new Answers();
         if (log == null) {
             return parsed;
         }
         Set<String> names = new HashSet<>();
-        ProbeCalls.INTERSECTIONS.forEach(call -> names.add(call.name()));
-        ProbeCalls.ILLUMINATIONS.forEach(call -> names.add(call.name()));
-        ProbeCalls.RANDOM_INTERSECTIONS.forEach(call -> names.add(call.name()));
-        ProbeCalls.RANDOM_ILLUMINATIONS.forEach(call -> names.add(call.name()));
+        BehaviourInputs.INTERSECTIONS.forEach(call -> names.add(call.name()));
+        BehaviourInputs.ILLUMINATIONS.forEach(call -> names.add(call.name()));
+        BehaviourInputs.RANDOM_INTERSECTIONS.forEach(call -> names.add(call.name()));
+        BehaviourInputs.RANDOM_ILLUMINATIONS.forEach(call -> names.add(call.name()));
         log.lines().limit(MAX_LINES).forEach(line -> {
             String[] words = line.split(" ", 12);
             if (words.length == 2 && words[0].equals("phong") && parsed.phongSet == null

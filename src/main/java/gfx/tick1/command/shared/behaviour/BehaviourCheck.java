@@ -1,4 +1,4 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
@@ -15,12 +15,12 @@ import java.util.List;
 /**
  * The behaviour of a Sphere.java and a Renderer.java on their own, for {@code tick1 diff}: compiled
  * with the starter kit and run in the sandbox, as {@code grade} runs them, with no scene, on the
- * probes' inputs. For each method asked about, one line: that it behaves as ours, or the finding
- * ({@link ProbeFindings}); then the notes on what the course's scenes cannot show, and the hints
+ * behaviour's inputs. For each method asked about, one line: that it behaves as ours, or the finding
+ * ({@link BehaviourFindings}); then the notes on what the course's scenes cannot show, and the hints
  * of what to reread. Where the methods cannot run (no sandbox, the files do not compile), there
  * is nothing but one line that says why.
  */
-public final class CodeProbe {
+public final class BehaviourCheck {
 
     /**
      * What the methods asked about did: one line each, first; then "note: ..." and "hint: ..."
@@ -39,24 +39,23 @@ public final class CodeProbe {
     private static final Duration TIME_LIMIT = Duration.ofSeconds(30);
     private static final int MEMORY_MEGABYTES = 512;
 
-    /** The limits of a probe's JVM that hold without the sandbox too, in words. */
+    /** The limits of the methods' JVM that hold without the sandbox too, in words. */
     public static final String LIMITS = "a Java process of their own limited only in time (" + TIME_LIMIT.toSeconds()
             + " s to compile, as long again to run) and heap (" + MEMORY_MEGABYTES + " MiB)";
 
-    private CodeProbe() {
+    private BehaviourCheck() {
     }
 
     /**
-     * Probes {@code sphere} and {@code renderer} (sources of package gfx.tick1); hints only of the
-     * methods of the files named in {@code asked} ("Sphere", "Renderer"). With {@code unsandboxed}
-     * (the student's own code, on a machine without bubblewrap) the methods run without the
-     * sandbox, in a JVM of their own held only to the time limit and the heap ({@link #LIMITS}).
+     * Calls the methods of {@code sphere} and {@code renderer} (sources of package gfx.tick1),
+     * run {@code where}; hints only of the methods of the files named in {@code asked} ("Sphere",
+     * "Renderer").
      */
-    public static Lines probe(String sphere, String renderer, List<String> asked, boolean unsandboxed)
+    public static Lines check(String sphere, String renderer, List<String> asked, RunIn where)
             throws InterruptedException {
         Sandbox sandbox;
         try {
-            sandbox = unsandboxed ? Sandbox.unconfined() : Sandbox.confined();
+            sandbox = where.sandbox();
         } catch (Sandbox.Unavailable e) {
             return Lines.none("behaviour could not be checked: it comes from running your methods in "
                     + "the sandbox, and " + e.getMessage() + (e.remedy() == null ? "" : ": " + e.remedy())
@@ -65,7 +64,7 @@ public final class CodeProbe {
         Path work = null;
         try {
             work = Files.createTempDirectory("tick1-diff");
-            return probe(sandbox, work, sphere, renderer, asked);
+            return check(sandbox, work, sphere, renderer, asked);
         } catch (IOException e) {
             return Lines.none("behaviour could not be checked: your methods could not be run ("
                     + e.getMessage() + ")");
@@ -76,7 +75,7 @@ public final class CodeProbe {
         }
     }
 
-    private static Lines probe(Sandbox sandbox, Path work, String sphere, String renderer, List<String> asked)
+    private static Lines check(Sandbox sandbox, Path work, String sphere, String renderer, List<String> asked)
             throws IOException, InterruptedException {
         Path harness = Files.createDirectory(work.resolve("harness"));
         StudentProcess.writeHarness(harness);
@@ -95,7 +94,7 @@ public final class CodeProbe {
                     + (run.compiled().failure() == null ? ""
                     : " (" + run.compiled().failure() + ")"));
         }
-        ProbeFindings findings = ProbeFindings.of(run.rendered().probes());
+        BehaviourFindings findings = BehaviourFindings.of(run.rendered().probes());
         if (!findings.ran()) {
             return Lines.none("behaviour could not be checked: your methods gave no answer");
         }
@@ -103,7 +102,7 @@ public final class CodeProbe {
     }
 
     /** The lines of the methods of the files named in {@code asked}. */
-    static Lines hints(ProbeFindings findings, List<String> asked) {
+    static Lines hints(BehaviourFindings findings, List<String> asked) {
         List<String> behaviour = new ArrayList<>(), hints = new ArrayList<>();
         boolean ours = true;
         Behaviour b = findings.behaviour();
@@ -116,7 +115,7 @@ public final class CodeProbe {
                         "input"));
             } else {
                 ours = false;
-                ProbeFindings.Finding finding = findings.tested().stream()
+                BehaviourFindings.Finding finding = findings.tested().stream()
                         .filter(f -> f.method().equals(method.method())).findFirst().orElseThrow();
                 behaviour.add(finding.fact());
                 hints.add("hint: reread handout " + finding.section() + ".");

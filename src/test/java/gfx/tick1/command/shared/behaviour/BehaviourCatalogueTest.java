@@ -1,8 +1,7 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.command.shared.diagnosis.Variant;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -10,10 +9,10 @@ import java.util.Set;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.parallel.Isolated;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.junit.jupiter.api.parallel.Isolated;
 
 /**
  * Each entry of the catalogue, written into the correct solution as a student would write it, is
@@ -24,7 +23,7 @@ import org.junit.jupiter.api.parallel.Isolated;
  * with the untested label, and nothing else.
  */
 @Isolated("its probes run in this JVM, each call of the student's methods within a time limit "
-        + "(ProbeRunner.CALL_MILLIS) that a class running beside it could use up")
+        + "(AnswerLog.CALL_MILLIS) that a class running beside it could use up")
 class BehaviourCatalogueTest {
 
     private static final String RETURN_SUM = "return ambient.add(diffuse).add(specular);";
@@ -33,7 +32,7 @@ class BehaviourCatalogueTest {
 
     /** The catalogue's entries by their names, each as a student's solution that makes it. */
     static Map<String, Case> catalogue() {
-        ProbedSolution correct = ProbedSolution.correct();
+        CalledSolution correct = CalledSolution.correct();
         Map<String, Case> cases = new LinkedHashMap<>();
         cases.put("CORRECT", new Case(correct));
         cases.put("BACKGROUND_ONLY", new Case(correct.sphere("return new RaycastHit(this, s, point, normal);",
@@ -106,7 +105,7 @@ class BehaviourCatalogueTest {
     }
 
     /** A solution that makes one entry. */
-    record Case(ProbedSolution solution) {
+    record Case(CalledSolution solution) {
     }
 
     static Stream<Arguments> entries() {
@@ -132,7 +131,7 @@ class BehaviourCatalogueTest {
     @MethodSource("testedMistakes")
     void eachMistakeIsNamedByItsOwnModelAlone(Variant variant, Case mistake, @TempDir Path folder)
             throws Exception {
-        ProbeFindings findings = mistake.solution().findings(folder);
+        BehaviourFindings findings = mistake.solution().findings(folder);
         assertThat(findings.tested()).as("the tested findings of %s", variant).hasSize(1);
         MethodBehaviour method = variant.method() == Variant.Method.INTERSECTION_WITH
                 ? findings.behaviour().intersectionWith() : findings.behaviour().illuminate();
@@ -145,7 +144,7 @@ class BehaviourCatalogueTest {
     @MethodSource("oursWhereTested")
     void anEntryThatBehavesAsOursWhereTestedHasNoTestedFinding(Variant variant, Case entry, @TempDir Path folder)
             throws Exception {
-        ProbeFindings findings = entry.solution().findings(folder);
+        BehaviourFindings findings = entry.solution().findings(folder);
         assertThat(findings.ran()).as("%s was run", variant).isTrue();
         assertThat(findings.tested()).as("the tested findings of %s", variant).isEmpty();
         boolean untestedNote = variant == Variant.ROOTS_ACCEPTED_AT_ZERO || variant == Variant.DISTANCE_ALWAYS_S1;
@@ -166,7 +165,7 @@ class BehaviourCatalogueTest {
      */
     @Test
     void aWrongAnswerAtAGrazeIsAnUntestedMistakeNeverOneTheHandoutLeavesOpen(@TempDir Path folder) throws Exception {
-        ProbeFindings findings = ProbedSolution.correct().sphere("double s = s1 > 0 ? s1 : s2;",
+        BehaviourFindings findings = CalledSolution.correct().sphere("double s = s1 > 0 ? s1 : s2;",
                 "double s = discriminant == 0 ? -b / a : s1 > 0 ? s1 : s2;").findings(folder);
 
         assertThat(findings.tested()).as("the tested findings").isEmpty();
@@ -182,7 +181,7 @@ class BehaviourCatalogueTest {
      */
     @Test
     void aMistakeWithoutAModelIsShownByItsSimplestCounterexampleAndNotNamed(@TempDir Path folder) throws Exception {
-        ProbeFindings findings = ProbedSolution.correct().renderer(
+        BehaviourFindings findings = CalledSolution.correct().renderer(
                 "Vector3 specular = C_spec.scale(I).scale(k_s * Math.pow(Math.max(0, RdotV), n));",
                 "Vector3 specular = C_spec.scale(new Vector3(I.x, I.y, I.y)).scale(k_s * Math.pow(Math.max(0, RdotV), "
                         + "n));").findings(folder);

@@ -1,8 +1,8 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.command.shared.grader.harness.ProbeCalls;
+import gfx.tick1.command.shared.grader.harness.BehaviourInputs;
 import gfx.tick1.engine.math.Vector3;
 import org.junit.jupiter.api.Test;
 
@@ -15,13 +15,13 @@ class CounterexampleWordsTest {
 
     @Test
     void answersApartOnlyBeyondTheSeventhDigitArePrintedWithEveryDigit() {
-        ProbeCalls.IlluminationCall call = ProbeCalls.ILLUMINATIONS.stream()
+        BehaviourInputs.IlluminationCall call = BehaviourInputs.ILLUMINATIONS.stream()
                 .filter(each -> new BehaviourJudge.ShadeCase(each, null, false).model(BehaviourJudge.OURS).x > 0.1)
                 .findFirst().orElseThrow();
         Vector3 reference = new BehaviourJudge.ShadeCase(call, null, false).model(BehaviourJudge.OURS);
         // 1e-8 off in one channel, as float arithmetic leaves it: past the tolerance, within seven digits.
         double[] floatSlip = {Math.nextUp(reference.x + 1e-8), reference.y, reference.z};
-        String words = new BehaviourJudge.ShadeCase(call, new ProbeAnswers.Colour(floatSlip), false).counterexample();
+        String words = new BehaviourJudge.ShadeCase(call, new Answers.Colour(floatSlip), false).counterexample();
 
         String yours = words.substring(words.indexOf(", yours returns ") + ", yours returns ".length(),
                 words.indexOf("; ours returns "));
@@ -31,7 +31,7 @@ class CounterexampleWordsTest {
 
     @Test
     void answersApartAtTheSeventhDigitAreStillPrintedShort() {
-        assertThat(InputWords.colour(new Vector3(0.24, 0, 0.12))).as("a colour of short numbers")
+        assertThat(Words.colour(new Vector3(0.24, 0, 0.12))).as("a colour of short numbers")
                 .isEqualTo("the colour (0.24, 0, 0.12)");
     }
 }

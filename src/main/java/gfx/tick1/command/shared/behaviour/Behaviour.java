@@ -1,4 +1,4 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
 /**
  * The student's two methods compared with ours, input by input: a typed value any report may

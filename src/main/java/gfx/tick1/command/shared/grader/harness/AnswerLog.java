@@ -10,7 +10,7 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
- * Calls the student's {@code intersectionWith} and {@code illuminate} on each of {@link ProbeCalls}
+ * Calls the student's {@code intersectionWith} and {@code illuminate} on each of {@link BehaviourInputs}
  * and logs what each returned, one line a call, as soon as it returns: a run stopped on the time
  * limit keeps the lines before. The lines are raw numbers; the grader, which trusts nothing this
  * process writes, parses them and decides. A call that throws is logged as {@code threw}, one that
@@ -28,51 +28,51 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * phong set | phong fixed
  * </pre>
  */
-public final class ProbeRunner {
+public final class AnswerLog {
 
-    static final String PROBES_FILE = "probes";
-    /** The most one call may take: a probe's answer is one sphere and one point. */
+    static final String ANSWERS_FILE = "probes";
+    /** The most one call may take: an answer is one sphere and one point. */
     static final long CALL_MILLIS = 500;
     /** The most one method's random inputs may take together: a correct method takes milliseconds. */
     static final long BATCH_MILLIS = 5000;
 
     private final StarterApi api;
 
-    ProbeRunner(StarterApi api) {
+    AnswerLog(StarterApi api) {
         this.api = api;
     }
 
     /**
-     * Runs the probes on the compiled classes {@code student} can load, logging into {@code log};
+     * Calls the methods of the compiled classes {@code student} can load, logging into {@code log};
      * nothing when they lack the starter's API.
      */
-    public static void probe(ClassLoader student, Path log) throws IOException {
+    public static void write(ClassLoader student, Path log) throws IOException {
         StarterApi api;
         try {
             api = new StarterApi(student);
         } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
-            return; // no Sphere.intersectionWith(Ray) to call: every probe fails for want of an answer
+            return; // no Sphere.intersectionWith(Ray) to call: every input fails for want of an answer
         }
-        new ProbeRunner(api).run(log);
+        new AnswerLog(api).run(log);
     }
 
     void run(Path log) throws IOException {
         try (OutputStream out = Files.newOutputStream(log, StandardOpenOption.CREATE, StandardOpenOption.APPEND)) {
             Lines lines = new Lines(out);
-            for (ProbeCalls.IntersectionCall call : ProbeCalls.INTERSECTIONS) {
+            for (BehaviourInputs.IntersectionCall call : BehaviourInputs.INTERSECTIONS) {
                 lines.write(call.name(), Bounded.call(() -> intersect(call), CALL_MILLIS));
             }
-            for (ProbeCalls.IlluminationCall call : ProbeCalls.ILLUMINATIONS) {
+            for (BehaviourInputs.IlluminationCall call : BehaviourInputs.ILLUMINATIONS) {
                 lines.write(call.name(), api.hasIlluminate() ? Bounded.call(() -> illuminate(call, false), CALL_MILLIS)
                         : new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
             }
-            batch(lines, ProbeCalls.RANDOM_INTERSECTIONS, call -> intersect(call));
+            batch(lines, BehaviourInputs.RANDOM_INTERSECTIONS, call -> intersect(call));
             boolean phong = api.hasPhongFields();
             lines.write("phong", new Bounded.Outcome<>(Bounded.Ending.RETURNED, phong ? "set" : "fixed"));
             if (api.hasIlluminate()) {
-                batch(lines, ProbeCalls.RANDOM_ILLUMINATIONS, call -> illuminate(call, phong));
+                batch(lines, BehaviourInputs.RANDOM_ILLUMINATIONS, call -> illuminate(call, phong));
             } else {
-                for (ProbeCalls.IlluminationCall call : ProbeCalls.RANDOM_ILLUMINATIONS) {
+                for (BehaviourInputs.IlluminationCall call : BehaviourInputs.RANDOM_ILLUMINATIONS) {
                     lines.write(call.name(), new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
                 }
             }
@@ -114,10 +114,11 @@ public final class ProbeRunner {
     }
 
     private static String name(Record call) {
-        return call instanceof ProbeCalls.IntersectionCall i ? i.name() : ((ProbeCalls.IlluminationCall) call).name();
+        return call instanceof BehaviourInputs.IntersectionCall i ? i.name()
+                : ((BehaviourInputs.IlluminationCall) call).name();
     }
 
-    private String intersect(ProbeCalls.IntersectionCall call) throws ReflectiveOperationException {
+    private String intersect(BehaviourInputs.IntersectionCall call) throws ReflectiveOperationException {
         Object sphere = api.sphere(call.centre(), call.radius(), new double[] {1, 1, 1});
         Object hit = api.intersectionWith(sphere, api.ray(call.origin(), call.direction()));
         if (hit == null) {
@@ -138,9 +139,10 @@ public final class ProbeRunner {
         return line.toString();
     }
 
-    private String illuminate(ProbeCalls.IlluminationCall call, boolean setPhong) throws ReflectiveOperationException {
-        ProbeCalls.LightInput light = call.light();
-        ProbeCalls.Material material = call.sphere().material();
+    private String illuminate(BehaviourInputs.IlluminationCall call, boolean setPhong)
+            throws ReflectiveOperationException {
+        BehaviourInputs.LightInput light = call.light();
+        BehaviourInputs.Material material = call.sphere().material();
         Object scene = api.scene(call.ambient(), light.position(), light.colour(), light.intensity());
         Object sphere = api.sphere(call.sphere().centre(), call.sphere().radius(), material.colour());
         if (setPhong) {

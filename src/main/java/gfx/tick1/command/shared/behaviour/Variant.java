@@ -1,11 +1,11 @@
-package gfx.tick1.command.shared.diagnosis;
+package gfx.tick1.command.shared.behaviour;
 
 import java.util.EnumSet;
 
 /**
  * The catalogue {@code diagnose} compares an image with: the stages a student's image passes
  * through while following the handout, the correct image, and the mistakes students make.
- * {@link VariantRenderer} renders each one; this enum only names and explains them.
+ * {@code VariantRenderer} renders each one; this enum only names and explains them.
  */
 public enum Variant {
 

@@ -1,50 +1,109 @@
-package gfx.tick1.command.shared.diagnosis;
+package gfx.tick1.command.shared.behaviour;
 
-import static gfx.tick1.command.shared.diagnosis.Variant.AMBIENT_DIFFUSE;
-import static gfx.tick1.command.shared.diagnosis.Variant.AMBIENT_ONLY;
-import static gfx.tick1.command.shared.diagnosis.Variant.AMBIENT_WITHOUT_C_DIFF;
-import static gfx.tick1.command.shared.diagnosis.Variant.BACKGROUND_ONLY;
-import static gfx.tick1.command.shared.diagnosis.Variant.COLOUR_OVER_255;
-import static gfx.tick1.command.shared.diagnosis.Variant.COLOUR_TIMES_255;
-import static gfx.tick1.command.shared.diagnosis.Variant.DIFFUSE_WITHOUT_C_DIFF;
-import static gfx.tick1.command.shared.diagnosis.Variant.DISTANCE_ALWAYS_S1;
-import static gfx.tick1.command.shared.diagnosis.Variant.DIVIDED_BY_2_TIMES_A;
-import static gfx.tick1.command.shared.diagnosis.Variant.FALL_OFF_WITHOUT_4PI;
-import static gfx.tick1.command.shared.diagnosis.Variant.FAR_ROOT;
-import static gfx.tick1.command.shared.diagnosis.Variant.FLAT_COLOUR;
-import static gfx.tick1.command.shared.diagnosis.Variant.HANDOUT_SIX_STEPS;
-import static gfx.tick1.command.shared.diagnosis.Variant.HIGHLIGHT_COLOURED;
-import static gfx.tick1.command.shared.diagnosis.Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT;
-import static gfx.tick1.command.shared.diagnosis.Variant.KD_SWAPPED_WITH_KS;
-import static gfx.tick1.command.shared.diagnosis.Variant.L_FROM_THE_LIGHT;
-import static gfx.tick1.command.shared.diagnosis.Variant.NORMAL_NOT_NORMALISED;
-import static gfx.tick1.command.shared.diagnosis.Variant.NO_AMBIENT;
-import static gfx.tick1.command.shared.diagnosis.Variant.NO_FALL_OFF;
-import static gfx.tick1.command.shared.diagnosis.Variant.ROOTS_ACCEPTED_AT_ZERO;
-import static gfx.tick1.command.shared.diagnosis.Variant.ROOTS_IN_FLOAT;
-import static gfx.tick1.command.shared.diagnosis.Variant.R_WRONG_WAY;
-import static gfx.tick1.command.shared.diagnosis.Variant.SPECULAR_WITHOUT_I;
-import static gfx.tick1.command.shared.diagnosis.Variant.UNCHECKED_NEGATIVE_SQUARE_ROOT;
-import static gfx.tick1.command.shared.diagnosis.Variant.UNCLAMPED_N_DOT_L;
-import static gfx.tick1.command.shared.diagnosis.Variant.UNCLAMPED_R_DOT_V;
-import static gfx.tick1.command.shared.diagnosis.Variant.UNNORMALISED_L_V;
-import static gfx.tick1.command.shared.diagnosis.Variant.V_AWAY_FROM_CAMERA;
+import static gfx.tick1.command.shared.behaviour.Variant.AMBIENT_DIFFUSE;
+import static gfx.tick1.command.shared.behaviour.Variant.AMBIENT_ONLY;
+import static gfx.tick1.command.shared.behaviour.Variant.AMBIENT_WITHOUT_C_DIFF;
+import static gfx.tick1.command.shared.behaviour.Variant.BACKGROUND_ONLY;
+import static gfx.tick1.command.shared.behaviour.Variant.COLOUR_OVER_255;
+import static gfx.tick1.command.shared.behaviour.Variant.COLOUR_TIMES_255;
+import static gfx.tick1.command.shared.behaviour.Variant.DIFFUSE_WITHOUT_C_DIFF;
+import static gfx.tick1.command.shared.behaviour.Variant.DISTANCE_ALWAYS_S1;
+import static gfx.tick1.command.shared.behaviour.Variant.DIVIDED_BY_2_TIMES_A;
+import static gfx.tick1.command.shared.behaviour.Variant.FALL_OFF_WITHOUT_4PI;
+import static gfx.tick1.command.shared.behaviour.Variant.FAR_ROOT;
+import static gfx.tick1.command.shared.behaviour.Variant.FLAT_COLOUR;
+import static gfx.tick1.command.shared.behaviour.Variant.HANDOUT_SIX_STEPS;
+import static gfx.tick1.command.shared.behaviour.Variant.HIGHLIGHT_COLOURED;
+import static gfx.tick1.command.shared.behaviour.Variant.HIT_REJECTED_ON_A_NEGATIVE_ROOT;
+import static gfx.tick1.command.shared.behaviour.Variant.KD_SWAPPED_WITH_KS;
+import static gfx.tick1.command.shared.behaviour.Variant.L_FROM_THE_LIGHT;
+import static gfx.tick1.command.shared.behaviour.Variant.NORMAL_NOT_NORMALISED;
+import static gfx.tick1.command.shared.behaviour.Variant.NO_AMBIENT;
+import static gfx.tick1.command.shared.behaviour.Variant.NO_FALL_OFF;
+import static gfx.tick1.command.shared.behaviour.Variant.ROOTS_ACCEPTED_AT_ZERO;
+import static gfx.tick1.command.shared.behaviour.Variant.ROOTS_IN_FLOAT;
+import static gfx.tick1.command.shared.behaviour.Variant.R_WRONG_WAY;
+import static gfx.tick1.command.shared.behaviour.Variant.SPECULAR_WITHOUT_I;
+import static gfx.tick1.command.shared.behaviour.Variant.UNCHECKED_NEGATIVE_SQUARE_ROOT;
+import static gfx.tick1.command.shared.behaviour.Variant.UNCLAMPED_N_DOT_L;
+import static gfx.tick1.command.shared.behaviour.Variant.UNCLAMPED_R_DOT_V;
+import static gfx.tick1.command.shared.behaviour.Variant.UNNORMALISED_L_V;
+import static gfx.tick1.command.shared.behaviour.Variant.V_AWAY_FROM_CAMERA;
 
+import gfx.tick1.engine.math.Ray;
 import gfx.tick1.engine.math.Vector3;
+import gfx.tick1.engine.render.Renderer;
 import gfx.tick1.engine.scene.PointLight;
+import gfx.tick1.engine.scene.RaycastHit;
+import gfx.tick1.engine.scene.Scene;
+import gfx.tick1.engine.scene.Sphere;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
 import java.util.Set;
 
 /**
  * The catalogue's entries as runnable models of the two methods a student writes:
  * {@code Sphere.intersectionWith} and {@code Renderer.illuminate}, written in the order of the
- * reference's code with each entry's change at the line where that slip happens. With no entry
- * (or {@link Variant#CORRECT}) they are the reference's methods; with several, the slips
- * together. {@link VariantRenderer} renders images with them, and {@code grade} and {@code diff}
+ * reference's code with each entry's change at the line where that slip happens; with several,
+ * the slips together. With no slip of a method (no entry, or {@link Variant#CORRECT}) its model
+ * calls the reference's own method (the engine's {@code Sphere.intersectionWith} and
+ * {@code Renderer.illuminate}), so that the correct answers are ours by construction, not by a
+ * second copy of our code. {@code VariantRenderer} renders images with them, and {@code grade} and {@code diff}
  * compare a student's answers with theirs.
  */
-public final class MethodModels {
+public final class Models {
 
-    private MethodModels() {
+    /** The colour of the spheres intersectionWith is asked about: it plays no part in the answer. */
+    private static final Vector3 ANY_COLOUR = new Vector3(1);
+
+    /**
+     * The reference's illuminate, private as the starter's is (the reference's Renderer differs from
+     * the starter kit's only inside its TODOs), so reached as the harness reaches the student's.
+     */
+    private static final Method REFERENCE_ILLUMINATE = referenceIlluminate();
+    /** A renderer to call it on: illuminate reads nothing of the image's size. */
+    private static final Renderer REFERENCE = new Renderer(1, 1);
+
+    private Models() {
+    }
+
+    private static Method referenceIlluminate() {
+        try {
+            Method illuminate = Renderer.class.getDeclaredMethod("illuminate", Scene.class, Sphere.class,
+                    Vector3.class, Vector3.class);
+            illuminate.setAccessible(true);
+            return illuminate;
+        } catch (NoSuchMethodException e) {
+            throw new IllegalStateException("the reference's Renderer has no illuminate(Scene, Sphere, Vector3, "
+                    + "Vector3)", e);
+        }
+    }
+
+    /** A sphere of the reference with the Phong coefficients of a shading, which the course's fix. */
+    private static final class ShadedSphere extends Sphere {
+        private final double kD, kS, n;
+
+        ShadedSphere(Shading at) {
+            super(at.point().subtract(at.normal()), 1, at.colour());
+            this.kD = at.kD();
+            this.kS = at.kS();
+            this.n = at.n();
+        }
+
+        @Override
+        public double getPhong_kD() {
+            return kD;
+        }
+
+        @Override
+        public double getPhong_kS() {
+            return kS;
+        }
+
+        @Override
+        public double getPhong_n() {
+            return n;
+        }
     }
 
     /** What intersectionWith returns for a hit: the distance s, the point and the normal. */
@@ -64,6 +123,10 @@ public final class MethodModels {
      * the slips of {@code variants}: the hit, or null for the empty RaycastHit.
      */
     public static Hit intersect(Vector3 O, Vector3 D, Vector3 C, double r, Set<Variant> variants) {
+        if (noSlipOf(variants, Variant.Method.INTERSECTION_WITH)) {
+            RaycastHit hit = new Sphere(C, r, ANY_COLOUR).intersectionWith(new Ray(O, D));
+            return hit.getObjectHit() == null ? null : new Hit(hit.getDistance(), hit.getLocation(), hit.getNormal());
+        }
         if (variants.contains(BACKGROUND_ONLY)) {
             return null;
         }
@@ -116,6 +179,9 @@ public final class MethodModels {
 
     /** Renderer.illuminate at {@code at}, with the slips of {@code variants}. */
     public static Vector3 illuminate(Shading at, Set<Variant> variants) {
+        if (noSlipOf(variants, Variant.Method.ILLUMINATE) && at.light() != null) {
+            return reference(at);
+        }
         Vector3 I_a = at.ambientLight();
         Vector3 C_diff = at.colour();
         if (variants.contains(FLAT_COLOUR)) {
@@ -160,6 +226,29 @@ public final class MethodModels {
         Vector3 sum = variants.contains(NO_AMBIENT) ? diffuse.add(specular) : ambient.add(diffuse).add(specular);
         return variants.contains(COLOUR_TIMES_255) ? sum.scale(255)
                 : variants.contains(COLOUR_OVER_255) ? sum.scale(1.0 / 255) : sum;
+    }
+
+    /** Whether none of {@code variants} is a slip of {@code method}: its model is then the reference's. */
+    private static boolean noSlipOf(Set<Variant> variants, Variant.Method method) {
+        for (Variant variant : variants) {
+            if (variant.method() == method) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The reference's illuminate at {@code at}. */
+    private static Vector3 reference(Shading at) {
+        Scene scene = new Scene();
+        scene.setAmbientLight(at.ambientLight());
+        scene.setPointLight(at.light());
+        try {
+            return (Vector3) REFERENCE_ILLUMINATE.invoke(REFERENCE, scene, new ShadedSphere(at), at.point(),
+                    at.normal());
+        } catch (IllegalAccessException | InvocationTargetException e) {
+            throw new IllegalStateException("the reference's illuminate could not be called", e);
+        }
     }
 
     /** I = light colour * intensity / (4 pi d^2), or one of the two ways of getting it wrong. */

@@ -16,9 +16,9 @@ import java.util.SplittableRandom;
  * unit vectors, origins away from zero, radii other than 1, coloured spheres and lights, k_d other
  * than k_s, n other than 10, any P and N) varies there.
  */
-public final class ProbeCalls {
+public final class BehaviourInputs {
 
-    private ProbeCalls() {
+    private BehaviourInputs() {
     }
 
     /** A ray (origin O, direction D) and a sphere (centre C, radius r) for intersectionWith. */

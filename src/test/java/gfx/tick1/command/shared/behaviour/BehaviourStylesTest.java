@@ -1,25 +1,25 @@
-package gfx.tick1.command.shared.grader.grading;
+package gfx.tick1.command.shared.behaviour;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.parallel.Isolated;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.junit.jupiter.api.parallel.Isolated;
 
 /**
  * Correct solutions written in other styles than ours behave as ours on every input, tested or
  * not: the comparison may speak only of what the code does, never of how it is written.
  */
 @Isolated("its probes run in this JVM, each call of the student's methods within a time limit "
-        + "(ProbeRunner.CALL_MILLIS) that a class running beside it could use up")
+        + "(AnswerLog.CALL_MILLIS) that a class running beside it could use up")
 class BehaviourStylesTest {
 
     static Stream<Arguments> styles() {
-        ProbedSolution correct = ProbedSolution.correct();
+        CalledSolution correct = CalledSolution.correct();
         return Stream.of(
                 Arguments.of("renamed locals", correct.intersection("""
                         double disc = b * b - 4 * a * c;
@@ -130,21 +130,21 @@ class BehaviourStylesTest {
     /** Styles of this project's own writing, each as its two files. */
     static Stream<Arguments> writtenStyles() {
         return WrittenStyles.all().values().stream().map(style -> Arguments.of(style.name(),
-                new ProbedSolution(style.sphere(), style.renderer())));
+                new CalledSolution(style.sphere(), style.renderer())));
     }
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("writtenStyles")
-    void aCorrectSolutionOfOurOwnStyleBehavesAsOurs(String style, ProbedSolution solution, @TempDir Path folder)
+    void aCorrectSolutionOfOurOwnStyleBehavesAsOurs(String style, CalledSolution solution, @TempDir Path folder)
             throws Exception {
         aCorrectSolutionInAnotherStyleBehavesAsOurs(style, solution, folder);
     }
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("styles")
-    void aCorrectSolutionInAnotherStyleBehavesAsOurs(String style, ProbedSolution solution, @TempDir Path folder)
+    void aCorrectSolutionInAnotherStyleBehavesAsOurs(String style, CalledSolution solution, @TempDir Path folder)
             throws Exception {
-        ProbeFindings findings = solution.findings(folder);
+        BehaviourFindings findings = solution.findings(folder);
         assertThat(findings.ran()).as("the style \"%s\" was run", style).isTrue();
         assertThat(findings.facts()).as("the tested findings of the style \"%s\"", style).isEmpty();
         assertThat(findings.untested()).as("the untested notes of the style \"%s\"", style).isEmpty();
