@@ -132,12 +132,13 @@ class StudentJarTest {
 
     /** One run of {@code java -jar tick1.jar args} in the bare root, in the student's folder {@code folder} there. */
     private CliRun run(String folder, String... args) throws IOException, InterruptedException {
-        return runIn("C.UTF-8", folder, args);
+        return runIn("C.UTF-8", JAR, folder, args);
     }
 
-    /** As {@link #run}, with LANG set to this locale. */
-    private CliRun runIn(String locale, String folder, String... args) throws IOException, InterruptedException {
-        Process process = start(locale, folder, args);
+    /** As {@link #run}, with LANG set to this locale and the jar named as given. */
+    private CliRun runIn(String locale, String jar, String folder, String... args)
+            throws IOException, InterruptedException {
+        Process process = start(locale, jar, folder, args);
         if (!process.waitFor(RUN_LIMIT.toSeconds(), TimeUnit.SECONDS)) {
             process.destroyForcibly().waitFor();
         }
@@ -152,10 +153,10 @@ class StudentJarTest {
         return printed.resolve("err.txt");
     }
 
-    private Process start(String locale, String folder, String... args) throws IOException {
+    private Process start(String locale, String jar, String folder, String... args) throws IOException {
         List<String> command = new ArrayList<>(bareRoot);
         command.addAll(List.of("--setenv", "LANG", locale, "--bind", home.toString(), HOME, "--chdir", folder, "--",
-                Path.of(System.getProperty("java.home")).toRealPath().resolve("bin/java").toString(), "-jar", JAR));
+                Path.of(System.getProperty("java.home")).toRealPath().resolve("bin/java").toString(), "-jar", jar));
         command.addAll(List.of(args));
         return new ProcessBuilder(command).redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")))
                 .redirectOutput(out().toFile()).redirectError(err().toFile()).start();
@@ -180,7 +181,9 @@ class StudentJarTest {
     void inALocaleThatLosesTheFoldersLettersItStopsInOneLineSayingHowToStart()
             throws IOException, InterruptedException {
         give("scenes/basic_scene.xml", "basic_scene.xml");
-        CliRun run = runIn("C", HOME, "-i", "basic_scene.xml", "-o", "ours.png");
+        // The jar named as the student runs it, beside it: under a full name with letters the locale
+        // cannot read, Java itself could not open the jar, before tick1 starts.
+        CliRun run = runIn("C", "tick1.jar", HOME, "-i", "basic_scene.xml", "-o", "ours.png");
         assertThat(run.status()).as(run.transcript()).isEqualTo(2);
         assertThat(run.err().lines()).as(run.transcript()).singleElement().asString()
                 .contains("the current folder's name has letters that Java cannot read", "LC_ALL=C.UTF-8 java -jar");
@@ -282,7 +285,7 @@ class StudentJarTest {
     @Test
     void previewServesThePageAndEveryModuleItImports() throws IOException, InterruptedException {
         give("scenes/tick1.xml", "tick1.xml");
-        Process preview = start("C.UTF-8", HOME, "preview", "--no-open", "--port", "0", "tick1.xml");
+        Process preview = start("C.UTF-8", JAR, HOME, "preview", "--no-open", "--port", "0", "tick1.xml");
         try {
             URI page = null;
             for (long deadline = System.nanoTime() + RUN_LIMIT.toNanos(); page == null && preview.isAlive()
