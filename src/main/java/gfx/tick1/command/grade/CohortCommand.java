@@ -14,6 +14,7 @@ import gfx.tick1.command.shared.grader.report.CohortReport;
 import gfx.tick1.command.shared.grader.report.ReportFiles;
 import gfx.tick1.command.shared.grader.report.Worksheet;
 import gfx.tick1.command.shared.grader.sandbox.ChildOutput;
+import gfx.tick1.command.shared.grader.sandbox.Leftovers;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.IoErrors;
@@ -100,7 +101,12 @@ final class CohortCommand {
                 + printable(id) + " has " + folders.size() + " folders in the download (" + printable(String.join(
                         ", ", folders.subList(0, Math.min(3, folders.size())))) + (folders.size() > 3 ? ", ..." : "")
                 + "): each fails ungraded until one is left"));
-        Path work = Files.createTempDirectory("tick1-grade");
+        // What killed runs left (mounts, control groups, work folders that may hold hidden scenes) goes first.
+        String leftover = Leftovers.remove();
+        if (leftover != null) {
+            err.println("tick1 grade: " + leftover);
+        }
+        Path work = Leftovers.newWorkFolder("grade");
         AtomicReference<CohortGrade> running = new AtomicReference<>();
         // At the end, or on Ctrl-C or SIGTERM: stop the students' processes and delete the work
         // folder. Finished results are in the store already; the one being stored is renamed into
