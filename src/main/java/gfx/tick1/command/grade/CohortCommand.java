@@ -2,6 +2,7 @@ package gfx.tick1.command.grade;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.grader.cohort.CohortGrade;
+import gfx.tick1.command.shared.grader.cohort.Ungraded;
 import gfx.tick1.command.shared.grader.cohort.ResultStore;
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.intake.Submissions;
@@ -226,7 +227,7 @@ final class CohortCommand {
         out.println(CohortEnding.of(results, done.stored()).line());
         out.println("Grades: " + report.resolve(ReportFiles.GRADES) + "; feedback: "
                 + report.resolve(ReportFiles.FEEDBACK_ZIP) + "; report: " + report.resolve("index.html"));
-        for (CohortGrade.Ungraded ungraded : done.ungraded()) {
+        for (Ungraded ungraded : done.ungraded()) {
             err.println("tick1 grade: " + printable(ungraded.folder()) + ": not graded: " + ungraded.why()
                     + (ungraded.grader() ? "" : " " + report));
         }
