@@ -2,6 +2,7 @@ package gfx.tick1.command.grade;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.grader.cohort.CohortGrade;
+import gfx.tick1.command.shared.grader.cohort.Ungraded;
 import gfx.tick1.command.shared.grader.cohort.ResultStore;
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.intake.Submissions;
@@ -14,6 +15,7 @@ import gfx.tick1.command.shared.grader.report.CohortReport;
 import gfx.tick1.command.shared.grader.report.ReportFiles;
 import gfx.tick1.command.shared.grader.report.Worksheet;
 import gfx.tick1.command.shared.grader.sandbox.ChildOutput;
+import gfx.tick1.command.shared.grader.sandbox.Leftovers;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.IoErrors;
@@ -100,7 +102,12 @@ final class CohortCommand {
                 + printable(id) + " has " + folders.size() + " folders in the download (" + printable(String.join(
                         ", ", folders.subList(0, Math.min(3, folders.size())))) + (folders.size() > 3 ? ", ..." : "")
                 + "): each fails ungraded until one is left"));
-        Path work = Files.createTempDirectory("tick1-grade");
+        // What killed runs left (mounts, control groups, work folders that may hold hidden scenes) goes first.
+        String leftover = Leftovers.remove();
+        if (leftover != null) {
+            err.println("tick1 grade: " + leftover);
+        }
+        Path work = Leftovers.newWorkFolder("grade");
         AtomicReference<CohortGrade> running = new AtomicReference<>();
         // At the end, or on Ctrl-C or SIGTERM: stop the students' processes and delete the work
         // folder. Finished results are in the store already; the one being stored is renamed into
@@ -220,7 +227,7 @@ final class CohortCommand {
         out.println(CohortEnding.of(results, done.stored()).line());
         out.println("Grades: " + report.resolve(ReportFiles.GRADES) + "; feedback: "
                 + report.resolve(ReportFiles.FEEDBACK_ZIP) + "; report: " + report.resolve("index.html"));
-        for (CohortGrade.Ungraded ungraded : done.ungraded()) {
+        for (Ungraded ungraded : done.ungraded()) {
             err.println("tick1 grade: " + printable(ungraded.folder()) + ": not graded: " + ungraded.why()
                     + (ungraded.grader() ? "" : " " + report));
         }

@@ -1,7 +1,7 @@
 package gfx.tick1.command.grade;
 
 import gfx.tick1.command.shared.cli.ExitStatuses;
-import gfx.tick1.command.shared.grader.cohort.CohortGrade;
+import gfx.tick1.command.shared.grader.cohort.Ungraded;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.engine.io.Counted;
 import java.util.List;
@@ -40,11 +40,11 @@ record CohortEnding(long total, long stored, long problems, long passed, long no
      * feedback: an error of tick1's first (it asks for a report), then the grader's own shortage (it asks for
      * room and the same command again), then the report's folder.
      */
-    static int status(List<CohortGrade.Ungraded> ungraded, boolean unwritten) {
-        if (ungraded.stream().anyMatch(one -> one.cause() == CohortGrade.Ungraded.Cause.TICK1_ERROR)) {
+    static int status(List<Ungraded> ungraded, boolean unwritten) {
+        if (ungraded.stream().anyMatch(one -> one.cause() == Ungraded.Cause.TICK1_ERROR)) {
             return ExitStatuses.EXIT_INTERNAL;
         }
-        if (ungraded.stream().anyMatch(one -> one.cause() == CohortGrade.Ungraded.Cause.GRADER_SHORT)) {
+        if (ungraded.stream().anyMatch(one -> one.cause() == Ungraded.Cause.GRADER_SHORT)) {
             return GradeCommand.EXIT_NOT_GRADED;
         }
         return ungraded.isEmpty() && !unwritten ? GradeCommand.EXIT_PASS : GradeCommand.EXIT_CANNOT_WRITE;

@@ -6,6 +6,7 @@ import gfx.tick1.command.shared.coverage.ScenesShortfall;
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.model.Submission;
+import gfx.tick1.command.shared.grader.sandbox.Leftovers;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
@@ -224,7 +225,7 @@ public final class GradeCommand implements Callable<Integer> {
         if (target.cohort != null) {
             return new CohortCommand(options, target.cohort, sandbox, out, err).call();
         }
-        Path work = Files.createTempDirectory("tick1-grade");
+        Path work = Leftovers.newWorkFolder("grade");
         StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), options.memoryMegabytes());
         // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
         // scenes and all. Stopped, the JVM ends when its shutdown hooks do, whatever the grade's thread

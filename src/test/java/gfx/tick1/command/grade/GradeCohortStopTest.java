@@ -87,6 +87,48 @@ class GradeCohortStopTest {
         }
     }
 
+    /**
+     * A grade killed with SIGKILL while the slow student's code runs, two jobs at a time, leaves its
+     * work folder, the tmpfs of that run and of each job's compiler, and control groups: the next
+     * grade, with the same temporary folder, removes them all before it grades.
+     */
+    @Test
+    void whatAKilledGradeLeftIsRemovedByTheNextGrade() throws Exception {
+        Path zip = moodleZip(dir.resolve("download.zip"), twoCorrectThenOneSlow());
+        Path report = dir.resolve("report");
+        Process killed = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, "--jobs", "2",
+                TIME_LIMIT[0], TIME_LIMIT[1]));
+        awaitTheSlowCode(killed, report.resolve(CohortCommand.STATE_FOLDER));
+        killed.destroyForcibly().waitFor();
+        try (Stream<Path> left = Files.list(dir.resolve("tmp"))) {
+            assertThat(left).as("what the killed grade left in its temporary folder").isNotEmpty();
+        }
+
+        Process next = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, TIME_LIMIT));
+        assertThat(next.waitFor(300, TimeUnit.SECONDS)).as("the next grade ended").isTrue();
+
+        String said = Files.readString(dir.resolve("grade.log"));
+        assertThat(next.exitValue()).as(said).isZero();
+        try (Stream<Path> left = Files.list(dir.resolve("tmp"))) {
+            assertThat(left).as("work folders and filter files, after the next grade").isEmpty();
+        }
+        assertThat(Files.readAllLines(Path.of("/proc/self/mountinfo"))).as("file systems mounted in the killed "
+                + "grade's work folder").noneMatch(line -> line.contains(dir.toString()));
+        assertThat(controlGroupsOf(killed.pid())).as("the killed grade's control groups").isEmpty();
+    }
+
+    /** The control groups named for the grader whose process id is {@code pid}, anywhere under /sys/fs/cgroup. */
+    private static List<Path> controlGroupsOf(long pid) throws IOException {
+        Path cgroups = Path.of("/sys/fs/cgroup");
+        if (!Files.isDirectory(cgroups)) {
+            return List.of();
+        }
+        try (Stream<Path> found = Files.find(cgroups, 8, (path, attributes) -> attributes.isDirectory()
+                && path.getFileName() != null && path.getFileName().toString().startsWith("tick1-" + pid + "-"))) {
+            return found.toList();
+        }
+    }
+
     /** Two correct students, then one whose render waits 15 s. */
     private static List<Student> twoCorrectThenOneSlow() {
         List<Student> students = new ArrayList<>();

@@ -588,13 +588,13 @@ class GradeCohortTest {
 
     /**
      * Starts {@code tick1 ARGS} in a JVM of its own, printing into {@code dir}/grade.log, with
-     * {@code dir}/tmp as its temporary folder (where its work folder goes), which the sandbox's
-     * users can pass through.
+     * {@code dir}/tmp as its temporary folder (where its work folder goes; made if need be), which the
+     * sandbox's users can pass through.
      */
     static Process gradeInAJvmOfItsOwn(Path dir, String... args) throws IOException {
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
-        Path temporary = Files.createDirectory(dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(
-                PosixFilePermissions.fromString("rwx--x--x")));
+        Path temporary = Files.isDirectory(dir.resolve("tmp")) ? dir.resolve("tmp") : Files.createDirectory(
+                dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx--x--x")));
         List<String> command = CliRun.java();
         command.addAll(List.of("-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
                 Tick1.class.getName()));

@@ -34,9 +34,9 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * Grades a cohort: every submission in the sandbox, {@code jobs} at a time, each in a process and
- * under a user of its own. Each result is stored the moment it is known ({@link ResultStore}), so
- * a run that is stopped loses no finished result, and the next run grades only what is new or
- * changed. The grading scenes are read and their reference images rendered once for everyone.
+ * under a user of its own, start to finish. Each result is stored the moment it is known
+ * ({@link ResultStore}), so a run that is stopped loses no finished result, and the next run grades
+ * only what is left, new or changed. The grading scenes are read and their references rendered once.
  */
 public final class CohortGrade {
 
@@ -48,29 +48,6 @@ public final class CohortGrade {
             List<Ungraded> ungraded) {
     }
 
-    /**
-     * A submission that could not be graded: its folder, why in one line, and whose the cause is. It
-     * keeps a row with a blank grade (never "no submission"), and is graded again by the next run.
-     */
-    public record Ungraded(String folder, String why, Cause cause) {
-
-        /** Whose fault it is that a submission was not graded. */
-        public enum Cause {
-            /** The grader ran short of its own disk or memory: free some, and the same command grades it. */
-            GRADER_SHORT,
-            /** An error of tick1's (a bug). */
-            TICK1_ERROR,
-            /** Its images could not be stored in the report's folder. */
-            REPORT_FOLDER
-        }
-
-        /** Whether the grader is at fault (its resources, or an error of tick1's), not the report's folder. */
-        public boolean grader() {
-            return cause != Cause.REPORT_FOLDER;
-        }
-    }
-
-
     final Grading grading;
     final Sandbox sandbox;
     private final int jobs;
@@ -80,7 +57,7 @@ public final class CohortGrade {
     private final List<StudentProcess> processes = Collections.synchronizedList(new ArrayList<>());
     private volatile boolean stopping;
     /** Counted down when {@link #run} has ended: every job's grade ended, and each result kept or deleted. */
-    private final CountDownLatch ended = new CountDownLatch(1);
+    private final CountDownLatch runEnded = new CountDownLatch(1);
     /** The submissions whose results are in the store: from earlier runs, and graded whole by this one. */
     private final AtomicInteger kept = new AtomicInteger();
 
@@ -127,12 +104,9 @@ public final class CohortGrade {
         processes.remove(process);
     }
 
-    /**
-     * Waits, at most {@code most}, for {@link #run} to end once {@link #stop()} has been called:
-     * every grade it cut short then has its half-written result deleted.
-     */
+    /** Waits, at most {@code most}, for {@link #run} to end: what grades stop() cut short began to store is gone. */
     public void awaitEnd(Duration most) throws InterruptedException {
-        ended.await(most.toMillis(), TimeUnit.MILLISECONDS);
+        runEnded.await(most.toMillis(), TimeUnit.MILLISECONDS);
     }
 
     /** How many submissions have their results stored: from earlier runs, and graded whole by this one. */
@@ -145,7 +119,7 @@ public final class CohortGrade {
         try {
             return new CohortRun(submissions, work).grade();
         } finally {
-            ended.countDown();
+            runEnded.countDown();
         }
     }
 

@@ -64,7 +64,7 @@ record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDis
     /** Whether this grader can mount each run a tmpfs of its own: it mounts one, in a new temporary folder. */
     private static boolean canMountOutputDisks() {
         try {
-            Path scratch = Files.createTempDirectory("tick1-mount-");
+            Path scratch = Leftovers.newWorkFolder("mount");
             try {
                 return OutputDisk.canMount(scratch);
             } finally {

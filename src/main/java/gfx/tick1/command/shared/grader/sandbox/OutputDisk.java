@@ -192,12 +192,6 @@ final class OutputDisk implements AutoCloseable {
      * everything in it. Does nothing where none is. Never throws.
      */
     static void detachAllUnder(Path folder) {
-        List<String> lines;
-        try {
-            lines = Files.readAllLines(MOUNTS);
-        } catch (IOException | RuntimeException e) {
-            return;
-        }
         String top;
         try {
             top = folder.toRealPath().toString();
@@ -205,19 +199,38 @@ final class OutputDisk implements AutoCloseable {
             return;   // no folder, no mount on it
         }
         List<String> below = new ArrayList<>();
+        for (String point : mountPoints()) {
+            if (point.equals(top) || point.startsWith(top + "/")) {
+                below.add(point);
+            }
+        }
+        below.sort(Comparator.comparing(String::length).reversed());   // the deepest first
+        below.forEach(OutputDisk::detach);
+    }
+
+    /** Where a run's or a compiler's tmpfs (source {@code tick1-output}) is mounted; none where that cannot be read. */
+    static List<String> mountPoints() {
+        List<String> lines;
+        try {
+            lines = Files.readAllLines(MOUNTS);
+        } catch (IOException | RuntimeException e) {
+            return List.of();
+        }
+        List<String> points = new ArrayList<>();
         for (String line : lines) {
             // mountinfo: ID PARENT MAJOR:MINOR ROOT MOUNT-POINT OPTIONS ... - TYPE SOURCE SUPER-OPTIONS
             String[] halves = line.split(" - ", 2);
             String[] fields = halves[0].split(" ");
             if (halves.length == 2 && fields.length > 4 && halves[1].startsWith("tmpfs " + SOURCE + " ")) {
-                String point = unescape(fields[4]);
-                if (point.equals(top) || point.startsWith(top + "/")) {
-                    below.add(point);
-                }
+                points.add(unescape(fields[4]));
             }
         }
-        below.sort(Comparator.comparing(String::length).reversed());   // the deepest first
-        below.forEach(point -> Commands.run(List.of(UMOUNT.toString(), "--lazy", point)));
+        return points;
+    }
+
+    /** Detaches the file system mounted at {@code point} (it goes when nothing holds it); whether umount did. */
+    static boolean detach(String point) {
+        return Commands.run(List.of(UMOUNT.toString(), "--lazy", point));
     }
 
     /** A mount point as mountinfo writes it, with its space, tab, newline and backslash as octal escapes. */

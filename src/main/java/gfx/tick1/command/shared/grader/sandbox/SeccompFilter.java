@@ -227,7 +227,7 @@ final class SeccompFilter {
         if (program == null) {
             return null;
         }
-        Path file = Files.createTempFile("tick1-seccomp-", ".bpf",
+        Path file = Files.createTempFile(Leftovers.prefix("seccomp"), ".bpf",
                 PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------")));
         file.toFile().deleteOnExit();
         Files.write(file, program);

@@ -1,0 +1,144 @@
+package gfx.tick1.command.shared.grader.sandbox;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Optional;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+/**
+ * What tick1 runs killed before their clean-up (SIGKILL, a power cut) left on the machine: the
+ * tmpfs mounted on their runs' and compilers' folders (source {@code tick1-output}), their work
+ * folders ({@code tick1-grade-PID-...}), seccomp filter files ({@code tick1-seccomp-PID-....bpf})
+ * and control groups ({@code tick1-PID-N}). Each name carries the process id of the run that made
+ * it; what belongs to a process that is gone is removed. A live process under that id is left
+ * alone when it is a Java program (tick1 always is one), or when what it runs cannot be told.
+ */
+public final class Leftovers {
+
+    private static final Pattern WORK_FOLDER = Pattern.compile("tick1-(?:grade|mount)-(\\d+)-.+");
+    private static final Pattern FILTER_FILE = Pattern.compile("tick1-seccomp-(\\d+)-.+\\.bpf");
+    private static final Pattern CONTROL_GROUP = Pattern.compile("tick1-(\\d+)-\\d+");
+    /** The most names the line of what could not be removed shows. */
+    private static final int SHOWN = 3;
+
+    private Leftovers() {
+    }
+
+    /**
+     * The prefix of a new file or folder of this run's in the temporary folder, for {@code use}
+     * ("grade", "seccomp", ...): it carries this process's id, so that what a killed run left can be
+     * told from what a live one holds.
+     */
+    static String prefix(String use) {
+        return "tick1-" + use + "-" + ProcessHandle.current().pid() + "-";
+    }
+
+    /** A new work folder for {@code use} ("grade", "mount") in the temporary folder, named by {@link #prefix}. */
+    public static Path newWorkFolder(String use) throws IOException {
+        return Files.createTempDirectory(prefix(use));
+    }
+
+    /**
+     * Removes what tick1 runs whose process is gone left in the temporary folder, in the mounts and
+     * where this process makes its control groups.
+     *
+     * @return null, or one line naming what could not be removed
+     */
+    public static String remove() {
+        return remove(Path.of(System.getProperty("java.io.tmpdir")), Cgroup.find());
+    }
+
+    /** As {@link #remove()}, with {@code temporary} for the temporary folder and {@code cgroups} (or null). */
+    static String remove(Path temporary, Cgroup.Place cgroups) {
+        List<String> left = new ArrayList<>();
+        // The mounts first: a folder with a file system mounted in it cannot be deleted.
+        List<String> points = new ArrayList<>(OutputDisk.mountPoints());
+        points.sort(Comparator.comparing(String::length).reversed());   // the deepest first
+        for (String point : points) {
+            Long owner = ownerOf(Path.of(point));
+            if (owner != null && gone(owner) && !OutputDisk.detach(point)) {
+                left.add(point);
+            }
+        }
+        for (Path entry : list(temporary)) {
+            String name = entry.getFileName().toString();
+            Long folderOwner = owner(WORK_FOLDER, name);
+            if (folderOwner != null && gone(folderOwner) && Files.isDirectory(entry, LinkOption.NOFOLLOW_LINKS)
+                    && WorkFolder.delete(entry) != null) {
+                left.add(entry.toString());
+            }
+            Long fileOwner = owner(FILTER_FILE, name);
+            if (fileOwner != null && gone(fileOwner) && !deleted(entry)) {
+                left.add(entry.toString());
+            }
+        }
+        for (Path parent : cgroups == null ? List.<Path>of() : cgroups.parents().values()) {
+            for (Path group : list(parent)) {
+                Long owner = owner(CONTROL_GROUP, group.getFileName().toString());
+                if (owner != null && gone(owner) && Files.isDirectory(group, LinkOption.NOFOLLOW_LINKS)
+                        && !deleted(group)) {
+                    left.add(group.toString());
+                }
+            }
+        }
+        return left.isEmpty() ? null : "cannot remove what killed tick1 runs left: " + String.join(", ",
+                left.subList(0, Math.min(SHOWN, left.size()))) + (left.size() > SHOWN ? " and "
+                + (left.size() - SHOWN) + " more" : "") + " (remove them by hand: umount, rmdir, rm -r)";
+    }
+
+    /** The process id a work folder on the way to {@code path} carries, or null. */
+    private static Long ownerOf(Path path) {
+        for (Path name : path) {
+            Long owner = owner(WORK_FOLDER, name.toString());
+            if (owner != null) {
+                return owner;
+            }
+        }
+        return null;
+    }
+
+    private static Long owner(Pattern pattern, String name) {
+        Matcher matcher = pattern.matcher(name);
+        try {
+            return matcher.matches() ? Long.valueOf(matcher.group(1)) : null;
+        } catch (NumberFormatException e) {
+            return null;
+        }
+    }
+
+    /**
+     * Whether the process {@code pid} is gone: not there, or running a program that is not Java
+     * (its id taken again). A live Java program, or one whose program cannot be told, may be tick1.
+     */
+    static boolean gone(long pid) {
+        Optional<ProcessHandle> process = ProcessHandle.of(pid).filter(ProcessHandle::isAlive);
+        return process.isEmpty() || process.get().info().command()
+                .map(command -> !Path.of(command).getFileName().toString().startsWith("java")).orElse(false);
+    }
+
+    private static List<Path> list(Path folder) {
+        try (Stream<Path> entries = Files.list(folder)) {
+            return entries.toList();
+        } catch (IOException | UncheckedIOException e) {
+            return List.of();   // not there, or not ours to read: nothing of ours left in it
+        }
+    }
+
+    /** Whether {@code path}, a file or an empty folder (a control group), was deleted or was already gone. */
+    private static boolean deleted(Path path) {
+        try {
+            Files.deleteIfExists(path);
+            return true;
+        } catch (IOException e) {
+            return false;
+        }
+    }
+}
