@@ -69,6 +69,10 @@ public class Renderer {
                 }
                 pipe.source().close();
                 pipe.sink().close();
+                if (last < 0) {
+                    // No pipe's name can be read (no /proc/self/fd): the count cannot be read at all.
+                    return -1;
+                }
             }
         } catch (Exception e) {
             return -1;

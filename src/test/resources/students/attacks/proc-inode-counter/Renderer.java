@@ -38,6 +38,10 @@ public class Renderer {
         if (start >= 0 && end > start) {
             int digit = Character.digit(text.charAt(end - 1), 16);
             long first = count();
+            if (first < 0) {
+                // Nothing of /proc to look at: no look can move the count either.
+                return new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB);
+            }
             try {
                 while (count() - first < (digit + 1L) * STEP) {
                     // count() moves it, by thousands

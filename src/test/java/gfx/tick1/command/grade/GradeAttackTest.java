@@ -16,6 +16,10 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.io.UncheckedIOException;
+import java.lang.annotation.ElementType;
+import java.lang.annotation.Retention;
+import java.lang.annotation.RetentionPolicy;
+import java.lang.annotation.Target;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
@@ -30,14 +34,20 @@ import java.util.HexFormat;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.Lock;
+import java.util.concurrent.locks.ReentrantReadWriteLock;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestInfo;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.parallel.Execution;
+import org.junit.jupiter.api.parallel.ExecutionMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
@@ -47,12 +57,26 @@ import org.junit.jupiter.params.provider.CsvSource;
  * more memory than that fails with exit status 4). Every attack must fail with a reason that says
  * what happened, and leave the secret nowhere, every file outside the work folder as it was, no
  * process behind, and the next student's grade as it would have been.
+ * <p>
+ * The grades run side by side: each waits mostly on the JVMs it starts. The files the attacks look
+ * for are planted once for the class, with one secret, so that no test's planting can hide another's
+ * harm; the few tests that share more than that (the host's page cache, a file in /usr, the processes
+ * an attack starts) take a lock.
  */
 @SandboxProperties.Read
+@Execution(ExecutionMode.CONCURRENT)
 class GradeAttackTest {
 
-    private static final Path SECRET = Path.of("/tmp/tick1-attack-secret.txt");
-    private static final Path VICTIM = Path.of("/tmp/tick1-attack-victim.txt");
+    /** The secret file and the victim as the attacks' sources name them. */
+    private static final String SECRET_IN_ATTACKS = "/tmp/tick1-attack-secret.txt",
+            VICTIM_IN_ATTACKS = "/tmp/tick1-attack-victim.txt";
+    /**
+     * This run's secret file and victim, which the test writes in the attacks' sources in place of theirs: names of
+     * this run's own, as another run of these tests (another clone's) may plant and delete its own at the same time.
+     */
+    private static final String RUN = Long.toHexString(Double.doubleToLongBits(Math.random()));
+    private static final Path SECRET = Path.of("/tmp/tick1-attack-secret-" + RUN + ".txt");
+    private static final Path VICTIM = Path.of("/tmp/tick1-attack-victim-" + RUN + ".txt");
     /**
      * The port the attacks' sources send to: the test listens on a free port of its own, so that it can run beside
      * anything, and writes that port in its place.
@@ -63,14 +87,31 @@ class GradeAttackTest {
     private static final String GRADER_HEAP = "-Xmx160m";
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};
+    /**
+     * The grades' time limit, in seconds: one the code compiles within on a busy machine, with the other grades
+     * beside it. Each attack ends its runs itself, or a limit that is not time stops them, long before it.
+     */
+    private static final String TIME_LIMIT = "30";
 
     @TempDir
     Path dir;
 
-    private String secret;
+    /** The secret planted for the whole class: every test looks for this one. */
+    private static String secret;
     private ServerSocket listener;
+    /**
+     * Where {@link #aSceneLinkedToAFileDirectlyInUsrIsHiddenFromTheCode} puts the organiser's scene: a name of
+     * this test's own, which the test writes in the attack's source in place of its name.
+     */
+    private Path hiddenSceneInUsr;
     /** The graders' temporary folder, where their work folders go: the test's own, as other grades may run. */
     private Path temporary;
+
+    /**
+     * Held by each test while it runs: to write by the tests {@link Alone}, to read by the others, which run
+     * side by side.
+     */
+    private static final ReentrantReadWriteLock MACHINE = new ReentrantReadWriteLock(true);
 
     @BeforeAll
     static void theSandboxCanRunHere() throws InterruptedException {
@@ -81,12 +122,48 @@ class GradeAttackTest {
         }
     }
 
-    @BeforeEach
-    void plantTheSecretTheVictimAndTheListener() throws IOException {
+    @BeforeAll
+    static void plantTheSecretAndTheVictim() throws IOException {
+        removeTheLeaks();
         secret = "tick1-secret-" + Long.toHexString(Double.doubleToLongBits(Math.random()));
         Files.writeString(SECRET, secret);
         Files.writeString(VICTIM, VICTIM_TEXT);
+    }
+
+    @AfterAll
+    static void removeThem() throws IOException {
+        Files.deleteIfExists(SECRET);
+        Files.deleteIfExists(VICTIM);
+        removeTheLeaks();
+    }
+
+    /**
+     * On a test that needs the machine to itself: its attack starts processes that every test's check looks
+     * for, or it counts on the host's page cache, which every grade's start reads the JDK's files into.
+     */
+    @Target(ElementType.METHOD)
+    @Retention(RetentionPolicy.RUNTIME)
+    private @interface Alone {
+    }
+
+    private Lock held;
+
+    @BeforeEach
+    void takeTheMachine(TestInfo test) {
+        held = test.getTestMethod().orElseThrow().isAnnotationPresent(Alone.class) ? MACHINE.writeLock()
+                : MACHINE.readLock();
+        held.lock();
+    }
+
+    @AfterEach
+    void giveTheMachineBack() {
+        held.unlock();
+    }
+
+    @BeforeEach
+    void openTheListener() throws IOException {
         listener = new ServerSocket(0, 5, InetAddress.getLoopbackAddress());
+        hiddenSceneInUsr = Path.of("/usr/tick1-attack-hidden-scene-" + RUN + "-" + listener.getLocalPort() + ".xml");
         listener.setSoTimeout(200);
         // The sandbox's user must be able to reach the work folder in it.
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
@@ -95,10 +172,12 @@ class GradeAttackTest {
     }
 
     @AfterEach
-    void removeThem() throws IOException {
+    void closeTheListener() throws IOException {
         listener.close();
-        Files.deleteIfExists(SECRET);
-        Files.deleteIfExists(VICTIM);
+    }
+
+    /** Deletes what an attack may have left where {@link #leaks()} looks: for the class, as its tests run at once. */
+    private static void removeTheLeaks() throws IOException {
         try (Stream<Path> leaks = Files.list(Path.of("/tmp"))) {
             for (Path leak : leaks.filter(f -> f.getFileName().toString().startsWith("tick1-attack-leak")).toList()) {
                 Files.delete(leak);
@@ -129,9 +208,11 @@ class GradeAttackTest {
                 STARTS_PROGRAMS.contains(attack), sphere, renderer, options);
     }
 
-    /** An attack's source with the port it sends to made this test's listener's. */
+    /** An attack's source with the port it sends to made this test's listener's, the files it looks for this run's. */
     private String toTheListener(String source) {
-        return source.replace(LISTENER_PORT_IN_ATTACKS, Integer.toString(listener.getLocalPort()));
+        return source.replace(LISTENER_PORT_IN_ATTACKS, Integer.toString(listener.getLocalPort()))
+                .replace(SECRET_IN_ATTACKS, SECRET.toString()).replace(VICTIM_IN_ATTACKS, VICTIM.toString())
+                .replace(HIDDEN_SCENE_IN_USR_IN_ATTACKS, hiddenSceneInUsr.toString());
     }
 
     /**
@@ -180,7 +261,7 @@ class GradeAttackTest {
         }
         command.addAll(List.of(SMALL));
         if (!List.of(options).contains("--time-limit")) {
-            command.addAll(List.of("--time-limit", "10"));
+            command.addAll(List.of("--time-limit", TIME_LIMIT));
         }
         command.addAll(List.of(options));
         ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
@@ -275,7 +356,7 @@ class GradeAttackTest {
     void codeThatStealsSecretsFindsNoneAndCannotSendThem() throws Exception {
         Grade grade = grade("steal-secrets");
         assertFailedAndHarmedNothing(grade);
-        assertThat(grade.output()).contains("/tmp/tick1-attack-secret.txt: NoSuchFileException", "ConnectException")
+        assertThat(grade.output()).contains(SECRET + ": NoSuchFileException", "ConnectException")
                 .doesNotContain("/proc/1/environ", "HOME=", "USER=", "TICK1_ATTACK_TOKEN");
     }
 
@@ -288,6 +369,7 @@ class GradeAttackTest {
     }
 
     @Test
+    @Alone
     void processesTheCodeStartsDoNotOutliveTheGradeNorTouchTheNextOne() throws Exception {
         Grade attack = grade("outlive-the-grade");
         assertFailedAndHarmedNothing(attack);
@@ -307,11 +389,11 @@ class GradeAttackTest {
 
     @Test
     void aFifoWhereTheGraderReadsCannotHangIt() throws Exception {
-        // The limit is the other attacks' 10 s: the code compiles within it even on a busy machine,
-        // and the FIFO holds the render until the limit whatever its length.
-        Grade grade = grade("fifo-progress", "--time-limit", "10");
+        // The FIFO holds the render until the limit whatever its length: the others' limit, which it waits out
+        // beside the other grades.
+        Grade grade = grade("fifo-progress");
         assertFailedAndHarmedNothing(grade);
-        assertThat(grade.output()).contains("tick1.xml: FAIL: no image within the time limit of 10 s");
+        assertThat(grade.output()).contains("tick1.xml: FAIL: no image within the time limit of " + TIME_LIMIT + " s");
     }
 
     @Test
@@ -478,20 +560,20 @@ class GradeAttackTest {
         assumeThat(Files.isWritable(Path.of("/usr"))).as("a file can be made in /usr (as root)").isTrue();
         Path scenes = Files.createDirectory(dir.resolve("scenes"));
         try {
-            Files.writeString(HIDDEN_SCENE_IN_USR, secretScene());
-            Files.createSymbolicLink(scenes.resolve("secret-scene.xml"), HIDDEN_SCENE_IN_USR);
+            Files.writeString(hiddenSceneInUsr, secretScene());
+            Files.createSymbolicLink(scenes.resolve("secret-scene.xml"), hiddenSceneInUsr);
             Grade grade = grade("read-a-scene-in-usr", "--scenes", scenes.toString());
             assertFailedAndHarmedNothing(grade);
             assertThat(grade.output()).as("what the code read there: no scene")
                     .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: read: [")
                     .doesNotContain("<scene>", "point-light");
         } finally {
-            Files.deleteIfExists(HIDDEN_SCENE_IN_USR);
+            Files.deleteIfExists(hiddenSceneInUsr);
         }
     }
 
-    /** Where {@link #aSceneLinkedToAFileDirectlyInUsrIsHiddenFromTheCode} puts the organiser's scene. */
-    private static final Path HIDDEN_SCENE_IN_USR = Path.of("/usr/tick1-attack-hidden-scene.xml");
+    /** Where the attack that reads a scene in /usr looks for it, as its source names it. */
+    private static final String HIDDEN_SCENE_IN_USR_IN_ATTACKS = "/usr/tick1-attack-hidden-scene.xml";
 
     /**
      * A scene of the organiser's --scenes folder (not in /usr) with another name in /usr, a hard
@@ -506,7 +588,7 @@ class GradeAttackTest {
         Path scene = scenes.resolve("secret-scene.xml");
         try {
             try {
-                Files.createLink(HIDDEN_SCENE_IN_USR, scene);
+                Files.createLink(hiddenSceneInUsr, scene);
             } catch (IOException e) {
                 assumeThat(e).as("/usr and the test's folder are one file system").isNull();
             }
@@ -516,7 +598,7 @@ class GradeAttackTest {
                     .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: read: [")
                     .doesNotContain("<scene>", "point-light");
         } finally {
-            Files.deleteIfExists(HIDDEN_SCENE_IN_USR);
+            Files.deleteIfExists(hiddenSceneInUsr);
         }
     }
 
@@ -529,6 +611,7 @@ class GradeAttackTest {
      * grader reads every file a run sees before the run starts.
      */
     @Test
+    @Alone
     void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheHostsPageCache() throws Exception {
         Path scenes = secretScenes();
         // Out of memory, so that only the first grade's reads would bring pages of it back.
@@ -640,6 +723,7 @@ class GradeAttackTest {
      * sandbox refuses the calls that drop them, so they stay in memory.
      */
     @Test
+    @Alone
     void aRunCannotDropTheJdksFilesFromTheHostsPageCache() throws Exception {
         assumeThat(Files.isWritable(PAGE_CACHE_FILE))
                 .as("the test may write the file, so the kernel says which of its pages are in memory (as root)")
