@@ -86,11 +86,7 @@ final class CompileServer implements AutoCloseable {
         }
         if (disk == null || !disk.holdsNothing()) {
             // The compiler sees the file system it was started with: a new one needs a new compiler.
-            endCompiler();
-            if (disk != null) {
-                disk.close();
-            }
-            disk = null;
+            close();
             WorkFolder.delete(folder);
             Files.createDirectory(folder);
             sandbox.share(folder);

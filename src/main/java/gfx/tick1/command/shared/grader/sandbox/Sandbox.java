@@ -51,12 +51,15 @@ public final class Sandbox {
 
     /** What this machine gives the sandbox: its bwrap, control groups, seccomp filter and output disks. */
     private final Host host;
+    /** Whether there is a bwrap: false for {@link #unconfined()}. */
+    private final boolean confined;
     /** The user the student's code runs as when the grader is root; -1 to keep the grader's. */
     private final int uid;
     /** Which of the grades this program runs at once this sandbox is for: 0 for a single grade. */
     private final int job;
     private Sandbox(Host host, int uid, int job) {
         this.host = host;
+        this.confined = host.bwrap() != null;
         this.uid = uid;
         this.job = job;
     }
@@ -158,9 +161,8 @@ public final class Sandbox {
         }
     }
 
-    /** Whether there is a bwrap: false for {@link #unconfined()}. */
     boolean isConfined() {
-        return host.bwrap() != null;
+        return confined;
     }
 
     /** The user the student's code runs as; -1 for the grader's own. */
@@ -189,8 +191,8 @@ public final class Sandbox {
 
     /** What this sandbox holds the code to: results graded under other rules are graded again. */
     public Enforcement enforcement() {
-        return new Enforcement(isConfined(), uid >= 0, isConfined() && host.cgroups() != null,
-                isConfined() && host.seccompFilter() != null, isConfined() && host.ownDisks());
+        return new Enforcement(confined, uid >= 0, confined && host.cgroups() != null,
+                confined && host.seccompFilter() != null, confined && host.ownDisks());
     }
 
     /**
@@ -213,7 +215,7 @@ public final class Sandbox {
 
     /** A control group for one run held to {@code totals}, or null when none can be made. */
     Cgroup cgroupFor(Cgroup.Totals totals) throws IOException {
-        return isConfined() && host.cgroups() != null ? Cgroup.create(host.cgroups(), totals) : null;
+        return confined && host.cgroups() != null ? Cgroup.create(host.cgroups(), totals) : null;
     }
 
     /**
@@ -222,7 +224,7 @@ public final class Sandbox {
      * under the hidden runs' stricter seccomp filter.
      */
     List<String> wrap(List<String> command, List<Bind> binds, RunLimits limits, Cgroup cgroup, SceneBatch batch) {
-        if (!isConfined()) {
+        if (!confined) {
             return command;
         }
         List<String> wrapped = new ArrayList<>(RunLimits.startCommand(cgroup,
@@ -276,7 +278,7 @@ public final class Sandbox {
      * JVM options of their own and so change its limits.
      */
     ProcessBuilder process(List<String> wrappedCommand) {
-        if (isConfined()) {
+        if (confined) {
             return processFor(wrappedCommand);
         }
         ProcessBuilder builder = new ProcessBuilder(wrappedCommand);
