@@ -45,6 +45,8 @@ class StudentJarTest {
     /** The student's folder, as the bare root shows it. */
     private static final String HOME = "/home/Zoë/Tick 1";
     private static final String JAR = HOME + "/tick1.jar";
+    /** The same jar, bound where its name is ASCII. */
+    private static final String ASCII_JAR = "/opt/tick1.jar";
     private static final Duration RUN_LIMIT = Duration.ofMinutes(5);
     private static final Path LOCALE = Path.of("/usr/lib/locale/C.utf8");
 
@@ -155,7 +157,8 @@ class StudentJarTest {
 
     private Process start(String locale, String jar, String folder, String... args) throws IOException {
         List<String> command = new ArrayList<>(bareRoot);
-        command.addAll(List.of("--setenv", "LANG", locale, "--bind", home.toString(), HOME, "--chdir", folder, "--",
+        command.addAll(List.of("--setenv", "LANG", locale, "--bind", home.toString(), HOME, "--ro-bind",
+                home.resolve("tick1.jar").toString(), ASCII_JAR, "--chdir", folder, "--",
                 Path.of(System.getProperty("java.home")).toRealPath().resolve("bin/java").toString(), "-jar", jar));
         command.addAll(List.of(args));
         return new ProcessBuilder(command).redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")))
@@ -181,9 +184,9 @@ class StudentJarTest {
     void inALocaleThatLosesTheFoldersLettersItStopsInOneLineSayingHowToStart()
             throws IOException, InterruptedException {
         give("scenes/basic_scene.xml", "basic_scene.xml");
-        // The jar named as the student runs it, beside it: under a full name with letters the locale
-        // cannot read, Java itself could not open the jar, before tick1 starts.
-        CliRun run = runIn("C", "tick1.jar", HOME, "-i", "basic_scene.xml", "-o", "ours.png");
+        // The jar in a folder of ASCII name: from a folder whose name the locale cannot read, Java itself
+        // cannot open a jar there, by any name, before tick1 starts.
+        CliRun run = runIn("C", ASCII_JAR, HOME, "-i", "basic_scene.xml", "-o", "ours.png");
         assertThat(run.status()).as(run.transcript()).isEqualTo(2);
         assertThat(run.err().lines()).as(run.transcript()).singleElement().asString()
                 .contains("the current folder's name has letters that Java cannot read", "LC_ALL=C.UTF-8 java -jar");
