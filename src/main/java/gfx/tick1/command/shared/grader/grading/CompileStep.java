@@ -20,8 +20,8 @@ import java.time.Duration;
  */
 final class CompileStep {
 
-    /** How compiling went, where the classes are, and when it started and ended. */
-    record Started(StudentProcess.Compiled compiled, Path classes, long compileStart, long renderStart) {
+    /** How compiling went, where the classes are, and when it ended (the time limit's runs start then). */
+    record Started(StudentProcess.Compiled compiled, Path classes, long renderStart) {
     }
 
     private final Sandbox sandbox;
@@ -36,7 +36,6 @@ final class CompileStep {
 
     Started compile(Submission submission, Sources code, Path work) throws IOException, InterruptedException {
         Path sources = writeSources(work, code);
-        long compileStart = System.nanoTime();
         Path compiledFolder = childFolder(sandbox, work, "compiled");
         StudentProcess.Compiled compiled = process.compile(sources, compiledFolder, submission.sphere().path(),
                 submission.renderer().path(), timeLimit);
@@ -44,7 +43,7 @@ final class CompileStep {
         if (compiled.compiled()) {
             sandbox.share(classes, false);
         }
-        return new Started(compiled, classes, compileStart, System.nanoTime());
+        return new Started(compiled, classes, System.nanoTime());
     }
 
     /** The two files and the starter kit's others in {@code work}/sources, shared with the sandbox. */

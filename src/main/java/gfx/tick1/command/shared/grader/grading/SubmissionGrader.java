@@ -29,24 +29,16 @@ import java.util.List;
  */
 public final class SubmissionGrader {
 
-    /** Where a grade's time went: JVM starts and javac, the student's code, the comparing and images. */
-    public record Phases(long compileNanos, long renderNanos, long compareNanos) {
-
-        Phases plus(long compile, long render, long compare) {
-            return new Phases(compileNanos + compile, renderNanos + render, compareNanos + compare);
-        }
-    }
-
     /**
-     * One submission's grade: the result, whether its images could not be written, the time by phase, how its
+     * One submission's grade: the result, whether its images could not be written, how its
      * two methods behaved on the behaviour inputs (not run: {@link Behaviour#ran} false), and the compiler's errors
      * when the code did not compile (else empty).
      */
-    public record Graded(StudentResult result, boolean imagesUnwritable, Phases phases, Behaviour behaviour,
+    public record Graded(StudentResult result, boolean imagesUnwritable, Behaviour behaviour,
             List<String> compileErrors) {
 
-        Graded(StudentResult result, boolean imagesUnwritable, Phases phases, Behaviour behaviour) {
-            this(result, imagesUnwritable, phases, behaviour, List.of());
+        Graded(StudentResult result, boolean imagesUnwritable, Behaviour behaviour) {
+            this(result, imagesUnwritable, behaviour, List.of());
         }
     }
 
@@ -98,26 +90,21 @@ public final class SubmissionGrader {
         Explainer explainer = new Explainer(grading, submission, start, out);
         SourceCheck.Checked checked = SourceCheck.check(submission);
         if (checked instanceof SourceCheck.Problem problem) {
-            return new Finished(explainer.failed(problem.category(), problem.reason(), new Phases(0, 0, 0)));
+            return new Finished(explainer.failed(problem.category(), problem.reason()));
         }
         SourceCheck.Sources sources = (SourceCheck.Sources) checked;
         CompileStep.Started started = compiler.compile(submission, sources, work);
-        long compileNanos = started.renderStart() - started.compileStart();
         if (!started.compiled().compiled()) {
-            return new Finished(explainer.didNotCompile(started.compiled(), new Phases(compileNanos, 0, 0)));
+            return new Finished(explainer.didNotCompile(started.compiled()));
         }
         out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
                 + " with the starter code.");
         SceneRuns.PublicRun run = runs.runPublic(started, work);
-        long compareStart = System.nanoTime();
         ProbeFindings probes = run.probes().join();
         List<Judged> judged = new SceneJudge(grading, probes, new FeedbackImages(images, out, err), out)
                 .judgeBatch(SceneBatch.PUBLIC, run.ran(), List.of());
-        long now = System.nanoTime();
         return new Halfway(new Halfway.Compiled(submission, sources, started),
-                new Halfway.PublicScenes(judged, probes, run.printed(), run.ran().took()),
-                new Halfway.Spent(new Phases(compileNanos, run.ran().took().toNanos(), now - compareStart),
-                        now - start));
+                new Halfway.PublicScenes(judged, probes, run.printed(), run.ran().took()), System.nanoTime() - start);
     }
 
     /**
@@ -129,27 +116,21 @@ public final class SubmissionGrader {
         long start = System.nanoTime();
         Halfway.Compiled code = halfway.code;
         Halfway.PublicScenes scenes = halfway.publicScenes;
-        Phases phases = halfway.spent.phases();
-        Explainer explainer = new Explainer(grading, code.submission(), start - halfway.spent.elapsedNanos(), out);
+        Explainer explainer = new Explainer(grading, code.submission(), start - halfway.elapsedNanos, out);
         CompileStep.Started started = code.started();
-        long compileNanos = 0;
         if (started == null) {
             started = compiler.compile(code.submission(), code.sources(), work);
-            compileNanos = started.renderStart() - started.compileStart();
             if (!started.compiled().compiled()) {
                 // In fixed words: this compile ran beside hidden runs, whose use of the machine may have decided it.
-                return explainer.failed(Category.Outcome.DOES_NOT_COMPILE, COMPILED_ONCE_ONLY,
-                        phases.plus(compileNanos, 0, 0));
+                return explainer.failed(Category.Outcome.DOES_NOT_COMPILE, COMPILED_ONCE_ONLY);
             }
         }
         SceneRuns.Ran hidden = runs.runHidden(started, work, scenes.took());
-        long compareStart = System.nanoTime();
         List<Judged> judged = new ArrayList<>(scenes.judged());
         judged.addAll(new SceneJudge(grading, scenes.probes(), new FeedbackImages(null, out, out), out)
                 .judgeBatch(SceneBatch.HIDDEN, hidden, scenes.judged()));
         explainer.lastLinesPrinted(judged, scenes.printed());
-        return explainer.verdict(judged, scenes.probes(), phases.plus(compileNanos, hidden.took().toNanos(),
-                System.nanoTime() - compareStart));
+        return explainer.verdict(judged, scenes.probes());
     }
 
     /** What {@link #begin} gave: a whole grade, or one {@link Halfway} done. */
@@ -164,7 +145,7 @@ public final class SubmissionGrader {
      * A grade whose public scenes are run and judged, and whose hidden ones are not yet: what
      * {@link #finish} needs, and nothing of the public run's images.
      */
-    public record Halfway(Compiled code, PublicScenes publicScenes, Spent spent) implements Begun {
+    public record Halfway(Compiled code, PublicScenes publicScenes, long elapsedNanos) implements Begun {
         /**
          * The most bytes of compiled classes a grade set aside keeps on the grader's disk: far more
          * than any solution's, far less than a compile may make.
@@ -187,10 +168,6 @@ public final class SubmissionGrader {
             }
         }
 
-        /** The grade's time so far: by phase, and in all. */
-        record Spent(Phases phases, long elapsedNanos) {
-        }
-
         /**
          * This grade as it waits for its hidden scenes: with the public run's folder deleted from
          * {@code work}, and, when the classes are more than a solution's, {@code work} emptied, so
@@ -207,7 +184,7 @@ public final class SubmissionGrader {
                     deleted(entry);
                 }
             }
-            return new Halfway(new Compiled(code.submission(), code.sources(), null), publicScenes, spent);
+            return new Halfway(new Compiled(code.submission(), code.sources(), null), publicScenes, elapsedNanos);
         }
 
         private static void deleted(Path folder) throws IOException {
