@@ -28,7 +28,8 @@ final class OneStudentSection {
         GRADE("grade, correct", "`tick1 grade`, correct solution", 1.0),
         GRADE_WRONG("grade, wrong", "`tick1 grade`, wrong solution (N.L not clamped), with its explanation", 1.3),
         DIFF("diff", "`tick1 diff`, the correct solution", 0.5),
-        VPL("grade --format vpl", "`tick1 grade --format vpl`, correct solution", 1.0);
+        VPL("grade --format vpl", "`tick1 grade --format vpl`, correct solution, as VPL's activity starts it "
+                + "with VPL's default limits (tick1's heap 160 MiB, the student's 64 MiB)", 1.0);
 
         private final String label;
         private final String words;
@@ -43,6 +44,8 @@ final class OneStudentSection {
 
     /** VPL's default memory limit, within which the summed memory of an honest evaluation stays. */
     static final double VPL_MEBIBYTES = 256;
+    /** The heaps vpl_evaluate.sh gives tick1 and the student's code under that limit, in MiB. */
+    private static final int VPL_OWN_HEAP = 160, VPL_STUDENT_HEAP = 64;
 
     /** One kind's median wall time in seconds and the largest peak of its summed memory in MiB (NaN: not read). */
     record Row(Kind kind, double medianSeconds, double peakMebibytes) {
@@ -80,8 +83,10 @@ final class OneStudentSection {
             sequences.add(tick1(processes, 1, "grade", "--sphere", files(wrong)[0], "--renderer", files(wrong)[1],
                     "--report", report));
             sequences.add(tick1(processes, 0, "diff", files(correct)[0], files(correct)[1]));
-            sequences.add(tick1(processes, 0, "grade", "--format", "vpl", "--sphere", files(correct)[0],
-                    "--renderer", files(correct)[1]));
+            // As the activity's vpl_evaluate.sh starts it with VPL's default limits (256 MiB, 240 s).
+            sequences.add(List.of(processes.tick1WithHeap(VPL_OWN_HEAP, 0, "grade", "--format", "vpl",
+                    "--grade-range", "0:10", "--sphere", files(correct)[0], "--renderer", files(correct)[1],
+                    "--time-limit", "60", "--memory", Integer.toString(VPL_STUDENT_HEAP))));
             List<ProcessRuns.Measured> measured = processes.inTurn(runs, sequences, TreeMemory::of);
             List<Row> rows = new ArrayList<>();
             for (Kind kind : Kind.values()) {

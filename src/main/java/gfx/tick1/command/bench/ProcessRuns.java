@@ -126,8 +126,26 @@ final class ProcessRuns {
         return inTurn(runs, sequences, TreeMemory::none).stream().map(Measured::timing).toList();
     }
 
-    /** A command and the exit status it must end with. */
-    record Command(List<String> words, int exitStatus) {
+    /** A command, the exit status it must end with, and the variables it gets beside this process's. */
+    record Command(List<String> words, int exitStatus, Map<String, String> environment) {
+
+        Command(List<String> words, int exitStatus) {
+            this(words, exitStatus, Map.of());
+        }
+    }
+
+    /**
+     * tick1 with {@code args} and a heap of {@code heapMegabytes}, as a script that starts the launcher gives it one:
+     * through TICK1_OPTS, or the option itself where tick1 is started with java -cp.
+     */
+    Command tick1WithHeap(int heapMegabytes, int exitStatus, String... args) {
+        String heap = "-Xmx" + heapMegabytes + "m";
+        if (launcher != null) {
+            return new Command(tick1Command(args), exitStatus, Map.of("TICK1_OPTS", heap));
+        }
+        List<String> command = new ArrayList<>(List.of(java, heap, "-cp", classPath, MainClass.NAME));
+        command.addAll(List.of(args));
+        return new Command(command, exitStatus);
     }
 
     /** One kind of run measured: its times, and the largest peak of its processes' summed memory (NaN: not read). */
@@ -211,8 +229,10 @@ final class ProcessRuns {
         Path err = Files.createTempFile("tick1-bench", ".err"), out = Files.createTempFile("tick1-bench", ".out");
         try {
             long start = System.nanoTime();
-            Process process = new ProcessBuilder(command.words()).redirectError(err.toFile())
-                    .redirectOutput(out.toFile()).start();
+            ProcessBuilder builder = new ProcessBuilder(command.words()).redirectError(err.toFile())
+                    .redirectOutput(out.toFile());
+            builder.environment().putAll(command.environment());
+            Process process = builder.start();
             TreeMemory read = memory.apply(process);
             process.getOutputStream().close();
             int status = process.waitFor();

@@ -33,7 +33,9 @@ class OneStudentSectionTest {
                 .contains("| `tick1 grade`, wrong solution (N.L not clamped), with its explanation | 6.00 | 1.50 | "
                         + "at most 1.3 | no | 230 |")
                 .contains("| `tick1 diff`, the correct solution | 1.00 | 0.25 | at most 0.5 | yes | 150 |")
-                .contains("| `tick1 grade --format vpl`, correct solution | 3.20 | 0.80 | at most 1.0 | yes | 170 |");
+                .contains("| `tick1 grade --format vpl`, correct solution, as VPL's activity starts it with VPL's "
+                        + "default limits (tick1's heap 160 MiB, the student's 64 MiB) | 3.20 | 0.80 | "
+                        + "at most 1.0 | yes | 170 |");
     }
 
     @Test

@@ -472,7 +472,7 @@ public final class StudentProcess implements AutoCloseable {
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx" + request.jvm().heapMegabytes() + "m",
                 // A small first heap: the default (a 64th of the machine's memory) is fresh pages that fault in
-                // as the render allocates, which costs the render processor time (docs/benchmark.md, the levers).
+                // as the render allocates, which costs the render processor time.
                 "-Xms" + Math.min(FIRST_HEAP_MEGABYTES, request.jvm().heapMegabytes()) + "m",
                 "-XX:MaxDirectMemorySize=32m",
                 "-XX:CompressedClassSpaceSize=64m",
