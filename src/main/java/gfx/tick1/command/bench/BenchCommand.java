@@ -61,9 +61,9 @@ public final class BenchCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Option(names = "--quick", description = "Small frames, each whole run once and a cohort of 2: for CI, a "
-            + "check that everything runs and each goal is measured (coarsely), not a measure of speed. About half a "
-            + "minute on two cores, or less; more when other work keeps them busy. The full run is for people.")
+    @Option(names = "--quick", description = "Small frames, each whole run and each of one student's runs once, "
+            + "and a cohort of 2: for CI, a check that everything runs and each goal is measured (coarsely), not a "
+            + "measure of speed. The full run is for people.")
     private boolean quick;
 
     @Option(names = "--one-student", description = "Only the one-student section: one student's grade, diff and "

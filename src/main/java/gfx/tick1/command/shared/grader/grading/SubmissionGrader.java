@@ -72,8 +72,34 @@ public final class SubmissionGrader {
      */
     public Graded grade(Submission submission, Path work, Path images, PrintWriter out, PrintWriter err)
             throws IOException, InterruptedException {
-        Begun begun = begin(submission, work, images, out, err);
-        return begun instanceof Halfway halfway ? finish(halfway, work, out) : ((Finished) begun).graded();
+        return grade(submission, work, images, out, err, HiddenRun.afterJudging());
+    }
+
+    /**
+     * Grades {@code submission} as {@link #grade} does, but starts the hidden scenes' run as soon as the public run
+     * has ended, while the public scenes are judged and a wrong image explained here: the grade then waits for the
+     * longer of the two rather than for both. The code's JVM and this one's explaining then hold their memory at
+     * once, so this is not for a grade that must fit VPL's memory limit.
+     */
+    public Graded gradeWithHiddenRunAhead(Submission submission, Path work, Path images, PrintWriter out,
+            PrintWriter err) throws IOException, InterruptedException {
+        return grade(submission, work, images, out, err, HiddenRun.ahead());
+    }
+
+    private Graded grade(Submission submission, Path work, Path images, PrintWriter out, PrintWriter err,
+            HiddenRun hidden) throws IOException, InterruptedException {
+        boolean finished = false;
+        try {
+            Begun begun = begin(submission, work, images, out, err, hidden);
+            Graded graded = begun instanceof Halfway halfway ? finish(halfway, work, out, hidden)
+                    : ((Finished) begun).graded();
+            finished = true;
+            return graded;
+        } finally {
+            if (!finished) {
+                hidden.abandon();
+            }
+        }
     }
 
     /**
@@ -86,6 +112,11 @@ public final class SubmissionGrader {
      */
     public Begun begin(Submission submission, Path work, Path images, PrintWriter out, PrintWriter err)
             throws IOException, InterruptedException {
+        return begin(submission, work, images, out, err, HiddenRun.afterJudging());
+    }
+
+    private Begun begin(Submission submission, Path work, Path images, PrintWriter out, PrintWriter err,
+            HiddenRun hidden) throws IOException, InterruptedException {
         long start = System.nanoTime();
         Explainer explainer = new Explainer(grading, submission, start, out);
         SourceCheck.Checked checked = SourceCheck.check(submission);
@@ -100,6 +131,7 @@ public final class SubmissionGrader {
         out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
                 + " with the starter code.");
         SceneRuns.PublicRun run = runs.runPublic(started, work);
+        hidden.publicEnded(runs, started, work, run.ran().took());
         ProbeFindings probes = run.probes().join();
         List<Judged> judged = new SceneJudge(grading, probes, new FeedbackImages(images, out, err), out)
                 .judgeBatch(SceneBatch.PUBLIC, run.ran(), List.of());
@@ -113,6 +145,11 @@ public final class SubmissionGrader {
      * folder the grade began in, or, after {@link Halfway#setAside}, an empty one.
      */
     public Graded finish(Halfway halfway, Path work, PrintWriter out) throws IOException, InterruptedException {
+        return finish(halfway, work, out, HiddenRun.afterJudging());
+    }
+
+    private Graded finish(Halfway halfway, Path work, PrintWriter out, HiddenRun hiddenRun)
+            throws IOException, InterruptedException {
         long start = System.nanoTime();
         Halfway.Compiled code = halfway.code;
         Halfway.PublicScenes scenes = halfway.publicScenes;
@@ -125,7 +162,7 @@ public final class SubmissionGrader {
                 return explainer.failed(Category.Outcome.DOES_NOT_COMPILE, COMPILED_ONCE_ONLY);
             }
         }
-        SceneRuns.Ran hidden = runs.runHidden(started, work, scenes.took());
+        SceneRuns.Ran hidden = hiddenRun.ran(runs, started, work, scenes.took());
         List<Judged> judged = new ArrayList<>(scenes.judged());
         judged.addAll(new SceneJudge(grading, scenes.probes(), new FeedbackImages(null, out, out), out)
                 .judgeBatch(SceneBatch.HIDDEN, hidden, scenes.judged()));
