@@ -52,10 +52,10 @@ final class OneStudentSection {
     }
 
     /**
-     * What was measured: how many runs of each, the rows in {@link Kind}'s order; or, where it could not be,
-     * no rows and why ({@code missing}).
+     * What was measured: how many runs of each, the rows in {@link Kind}'s order, and the machine's load average
+     * before and after them, in words; or, where it could not be, no rows and why ({@code missing}).
      */
-    record Measured(int runs, List<Row> rows, String missing) {
+    record Measured(int runs, List<Row> rows, String missing, String load) {
 
         /** The ratio of a kind's median to the bare pipeline's. */
         double ratio(Row row) {
@@ -68,6 +68,7 @@ final class OneStudentSection {
 
     /** Measures {@code runs} runs of each kind with {@code processes}, in {@code folder}, an empty folder. */
     static Measured measure(ProcessRuns processes, int runs, Path folder) {
+        String before = CohortSection.loadAverage();
         try {
             Path tick1 = BundledScenes.extract(BundledScenes.TICK1, folder);
             Path hidden = BundledScenes.extract(BundledScenes.HIDDEN, folder);
@@ -93,9 +94,10 @@ final class OneStudentSection {
                 ProcessRuns.Measured m = measured.get(kind.ordinal());
                 rows.add(new Row(kind, m.timing().median() / 1e3, m.peakMebibytes()));
             }
-            return new Measured(runs, rows, null);
+            return new Measured(runs, rows, null, before + " before the runs and " + CohortSection.loadAverage()
+                    + " after them");
         } catch (IOException e) {
-            return new Measured(runs, List.of(), e.getMessage());
+            return new Measured(runs, List.of(), e.getMessage(), null);
         }
     }
 
@@ -129,7 +131,8 @@ final class OneStudentSection {
         }
         md.append(String.format(Locale.ROOT, " %s of each, taken in turn, medians of the wall time; the memory is "
                 + "the largest peak, over the runs, of the summed resident memory of the run's processes (each "
-                + "process tree, read every 20 ms), as VPL counts it against its limit.", Counted.of(m.runs(), "run")));
+                + "process tree, read every 20 ms), as VPL counts it against its limit. The machine's load average (1 "
+                + "minute) was %s: other work on the machine slows every run.", Counted.of(m.runs(), "run"), m.load()));
         if (quick) {
             md.append(" A quick run takes each once: its ratios show that each is measured, not whether a goal is "
                     + "met.");

@@ -19,12 +19,14 @@ class OneStudentSectionTest {
             new OneStudentSection.Row(OneStudentSection.Kind.GRADE, 3.0, 180),
             new OneStudentSection.Row(OneStudentSection.Kind.GRADE_WRONG, 6.0, 230),
             new OneStudentSection.Row(OneStudentSection.Kind.DIFF, 1.0, 150),
-            new OneStudentSection.Row(OneStudentSection.Kind.VPL, 3.2, 170)), null);
+            new OneStudentSection.Row(OneStudentSection.Kind.VPL, 3.2, 170)), null,
+            "0.52 before the runs and 0.61 after them");
 
     @Test
     void eachRunHasItsMedianItsRatioToTheBarePipelineItsGoalAndItsMemory() {
         String section = OneStudentSection.markdown(MEASURED, false);
         assertThat(section).contains("## One student", "5 runs of each, taken in turn",
+                "load average (1 minute) was 0.52 before the runs and 0.61 after them",
                 "| run | median s | ratio to the bare pipeline | goal | met | peak MiB |")
                 .contains("| the bare pipeline: javac of the starter kit with the correct solution, then "
                         + "`java gfx.tick1.Tick1` on tick1.xml and on the hidden scene, no sandbox | 4.00 | 1.00 |  |  "
@@ -54,7 +56,7 @@ class OneStudentSectionTest {
     @Test
     void aSectionThatCouldNotBeMeasuredSaysWhyAndHasNoTable() {
         String section = OneStudentSection.markdown(new OneStudentSection.Measured(5, List.of(),
-                "tick1 grade ... exited with 2: bubblewrap is not installed"), false);
+                "tick1 grade ... exited with 2: bubblewrap is not installed", null), false);
         assertThat(section).contains("## One student", "Not measured: tick1 grade ... exited with 2: bubblewrap is "
                 + "not installed.").doesNotContain("| run |");
     }
