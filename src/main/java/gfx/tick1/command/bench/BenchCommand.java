@@ -2,7 +2,6 @@ package gfx.tick1.command.bench;
 
 import gfx.tick1.command.shared.cli.ExitStatus;
 import gfx.tick1.engine.fast.FastRenderer;
-import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.image.PngOutput;
 import gfx.tick1.engine.io.Counted;
@@ -24,11 +23,13 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -60,10 +61,15 @@ public final class BenchCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Option(names = "--quick", description = "Small frames, each whole run once and a cohort of 2: for CI, a "
-            + "check that everything runs and each goal is measured (coarsely), not a measure of speed. About half a "
-            + "minute on two cores, or less; more when other work keeps them busy. The full run is for people.")
+    @Option(names = "--quick", description = "Small frames, each whole run and each of one student's runs once, "
+            + "and a cohort of 2: for CI, a check that everything runs and each goal is measured (coarsely), not a "
+            + "measure of speed. The full run is for people.")
     private boolean quick;
+
+    @Option(names = "--one-student", description = "Only the one-student section: one student's grade, diff and "
+            + "VPL evaluation beside the course's bare compile-and-run, in fresh processes (5 runs each, or once with "
+            + "--quick). Writes report.md alone.")
+    private boolean oneStudent;
 
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "tick1-bench",
             description = "The folder to write the report into, created if missing (default: ${DEFAULT-VALUE}, in the "
@@ -84,7 +90,7 @@ public final class BenchCommand implements Callable<Integer> {
         try {
             scenes = Files.createTempDirectory("tick1-bench-scenes");
             Path folder = scenes;
-            cleanUp = OnExit.run("tick1-bench-clean-up", () -> WorkFolder.delete(folder));
+            cleanUp = OnExit.run("tick1-bench-clean-up", () -> deleteTree(folder));
             return run();
         } catch (IOException e) {
             spec.commandLine().getErr().println("tick1 bench: " + IoErrors.describe(e));
@@ -96,11 +102,31 @@ public final class BenchCommand implements Callable<Integer> {
         }
     }
 
+    /** Deletes {@code folder} and what it holds, following no link; what cannot be deleted is left. */
+    private static void deleteTree(Path folder) {
+        try (Stream<Path> files = Files.walk(folder)) {
+            for (Path file : files.sorted(Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(file);
+            }
+        } catch (IOException e) {
+            // Left in the temporary folder, where the system's own cleaning finds it.
+        }
+    }
+
     private int run() throws IOException {
         log = spec.commandLine().getOut();
         Files.createDirectories(out);
         BenchPlan plan = quick ? BenchPlan.QUICK : BenchPlan.FULL;
         int cores = Runtime.getRuntime().availableProcessors();
+        if (oneStudent) {
+            log.printf("tick1 bench --one-student%s: %s, Java %s%n", quick ? " --quick" : "",
+                    Counted.of(cores, "core"), System.getProperty("java.version"));
+            OneStudentSection.Measured student = oneStudent(plan, new ProcessRuns(plan.warmUpProcesses()));
+            Files.writeString(out.resolve("report.md"), BenchReport.heading(quick, cores)
+                    + OneStudentSection.markdown(student, quick), StandardCharsets.UTF_8);
+            log.printf("Wrote %s%n", out.resolve("report.md"));
+            return EXIT_OK;
+        }
 
         Path tick1File = BundledScenes.extract(BundledScenes.TICK1, scenes);
         Scene tick1 = load(tick1File);
@@ -140,9 +166,14 @@ public final class BenchCommand implements Callable<Integer> {
         ProcessRuns runs = new ProcessRuns(plan.warmUpProcesses());
         Whole whole = wholeRuns(runs, plan, tick1File, tick1);
 
+        OneStudentSection.Measured student = oneStudent(plan, runs);
+
         BenchReport report = new BenchReport(quick, cores, results, png, runs.describe(), whole);
         report.write(out);
-        CohortTiming.Measured cohort = CohortSection.appendTo(out.resolve("report.md"), plan.cohort(), log);
+        Files.writeString(out.resolve("report.md"), OneStudentSection.markdown(student, quick),
+                StandardCharsets.UTF_8, StandardOpenOption.APPEND);
+        CohortTiming.Measured cohort = CohortSection.appendTo(out.resolve("report.md"), runs, plan.cohort(),
+                Files.createDirectory(scenes.resolve("cohort")), log);
         Goals goals = new Goals(quick, plan, whole, cohort);
         Files.writeString(out.resolve("report.md"), goals.markdown(), StandardCharsets.UTF_8,
                 StandardOpenOption.APPEND);
@@ -150,6 +181,16 @@ public final class BenchCommand implements Callable<Integer> {
         log.printf("Wrote %s, %s and %s%n", out.resolve("report.md"), out.resolve("results.csv"),
                 out.resolve("speed-vs-error.png"));
         return EXIT_OK;
+    }
+
+    /** The one-student section, measured in a folder of its own and printed. */
+    private OneStudentSection.Measured oneStudent(BenchPlan plan, ProcessRuns runs) throws IOException {
+        log.println("one student: the bare pipeline, grade, diff and grade --format vpl in turn");
+        log.flush();
+        OneStudentSection.Measured student = OneStudentSection.measure(runs, plan.studentRuns(),
+                Files.createDirectory(scenes.resolve("one-student")));
+        OneStudentSection.print(student, log);
+        return student;
     }
 
     /**

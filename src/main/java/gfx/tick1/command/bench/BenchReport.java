@@ -36,7 +36,12 @@ final class BenchReport {
         BenchChart.write(results, quick, out.resolve("speed-vs-error.png"));
     }
 
-    private String machine() {
+    /** The report's title and the machine it ran on. */
+    static String heading(boolean quick, int cores) {
+        return "# tick1 benchmark" + (quick ? " (quick)" : "") + "\n\nMachine: " + machine(cores) + ".\n";
+    }
+
+    private static String machine(int cores) {
         return String.format(Locale.ROOT, "%s %s (%s), %s, %s %s, %s", System.getProperty("java.vm.name"),
                 System.getProperty("java.version"), System.getProperty("java.vendor"),
                 Counted.of(cores, "core"),
@@ -65,8 +70,7 @@ final class BenchReport {
 
     private String markdown() {
         StringBuilder md = new StringBuilder();
-        md.append("# tick1 benchmark").append(quick ? " (quick)" : "").append("\n\n");
-        md.append("Machine: ").append(machine()).append(".\n\n");
+        md.append(heading(quick, cores)).append("\n");
         md.append("Each variant renders the same scene in one process, in the order listed (the default first, "
                 + "before the JIT has seen the others); times are wall-clock per frame after warm-up "
                 + "(median, and the fastest and slowest run as the spread). Error is measured on a smaller frame "

@@ -6,9 +6,11 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Function;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -120,61 +122,133 @@ final class ProcessRuns {
      * of them alike: what their ratios need.
      */
     List<Timing> interleaved(int runs, List<List<String>> commands) throws IOException {
-        for (List<String> command : commands) {
-            warmUp(command);
+        List<List<Command>> sequences = commands.stream().map(command -> List.of(new Command(command, 0))).toList();
+        return inTurn(runs, sequences, TreeMemory::none).stream().map(Measured::timing).toList();
+    }
+
+    /** A command, the exit status it must end with, and the variables it gets beside this process's. */
+    record Command(List<String> words, int exitStatus, Map<String, String> environment) {
+
+        Command(List<String> words, int exitStatus) {
+            this(words, exitStatus, Map.of());
         }
-        double[][] millis = new double[commands.size()][runs];
-        for (int i = 0; i < runs; i++) {
-            for (int c = 0; c < commands.size(); c++) {
-                long start = System.nanoTime();
-                run(commands.get(c));
-                millis[c][i] = (System.nanoTime() - start) / 1e6;
+    }
+
+    /**
+     * tick1 with {@code args} and a heap of {@code heapMegabytes}, as a script that starts the launcher gives it one:
+     * through TICK1_OPTS, or the option itself where tick1 is started with java -cp.
+     */
+    Command tick1WithHeap(int heapMegabytes, int exitStatus, String... args) {
+        String heap = "-Xmx" + heapMegabytes + "m";
+        if (launcher != null) {
+            return new Command(tick1Command(args), exitStatus, Map.of("TICK1_OPTS", heap));
+        }
+        List<String> command = new ArrayList<>(List.of(java, heap, "-cp", classPath, MainClass.NAME));
+        command.addAll(List.of(args));
+        return new Command(command, exitStatus);
+    }
+
+    /** One kind of run measured: its times, and the largest peak of its processes' summed memory (NaN: not read). */
+    record Measured(Timing timing, double peakMebibytes) {
+    }
+
+    /**
+     * {@code runs} runs of each sequence, taken in turn as {@link #interleaved} takes them; a sequence's run is its
+     * commands one after another, each a fresh process, timed as one. With {@code memory}
+     * ({@code TreeMemory::of}), each command's processes have their resident memory read as they run.
+     */
+    List<Measured> inTurn(int runs, List<List<Command>> sequences, Function<Process, TreeMemory> memory)
+            throws IOException {
+        if (warmUp) {
+            for (List<Command> sequence : sequences) {
+                runAll(sequence, TreeMemory::none);
             }
         }
-        List<Timing> timings = new ArrayList<>();
-        for (double[] samples : millis) {
-            timings.add(Timing.of(samples));
+        double[][] millis = new double[sequences.size()][runs];
+        double[] peaks = new double[sequences.size()];
+        Arrays.fill(peaks, Double.NaN);
+        for (int i = 0; i < runs; i++) {
+            for (int c = 0; c < sequences.size(); c++) {
+                Ran ran = runAll(sequences.get(c), memory);
+                millis[c][i] = ran.millis();
+                peaks[c] = larger(peaks[c], ran.peakMebibytes());
+            }
         }
-        return timings;
+        List<Measured> measured = new ArrayList<>();
+        for (int c = 0; c < sequences.size(); c++) {
+            measured.add(new Measured(Timing.of(millis[c]), peaks[c]));
+        }
+        return measured;
+    }
+
+    /**
+     * One run of tick1 with {@code args}, timed, ending with {@code exitStatus}: what it printed on standard output,
+     * and its time.
+     */
+    Ran once(int exitStatus, String... args) throws IOException {
+        return run(new Command(tick1Command(args), exitStatus), TreeMemory::none);
+    }
+
+    /**
+     * A finished run: its wall-clock time, what it printed on standard output and error, and the peak of its
+     * processes' summed resident memory (NaN where not read).
+     */
+    record Ran(double millis, String out, String err, double peakMebibytes) {
+    }
+
+    private Ran runAll(List<Command> sequence, Function<Process, TreeMemory> memory) throws IOException {
+        double millis = 0, peak = Double.NaN;
+        for (Command command : sequence) {
+            Ran ran = run(command, memory);
+            millis += ran.millis();
+            peak = larger(peak, ran.peakMebibytes());
+        }
+        return new Ran(millis, "", "", peak);
+    }
+
+    /** The larger of two peaks, either of which may be NaN (not read). */
+    private static double larger(double a, double b) {
+        return Double.isNaN(a) ? b : Double.isNaN(b) ? a : Math.max(a, b);
     }
 
     private Timing time(List<String> command, int runs) throws IOException {
-        warmUp(command);
-        double[] millis = new double[runs];
-        for (int i = 0; i < runs; i++) {
-            long start = System.nanoTime();
-            run(command);
-            millis[i] = (System.nanoTime() - start) / 1e6;
-        }
-        return Timing.of(millis);
-    }
-
-    /** One untimed run, where asked for: the file cache, not the program, is what it warms. */
-    private void warmUp(List<String> command) throws IOException {
-        if (warmUp) {
-            run(command);
-        }
+        return interleaved(runs, List.of(command)).get(0);
     }
 
     /** Runs a command to its end and returns what it printed on standard error. */
     private String run(List<String> command) throws IOException {
+        return run(new Command(command, 0), TreeMemory::none).err();
+    }
+
+    /**
+     * Runs a command to its end, timed, with its memory read as {@code memory} says; throws where it does not end with
+     * its exit status, with the first line it printed on standard error.
+     */
+    private Ran run(Command command, Function<Process, TreeMemory> memory) throws IOException {
         started++;
-        Path err = Files.createTempFile("tick1-bench", ".err");
+        Path err = Files.createTempFile("tick1-bench", ".err"), out = Files.createTempFile("tick1-bench", ".out");
         try {
-            Process process = new ProcessBuilder(command).redirectError(err.toFile())
-                    .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            long start = System.nanoTime();
+            ProcessBuilder builder = new ProcessBuilder(command.words()).redirectError(err.toFile())
+                    .redirectOutput(out.toFile());
+            builder.environment().putAll(command.environment());
+            Process process = builder.start();
+            TreeMemory read = memory.apply(process);
+            process.getOutputStream().close();
             int status = process.waitFor();
+            double millis = (System.nanoTime() - start) / 1e6;
             String stderr = Files.readString(err, StandardCharsets.UTF_8);
-            if (status != 0) {
-                throw new IOException(shown(command) + " exited with " + status + ": "
+            if (status != command.exitStatus()) {
+                throw new IOException(shown(command.words()) + " exited with " + status + ": "
                         + stderr.strip().lines().findFirst().orElse("(nothing on standard error)"));
             }
-            return stderr;
+            return new Ran(millis, Files.readString(out, StandardCharsets.UTF_8), stderr, read.peakMebibytes());
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new IOException("interrupted", e);
         } finally {
             Files.deleteIfExists(err);
+            Files.deleteIfExists(out);
         }
     }
 

@@ -71,6 +71,15 @@ class BenchCommandTest {
         assertThat(report).as("the cohort's section").contains("## Grading a cohort").doesNotContain(notMeasured);
     }
 
+    /** One student's runs are graded in the sandbox: where none can be made, the section says why instead. */
+    @Test
+    void theReportHasTheOneStudentSectionWithItsTableOrWhyNot() throws IOException {
+        String report = Files.readString(out.resolve("report.md"));
+        assertThat(report).contains("## One student")
+                .containsAnyOf("| `tick1 grade`, correct solution | ", "\n\nNot measured: ");
+        assertThat(printed).contains("one student");
+    }
+
     /** The default report folder, tick1-bench, is all a run leaves in the folder it runs in. */
     @Test
     void theWorkingFolderGetsTheReportFolderAndNothingElse() throws IOException {

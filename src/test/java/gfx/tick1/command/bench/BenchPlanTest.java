@@ -28,6 +28,8 @@ class BenchPlanTest {
         assertThat(QUICK.runs()).as("in-process timed frames").isLessThan(FULL.runs());
         assertThat(QUICK.crowds()).as("the crowds").hasSizeLessThan(FULL.crowds().size());
         assertThat(QUICK.cohort()).as("the cohort").isLessThan(FULL.cohort());
+        assertThat(QUICK.studentRuns()).as("one student's runs of each kind").isEqualTo(1)
+                .isLessThan(FULL.studentRuns());
     }
 
     /** A fresh JVM costs about as much CPU as the whole in-process part of a quick run spends on one variant. */

@@ -41,11 +41,10 @@ import java.util.concurrent.atomic.AtomicInteger;
 public final class CohortGrade {
 
     /**
-     * What a cohort grade did: every result in the submissions' order, and the time of those graded
-     * now; {@code ungraded}, the submissions that could not be graded, each with why.
+     * What a cohort grade did: every result in the submissions' order, the images, how many results
+     * were stored from earlier runs; {@code ungraded}, the submissions that could not be graded, each with why.
      */
-    public record Done(List<StudentResult> results, List<Path> images, List<SubmissionGrader.Phases> phases, int stored,
-            List<Ungraded> ungraded) {
+    public record Done(List<StudentResult> results, List<Path> images, int stored, List<Ungraded> ungraded) {
     }
 
     final Grading grading;
@@ -133,7 +132,6 @@ public final class CohortGrade {
         /** Submissions with the same key (the same files) are graded once: the others wait for its result. */
         private final Map<Integer, String> sameAsEarlier = new HashMap<>();
         private final Map<String, Integer> firstWithKey = new HashMap<>();
-        private final List<SubmissionGrader.Phases> phases = Collections.synchronizedList(new ArrayList<>());
         private final List<Ungraded> ungraded = Collections.synchronizedList(new ArrayList<>());
         /** The jobs not grading just now: each has its own folder, sandbox user and process. */
         private final BlockingQueue<CohortJob> idle = new LinkedBlockingQueue<>();
@@ -175,7 +173,7 @@ public final class CohortGrade {
                     allImages.add(images[i]);
                 }
             }
-            return new Done(all, allImages, List.copyOf(phases), stored, List.copyOf(ungraded));
+            return new Done(all, allImages, stored, List.copyOf(ungraded));
         }
 
         /** Results known already (problems, stored results), and the submissions left to grade. */
@@ -303,7 +301,6 @@ public final class CohortGrade {
             kept.incrementAndGet();
             results[index] = graded.result();
             images[index] = store.folderOf(key);
-            phases.add(graded.phases());
         }
     }
 

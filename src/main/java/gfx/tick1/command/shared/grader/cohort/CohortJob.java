@@ -22,7 +22,7 @@ final class CohortJob {
     /**
      * From how many submissions to grade a class data sharing archive is made: it takes about as
      * long as grading one, and saves every scene's JVM and every warm compiler's start some of its
-     * processor time (docs/benchmark.md).
+     * processor time (docs/benchmark.md, "What the sandbox costs").
      */
     private static final int ARCHIVE_PAYS_FROM = 8;
 

@@ -19,14 +19,13 @@ import java.time.Duration;
  */
 record CompileStep(Sandbox sandbox, StudentProcess process, Duration timeLimit) {
 
-    /** How compiling went, where the classes are, and when it started and ended. */
-    record Started(StudentProcess.Compiled compiled, Path classes, long compileStart, long renderStart) {
+    /** How compiling went, where the classes are, and when it ended (the time limit's runs start then). */
+    record Started(StudentProcess.Compiled compiled, Path classes, long renderStart) {
     }
 
     Started compile(Submission submission, Sources code, Path work) throws IOException, InterruptedException {
         Path sources = StudentProcess.writeSources(work, code.sphere(), code.renderer());
         sandbox.share(work);
-        long compileStart = System.nanoTime();
         Path compiledFolder = childFolder(sandbox, work, "compiled");
         StudentProcess.Compiled compiled = process.compile(sources, compiledFolder, submission.sphere().path(),
                 submission.renderer().path(), timeLimit);
@@ -34,7 +33,7 @@ record CompileStep(Sandbox sandbox, StudentProcess process, Duration timeLimit) 
         if (compiled.compiled()) {
             sandbox.share(classes);
         }
-        return new Started(compiled, classes, compileStart, System.nanoTime());
+        return new Started(compiled, classes, System.nanoTime());
     }
 
     /** An empty folder in {@code work} for the student's process to write in. */

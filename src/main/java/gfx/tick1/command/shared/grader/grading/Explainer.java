@@ -4,7 +4,6 @@ import gfx.tick1.command.shared.behaviour.BehaviourFindings;
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader.Graded;
-import gfx.tick1.command.shared.grader.grading.SubmissionGrader.Phases;
 import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
@@ -51,17 +50,16 @@ final class Explainer {
     }
 
     /** A submission that fails before any scene is run: one line saying why. */
-    Graded failed(Category category, String reason, Phases phases) {
+    Graded failed(Category category, String reason) {
         out.println("FAILED: " + reason);
-        return new Graded(result(List.of(), false, 0, category, "FAILED: " + reason, List.of()), false, phases,
+        return new Graded(result(List.of(), false, 0, category, "FAILED: " + reason, List.of()), false,
                 BehaviourFindings.of(null).behaviour());
     }
 
     /** Code that did not compile: the compiler's errors, or why the compiler did not finish. */
-    Graded didNotCompile(StudentProcess.Compiled compiled, Phases phases) {
+    Graded didNotCompile(StudentProcess.Compiled compiled) {
         if (compiled.failure() != null) {
-            return failed(Category.Outcome.DOES_NOT_COMPILE, "the code could not be compiled: " + compiled.failure(),
-                    phases);
+            return failed(Category.Outcome.DOES_NOT_COMPILE, "the code could not be compiled: " + compiled.failure());
         }
         String heading = "the code does not compile (" + Counted.of(compiled.errors().size(), "error")
                 + ")";
@@ -74,7 +72,7 @@ final class Explainer {
                 : error.size();
         return new Graded(result(List.of(), false, 0, Category.Outcome.DOES_NOT_COMPILE,
                 "FAILED: " + heading + ": " + String.join("\n", error.subList(0, quoted)),
-                error.subList(quoted, error.size())), false, phases, BehaviourFindings.of(null).behaviour(),
+                error.subList(quoted, error.size())), false, BehaviourFindings.of(null).behaviour(),
                 List.copyOf(compiled.errors()));
     }
 
@@ -87,7 +85,7 @@ final class Explainer {
     }
 
     /** The verdict line, the notes of a pass, and the result with its row's reason. */
-    Graded verdict(List<Judged> judged, BehaviourFindings probes, Phases phases) {
+    Graded verdict(List<Judged> judged, BehaviourFindings probes) {
         List<SceneResult> scenes = new ArrayList<>(judged.stream().map(Judged::result).toList());
         List<Judged> failures = judged.stream().filter(scene -> !(scene.verdict() instanceof SceneVerdict.Passed))
                 .toList();
@@ -97,7 +95,7 @@ final class Explainer {
             out.println(verdict);
             return new Graded(result(scenes, false, judged.size() - failures.size(),
                     failures.get(0).verdict().category(), verdict + reasons(judged, probes), List.of())
-                    .withFindings(found(judged)), judged.stream().anyMatch(Judged::imagesUnwritable), phases,
+                    .withFindings(found(judged)), judged.stream().anyMatch(Judged::imagesUnwritable),
                     probes.behaviour());
         }
         out.println(SubmissionGrader.CONGRATULATIONS);
@@ -113,7 +111,7 @@ final class Explainer {
                 : SubmissionGrader.CONGRATULATIONS + " Note: " + String.join("; ", notes) + ".";
         return new Graded(result(scenes, true, judged.size(), Category.Outcome.PASSED, reason, List.of())
                 .withFindings(new Findings(null, probes.facts(), probes.untested(), List.of(), List.of())), false,
-                phases, probes.behaviour());
+                probes.behaviour());
     }
 
     /** What a failure's scenes found, together: the first catalogue entry, each figure, the rest each once. */

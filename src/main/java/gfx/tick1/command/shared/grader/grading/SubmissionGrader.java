@@ -25,20 +25,16 @@ import java.util.List;
  */
 public final class SubmissionGrader {
 
-    /** Where a grade's time went: JVM starts and javac, the student's code, the comparing and images. */
-    public record Phases(long compileNanos, long renderNanos, long compareNanos) {
-    }
-
     /**
-     * One submission's grade: the result, whether its images could not be written, the time by phase, how its
+     * One submission's grade: the result, whether its images could not be written, how its
      * two methods behaved on the behaviour inputs (not run: {@link Behaviour#ran} false), and the compiler's errors
      * when the code did not compile (else empty).
      */
-    public record Graded(StudentResult result, boolean imagesUnwritable, Phases phases, Behaviour behaviour,
+    public record Graded(StudentResult result, boolean imagesUnwritable, Behaviour behaviour,
             List<String> compileErrors) {
 
-        Graded(StudentResult result, boolean imagesUnwritable, Phases phases, Behaviour behaviour) {
-            this(result, imagesUnwritable, phases, behaviour, List.of());
+        Graded(StudentResult result, boolean imagesUnwritable, Behaviour behaviour) {
+            this(result, imagesUnwritable, behaviour, List.of());
         }
     }
 
@@ -70,33 +66,58 @@ public final class SubmissionGrader {
      */
     public Graded grade(Submission submission, Path work, Path images, PrintWriter out, PrintWriter err)
             throws IOException, InterruptedException {
-        long start = System.nanoTime();
-        Explainer explainer = new Explainer(grading, submission, start, out);
+        return grade(submission, work, images, out, err, HiddenRun.afterJudging());
+    }
+
+    /**
+     * Grades {@code submission} as {@link #grade} does, but starts the hidden scenes' run as soon as the public run
+     * has ended, while the public scenes are judged and a wrong image explained here: the grade then waits for the
+     * longer of the two rather than for both. The code's JVM and this one's explaining then hold their memory at
+     * once, so this is not for a grade that must fit VPL's memory limit.
+     */
+    public Graded gradeWithHiddenRunAhead(Submission submission, Path work, Path images, PrintWriter out,
+            PrintWriter err) throws IOException, InterruptedException {
+        return grade(submission, work, images, out, err, HiddenRun.ahead());
+    }
+
+    private Graded grade(Submission submission, Path work, Path images, PrintWriter out, PrintWriter err,
+            HiddenRun hiddenRun) throws IOException, InterruptedException {
+        boolean finished = false;
+        try {
+            Graded graded = judged(submission, work, new FeedbackImages(images, out, err), out, hiddenRun);
+            finished = true;
+            return graded;
+        } finally {
+            if (!finished) {
+                hiddenRun.abandon();
+            }
+        }
+    }
+
+    private Graded judged(Submission submission, Path work, FeedbackImages images, PrintWriter out,
+            HiddenRun hiddenRun) throws IOException, InterruptedException {
+        Explainer explainer = new Explainer(grading, submission, System.nanoTime(), out);
         SourceCheck.Checked checked = SourceCheck.check(submission);
         if (checked instanceof SourceCheck.Problem problem) {
-            return explainer.failed(problem.category(), problem.reason(), new Phases(0, 0, 0));
+            return explainer.failed(problem.category(), problem.reason());
         }
         CompileStep.Started started = compiler.compile(submission, (SourceCheck.Sources) checked, work);
-        long compileNanos = started.renderStart() - started.compileStart();
         if (!started.compiled().compiled()) {
-            return explainer.didNotCompile(started.compiled(), new Phases(compileNanos, 0, 0));
+            return explainer.didNotCompile(started.compiled());
         }
         out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
                 + " with the starter code.");
         SceneRuns.PublicRun run = runs.runPublic(started, work);
-        long publicCompare = System.nanoTime();
+        hiddenRun.publicEnded(runs, started, work, run.ran().took());
         BehaviourFindings probes = run.probes().join();
-        List<Judged> publicScenes = new SceneJudge(grading, probes, new FeedbackImages(images, out, err), out)
+        List<Judged> publicScenes = new SceneJudge(grading, probes, images, out)
                 .judgeBatch(SceneBatch.PUBLIC, run.ran(), List.of());
-        long compareNanos = System.nanoTime() - publicCompare;
-        SceneRuns.Ran hidden = runs.runHidden(started, work, run.ran().took());
-        long hiddenCompare = System.nanoTime();
+        SceneRuns.Ran hidden = hiddenRun.ran(runs, started, work, run.ran().took());
         List<Judged> judged = new ArrayList<>(publicScenes);
         judged.addAll(new SceneJudge(grading, probes, new FeedbackImages(null, out, out), out)
                 .judgeBatch(SceneBatch.HIDDEN, hidden, publicScenes));
         explainer.lastLinesPrinted(judged, run.printed());
-        return explainer.verdict(judged, probes, new Phases(compileNanos, run.ran().took().plus(hidden.took())
-                .toNanos(), compareNanos + System.nanoTime() - hiddenCompare));
+        return explainer.verdict(judged, probes);
     }
 
     public static String count(int n, String noun) {

@@ -170,7 +170,7 @@ final class CompileServer implements AutoCloseable {
         Answers.Heard answer = heard.await(number, timeLimit);
         if (answer == null) {
             endCompiler();
-            return new Attempt(new Run(false, -1, heard.takeTail(), false, 0, overCap(output)), false);
+            return new Attempt(new Run(false, -1, heard.takeTail(), false, overCap(output)), false);
         }
         if (answer.status() == null) {
             compiler.process().waitFor(10, TimeUnit.SECONDS);
@@ -179,7 +179,7 @@ final class CompileServer implements AutoCloseable {
             // A compiler that could not write its class files (its file system full) ends with an exception.
             LimitReached over = reached != null ? reached : overCap(output);
             return new Attempt(new Run(true, compiler.process().isAlive() ? -1 : compiler.process().exitValue(),
-                    answer.tail(), false, 0, over), true);
+                    answer.tail(), false, over), true);
         }
         LimitReached over = overCap(output);
         if (over != null || answer.status() != 0
@@ -188,7 +188,7 @@ final class CompileServer implements AutoCloseable {
             // no word of it: after any compile that did not succeed, the next one gets a fresh compiler.
             endCompiler();
         }
-        return new Attempt(new Run(over == null, answer.status(), answer.tail(), false, 0, over), false);
+        return new Attempt(new Run(over == null, answer.status(), answer.tail(), false, over), false);
     }
 
     /** The output folder's cap, when the compile left more than it allows in {@code output}; else null. */

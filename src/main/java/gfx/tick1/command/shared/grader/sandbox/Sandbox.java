@@ -286,40 +286,6 @@ public final class Sandbox {
         return builder;
     }
 
-    /**
-     * Makes the control group of one run, held to a run's totals, and removes it: what each run's
-     * group costs beyond the run. Only where {@link Enforcement#totals} holds.
-     */
-    public void makeAndRemoveRunGroup() throws IOException {
-        cgroupFor(new Cgroup.Totals(256L << 20, RunLimits.PROCESSES_LIMIT, true)).close();
-    }
-
-    /**
-     * Mounts an output file system of its own on {@code folder}, an empty folder, counts it once
-     * as a run's end does, and unmounts it: what each run's output disk costs beyond the run. Only
-     * where {@link Enforcement#ownDisks} holds.
-     */
-    public void mountCountAndUnmountOutputDisk(Path folder) throws IOException {
-        try (OutputDisk disk = outputDisk(folder)) {
-            disk.overCap();
-        }
-    }
-
-    /** The bwrap a confined sandbox starts. */
-    public Path bwrap() {
-        return host.bwrap();
-    }
-
-    /** bwrap's arguments that show a run the host's files one by one ({@link SystemFiles}), in a confined sandbox. */
-    public List<String> hostFileArguments() {
-        return host.system().bwrapArguments();
-    }
-
-    /** Reads into memory every file of the host's that a run sees, as each run's start does ({@link #warm}). */
-    public void warmHostFiles() {
-        warm(List.of());
-    }
-
     /** Reads what a run with {@code binds} sees into memory before it starts ({@link Mounts#warm}). */
     void warm(List<Bind> binds) {
         Mounts.warm(host.system(), binds);

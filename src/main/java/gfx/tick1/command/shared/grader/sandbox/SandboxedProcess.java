@@ -102,10 +102,9 @@ final class SandboxedProcess {
 
     /**
      * How a run ended, and the end of what it printed (printable characters only); for a run that
-     * compiles first, whether it was seen to finish compiling and how long that took; and the
-     * total it reached, or null.
+     * compiles first, whether it was seen to finish compiling; and the total it reached, or null.
      */
-    record Run(boolean finished, int exitStatus, String outputTail, boolean compiledSeen, long compileNanos,
+    record Run(boolean finished, int exitStatus, String outputTail, boolean compiledSeen,
             LimitReached limitReached) {
     }
 
@@ -155,7 +154,7 @@ final class SandboxedProcess {
                 // count, or in the moments before it ended, counts as much as what it wrote before.
                 String over = waited.overOutputCap() != null ? waited.overOutputCap() : overCap(request);
                 return new Run(waited.finished() && over == null, process.exitValue(),
-                        ChildOutput.printable(tail.text()), waited.compiledAt() >= 0, waited.compileNanos(),
+                        ChildOutput.printable(tail.text()), waited.compiledAt() >= 0,
                         over != null ? new LimitReached(NoImage.DISK_LIMIT, over) : reached);
             } finally {
                 running = null;
@@ -210,7 +209,7 @@ final class SandboxedProcess {
     }
 
     /** How the wait ended: whether the process did, when "compiled" was seen (or -1), what it wrote too much of. */
-    private record Waited(boolean finished, long compiledAt, long compileNanos, String overOutputCap) {
+    private record Waited(boolean finished, long compiledAt, String overOutputCap) {
     }
 
     /**
@@ -234,19 +233,18 @@ final class SandboxedProcess {
                     deadline = now + time.thenLimit().toNanos();
                 }
             }
-            long compileNanos = (compiledAt >= 0 ? compiledAt : now) - start;
             if (ended) {
-                return new Waited(true, compiledAt, compileNanos, null);
+                return new Waited(true, compiledAt, null);
             }
             if (now - counted >= TimeUnit.MILLISECONDS.toNanos(COUNT_EVERY_MILLIS)) {
                 counted = now;
                 String over = overCap(request);
                 if (over != null) {
-                    return new Waited(false, compiledAt, compileNanos, over);
+                    return new Waited(false, compiledAt, over);
                 }
             }
             if (now - deadline >= 0) {
-                return new Waited(false, compiledAt, compileNanos, null);
+                return new Waited(false, compiledAt, null);
             }
         }
     }

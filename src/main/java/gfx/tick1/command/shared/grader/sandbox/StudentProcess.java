@@ -76,7 +76,7 @@ public final class StudentProcess implements AutoCloseable {
     }
 
     /** What a run that compiles and then renders gave: the compiling, and if it compiled, the images. */
-    public record CompiledAndRendered(Compiled compiled, Result rendered, long compileNanos) {
+    public record CompiledAndRendered(Compiled compiled, Result rendered) {
     }
 
     /**
@@ -204,10 +204,10 @@ public final class StudentProcess implements AutoCloseable {
                 Compiled compiled = HarnessOutput.compiled(run, output, timeLimit, jvm.compilerHeap());
                 return new CompiledAndRendered(compiled.compiled()
                         ? new Compiled(List.of(), "the compiler stopped without logging that it had finished")
-                        : compiled, null, run.compileNanos());
+                        : compiled, null);
             }
             return new CompiledAndRendered(new Compiled(List.of(), null),
-                    HarnessOutput.rendered(run, output, batch, timeLimit), run.compileNanos());
+                    HarnessOutput.rendered(run, output, batch, timeLimit));
         }
     }
 

@@ -46,8 +46,7 @@ class SceneVerdictTest {
         Judged wrong = new Judged(scene("a line that does not give figures"),
                 new SceneVerdict.WrongPixels(new Category.Mistake("illuminate: N.L not clamped"), null), false, false);
 
-        StudentResult result = explainer(work).verdict(List.of(threw, wrong), BehaviourFindings.of(null),
-                new SubmissionGrader.Phases(0, 0, 0)).result();
+        StudentResult result = explainer(work).verdict(List.of(threw, wrong), BehaviourFindings.of(null)).result();
 
         assertThat(result.diagnosis()).as("the category of the first failing scene")
                 .isEqualTo(Category.Outcome.EXCEPTION);
@@ -58,8 +57,7 @@ class SceneVerdictTest {
         Judged wrong = new Judged(scene("an explanation that does not start with the figures"),
                 new SceneVerdict.WrongPixels(Category.Outcome.UNRECOGNISED, null), false, false);
 
-        StudentResult result = explainer(work).verdict(List.of(wrong), BehaviourFindings.of(null),
-                new SubmissionGrader.Phases(0, 0, 0)).result();
+        StudentResult result = explainer(work).verdict(List.of(wrong), BehaviourFindings.of(null)).result();
 
         assertThat(result.reason()).as("the row's reason of a wrong image tick1 does not recognise")
                 .isEqualTo("FAILED: 1 of 1 scene wrong. " + Explainer.UNSURE_WITHOUT_PROBES)
