@@ -24,6 +24,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 /** {@code tick1 diff} through the real entry point. */
 @SandboxProperties.Read
+@org.junit.jupiter.api.Order(2)   // one of the longest classes: it starts early (junit-platform.properties)
 class DiffCommandTest {
 
     private static final String ILLUMINATE = "illuminate(Scene, Sphere, Vector3, Vector3)";

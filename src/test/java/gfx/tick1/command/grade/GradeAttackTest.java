@@ -43,6 +43,7 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInfo;
 import org.junit.jupiter.api.io.TempDir;
@@ -65,6 +66,7 @@ import org.junit.jupiter.params.provider.CsvSource;
  */
 @SandboxProperties.Read
 @Execution(ExecutionMode.CONCURRENT)
+@Order(1)   // the longest class: it starts first (junit-platform.properties)
 class GradeAttackTest {
 
     /** The secret file and the victim as the attacks' sources name them. */
