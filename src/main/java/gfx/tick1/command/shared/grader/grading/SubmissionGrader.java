@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.behaviour.Behaviour;
 import gfx.tick1.command.shared.behaviour.BehaviourFindings;
+import gfx.tick1.command.shared.behaviour.PixelCounterexample;
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
 import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.StudentResult;
@@ -62,6 +63,7 @@ public final class SubmissionGrader {
             + "not be compiled again for the hidden scenes";
 
     private final Grading grading;
+    private final Sandbox sandbox;
     private final CompileStep compiler;
     private final SceneRuns runs;
 
@@ -71,6 +73,7 @@ public final class SubmissionGrader {
      */
     public SubmissionGrader(Grading grading, Sandbox sandbox, StudentProcess process, Path scenes) {
         this.grading = grading;
+        this.sandbox = sandbox;
         this.compiler = new CompileStep(sandbox, process, grading.limits().timeLimit());
         this.runs = new SceneRuns(grading, sandbox, process, scenes);
     }
@@ -113,7 +116,9 @@ public final class SubmissionGrader {
         SceneRuns.PublicRun run = runs.runPublic(started, work);
         long compareStart = System.nanoTime();
         BehaviourFindings probes = run.probes().join();
-        List<Judged> judged = new SceneJudge(grading, probes, new FeedbackImages(images, out, err), out)
+        List<Judged> judged = new SceneJudge(grading, probes,
+                new PixelCounterexample.Code(sources.sphere(), sources.renderer(), sandbox),
+                new FeedbackImages(images, out, err), out)
                 .judgeBatch(SceneBatch.PUBLIC, run.ran(), List.of());
         long now = System.nanoTime();
         return new Halfway(new Halfway.Compiled(submission, sources, started),
@@ -147,7 +152,7 @@ public final class SubmissionGrader {
         SceneRuns.Ran hidden = runs.runHidden(started, work, scenes.took());
         long compareStart = System.nanoTime();
         List<Judged> judged = new ArrayList<>(scenes.judged());
-        judged.addAll(new SceneJudge(grading, scenes.probes(), new FeedbackImages(null, out, out), out)
+        judged.addAll(new SceneJudge(grading, scenes.probes(), null, new FeedbackImages(null, out, out), out)
                 .judgeBatch(SceneBatch.HIDDEN, hidden, scenes.judged()));
         explainer.lastLinesPrinted(judged, scenes.printed());
         return explainer.verdict(judged, scenes.probes(), phases.plus(compileNanos, hidden.took().toNanos(),
