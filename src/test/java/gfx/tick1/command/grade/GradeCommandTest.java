@@ -7,10 +7,11 @@ import static gfx.tick1.command.grade.Mistakes.ROOTS_ACCEPTED_AT_ZERO;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
-import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
+import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -18,9 +19,8 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
-import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
 import org.junit.jupiter.api.extension.ExtendWith;
+import org.junit.jupiter.api.io.TempDir;
 
 /**
  * {@code tick1 grade} of one student through the real entry point, on student-style solutions: the
@@ -194,6 +194,34 @@ class GradeCommandTest {
                                 + Variant.FAR_ROOT.title() + "\" on all "),
                         line -> assertThat(line).startsWith("  behaviour: your illuminate gives the answers of \""
                                 + Variant.UNCLAMPED_N_DOT_L.title() + "\" on all "));
+    }
+
+    /**
+     * A ray that passes within a hair of a sphere's outline is taken for a miss: no fixed or random
+     * input grazes a sphere that closely, so the differing pixels' own rays are what show it.
+     */
+    @Test
+    void aWrongImageWhoseMethodsPassEveryInputGetsTheCounterexampleOfADifferingPixel() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editSphere("if (discriminant < 0) {",
+                "if (discriminant < 0.05) {"));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).as(run.transcript()).doesNotContain("behave as ours")
+                .containsPattern("  behaviour: your intersectionWith differs from ours at pixel \\(\\d+, \\d+\\) of "
+                        + "tick1.xml, for the ray from O = \\(0, 0, 0\\) along D = .*, yours returns no hit; ours "
+                        + "returns a hit at s = ");
+    }
+
+    /**
+     * max(0, (R.V)^n) draws tick1.xml exactly as (R.V)^n does (n = 10 there), but where n is odd its
+     * answers are not that mistake's: the image's match is never given as the cause.
+     */
+    @Test
+    void anImageMatchingAMistakeTheAnswersRuleOutIsNotGivenAsItsCause() throws IOException {
+        CliRun run = grade(StudentSolution.correct().editRenderer("Math.pow(Math.max(0, RdotV), n)",
+                "Math.max(0, Math.pow(RdotV, n))"));
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(run.out()).as(run.transcript()).contains("  behaviour: your illuminate differs from ours on ")
+                .doesNotContain("likely cause", "is exactly the image of", "gives the answers of");
     }
 
     @Test

@@ -53,16 +53,28 @@ final class Answers {
      * thousand lines, so no backtracking pattern is run on them.
      */
     static Answers parse(String log) {
-        Answers parsed = new Answers();
-        if (log == null) {
-            return parsed;
-        }
         Set<String> names = new HashSet<>();
         BehaviourInputs.INTERSECTIONS.forEach(call -> names.add(call.name()));
         BehaviourInputs.ILLUMINATIONS.forEach(call -> names.add(call.name()));
         BehaviourInputs.RANDOM_INTERSECTIONS.forEach(call -> names.add(call.name()));
         BehaviourInputs.RANDOM_ILLUMINATIONS.forEach(call -> names.add(call.name()));
-        log.lines().limit(MAX_LINES).forEach(line -> {
+        return parse(log, names, MAX_LINES);
+    }
+
+    /** The answers in {@code log} to the inputs the grader chose, {@code chosen}, alone. */
+    static Answers parse(String log, BehaviourInputs.Chosen chosen) {
+        Set<String> names = new HashSet<>();
+        chosen.intersections().forEach(call -> names.add(call.name()));
+        chosen.illuminations().forEach(call -> names.add(call.name()));
+        return parse(log, names, names.size() + 10);
+    }
+
+    private static Answers parse(String log, Set<String> names, int maxLines) {
+        Answers parsed = new Answers();
+        if (log == null) {
+            return parsed;
+        }
+        log.lines().limit(maxLines).forEach(line -> {
             String[] words = line.split(" ", 12);
             if (words.length == 2 && words[0].equals("phong") && parsed.phongSet == null
                     && (words[1].equals("set") || words[1].equals("fixed"))) {

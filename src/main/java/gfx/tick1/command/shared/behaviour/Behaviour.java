@@ -7,6 +7,15 @@ package gfx.tick1.command.shared.behaviour;
  */
 public record Behaviour(boolean ran, MethodBehaviour intersectionWith, MethodBehaviour illuminate) {
 
+    /**
+     * Whether the answers leave {@code mistake} possible: its model gives every tested answer of
+     * the method it is a slip of. Any entry is possible when the methods did not run, and an entry
+     * of neither method (of render, say) always is.
+     */
+    public boolean allows(Variant mistake) {
+        return !ran || !intersectionWith.ruledOut().contains(mistake) && !illuminate.ruledOut().contains(mistake);
+    }
+
     /** Whether both methods behave as ours on every tested input. */
     public boolean behavesAsOurs() {
         return ran && intersectionWith.behavesAsOurs() && illuminate.behavesAsOurs();

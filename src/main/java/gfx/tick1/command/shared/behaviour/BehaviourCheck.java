@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.behaviour;
 
+import gfx.tick1.command.shared.grader.harness.BehaviourInputs;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
@@ -61,12 +62,33 @@ public final class BehaviourCheck {
                     + "the sandbox, and " + e.getMessage() + (e.remedy() == null ? "" : ": " + e.remedy())
                     + "; if the code is yours, --no-sandbox runs them without one");
         }
+        Called called = call(sandbox, sphere, renderer, null);
+        if (called.log() == null) {
+            return Lines.none(called.whyNone());
+        }
+        BehaviourFindings findings = BehaviourFindings.of(called.log());
+        if (!findings.ran()) {
+            return Lines.none("behaviour could not be checked: your methods gave no answer");
+        }
+        return hints(findings, asked);
+    }
+
+    /** The harness's log of the methods' answers, or (log null) why there is none, in words. */
+    record Called(String log, String whyNone) {
+    }
+
+    /**
+     * Compiles {@code sphere} and {@code renderer} with the starter kit in {@code sandbox} and calls
+     * their methods on the fixed inputs, or, when {@code chosen} is not null, on those alone.
+     */
+    static Called call(Sandbox sandbox, String sphere, String renderer, BehaviourInputs.Chosen chosen)
+            throws InterruptedException {
         Path work = null;
         try {
-            work = Files.createTempDirectory("tick1-diff");
-            return check(sandbox, work, sphere, renderer, asked);
+            work = Files.createTempDirectory("tick1-behaviour");
+            return call(sandbox, work, sphere, renderer, chosen);
         } catch (IOException e) {
-            return Lines.none("behaviour could not be checked: your methods could not be run ("
+            return new Called(null, "behaviour could not be checked: your methods could not be run ("
                     + e.getMessage() + ")");
         } finally {
             if (work != null) {
@@ -75,10 +97,13 @@ public final class BehaviourCheck {
         }
     }
 
-    private static Lines check(Sandbox sandbox, Path work, String sphere, String renderer, List<String> asked)
-            throws IOException, InterruptedException {
+    private static Called call(Sandbox sandbox, Path work, String sphere, String renderer,
+            BehaviourInputs.Chosen chosen) throws IOException, InterruptedException {
         Path harness = Files.createDirectory(work.resolve("harness"));
         StudentProcess.writeHarness(harness);
+        if (chosen != null) {
+            Files.writeString(harness.resolve(BehaviourInputs.CHOSEN_FILE), chosen.text(), StandardCharsets.UTF_8);
+        }
         StudentProcess process = new StudentProcess(sandbox, harness, MEMORY_MEGABYTES);
         Path sources = StudentProcess.writeSources(work, sphere, renderer);
         Path scenes = Files.createDirectory(work.resolve("scenes"));
@@ -89,16 +114,12 @@ public final class BehaviourCheck {
                 new StudentProcess.Batch(scenes, List.of(), 1, 1, SceneBatch.PUBLIC), output, "Sphere.java",
                 "Renderer.java", TIME_LIMIT);
         if (!run.compiled().compiled()) {
-            return Lines.none("behaviour could not be checked: it comes from running your "
+            return new Called(null, "behaviour could not be checked: it comes from running your "
                     + "methods, and the files do not compile with the starter code"
                     + (run.compiled().failure() == null ? ""
                     : " (" + run.compiled().failure() + ")"));
         }
-        BehaviourFindings findings = BehaviourFindings.of(run.rendered().probes());
-        if (!findings.ran()) {
-            return Lines.none("behaviour could not be checked: your methods gave no answer");
-        }
-        return hints(findings, asked);
+        return new Called(run.rendered().probes(), null);
     }
 
     /** The lines of the methods of the files named in {@code asked}. */

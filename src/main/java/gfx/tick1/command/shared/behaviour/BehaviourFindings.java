@@ -149,7 +149,7 @@ public final class BehaviourFindings {
         return String.join(" ", facts().stream().map(fact -> capitalised(fact) + ".").toList());
     }
 
-    static String capitalised(String text) {
+    public static String capitalised(String text) {
         return text.isEmpty() ? text : Character.toUpperCase(text.charAt(0)) + text.substring(1);
     }
 }

@@ -71,7 +71,7 @@ final class BehaviourJudge {
 
     static Behaviour judge(Answers answers) {
         if (!answers.any()) {
-            MethodBehaviour none = new MethodBehaviour("", 0, MethodBehaviour.Difference.NONE, List.of());
+            MethodBehaviour none = new MethodBehaviour("", 0, MethodBehaviour.Difference.NONE, List.of(), List.of());
             return new Behaviour(false, none, none);
         }
         List<RayCase> rays = new ArrayList<>();
@@ -89,7 +89,7 @@ final class BehaviourJudge {
         MethodBehaviour intersection = judge("intersectionWith", rays, Variant.Method.INTERSECTION_WITH,
                 AnswerFacts.ofHits(rays));
         intersection = new MethodBehaviour(intersection.method(), intersection.inputs(), intersection.difference(),
-                untested(answers, rays, intersection.difference().mistake()));
+                untested(answers, rays, intersection.difference().mistake()), intersection.ruledOut());
         MethodBehaviour illumination = judge("illuminate", shadings, Variant.Method.ILLUMINATE,
                 AnswerFacts.ofColours(shadings));
         return new Behaviour(true, intersection, illumination);
@@ -99,8 +99,10 @@ final class BehaviourJudge {
             List<String> properties) {
         List<Integer> differing = IntStream.range(0, cases.size()).filter(i -> !cases.get(i).isOurs()).boxed()
                 .toList();
+        List<Variant> ruledOut = mistakes(which).stream()
+                .filter(v -> !everyAnswer(cases, c -> c.answerIs(EnumSet.of(v)))).toList();
         if (differing.isEmpty()) {
-            return new MethodBehaviour(method, cases.size(), MethodBehaviour.Difference.NONE, List.of());
+            return new MethodBehaviour(method, cases.size(), MethodBehaviour.Difference.NONE, List.of(), ruledOut);
         }
         // The differing inputs first: a model that is not the student's fails on one of them at once.
         List<Case> order = new ArrayList<>();
@@ -109,13 +111,17 @@ final class BehaviourJudge {
         Case simplest = differing.stream().map(cases::get).min(Comparator.comparingDouble(Case::roughness))
                 .orElseThrow();
         return new MethodBehaviour(method, cases.size(), new MethodBehaviour.Difference(differing,
-                reproducing(order, which), simplest.counterexample(), properties), List.of());
+                reproducing(order, which), simplest.counterexample(), properties), List.of(), ruledOut);
+    }
+
+    /** The catalogue's mistakes of the method {@code which}: the entries with a model of it, but ours. */
+    private static List<Variant> mistakes(Variant.Method which) {
+        return Stream.of(Variant.values()).filter(v -> v.method() == which && !v.isCorrect()).toList();
     }
 
     /** The catalogue's entries whose model gives every answer: one, or two together, or none. */
     static List<Variant> reproducing(List<? extends Case> cases, Variant.Method which) {
-        List<Variant> models = Stream.of(Variant.values()).filter(v -> v.method() == which && !v.isCorrect())
-                .toList();
+        List<Variant> models = mistakes(which);
         for (Variant v : models) {
             if (everyAnswer(cases, c -> c.answerIs(EnumSet.of(v)))) {
                 return List.of(v);

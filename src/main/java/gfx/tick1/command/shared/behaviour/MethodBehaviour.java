@@ -12,8 +12,11 @@ import java.util.List;
  * @param difference where and how its answers differ from ours ({@link Difference#NONE} when they do not)
  * @param untested   notes on what the course's scenes cannot show, each beginning with
  *                   {@link BehaviourJudge#UNTESTED}
+ * @param ruledOut   the catalogue's mistakes of this method whose models answer otherwise than it on a
+ *                   tested input: none of them is what it does
  */
-public record MethodBehaviour(String method, int inputs, Difference difference, List<String> untested) {
+public record MethodBehaviour(String method, int inputs, Difference difference, List<String> untested,
+        List<Variant> ruledOut) {
 
     /**
      * Where and how a method's answers differ from ours.

@@ -6,6 +6,7 @@ import gfx.tick1.engine.io.Counted;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * Every catalogue entry's distance from an image, closest first, and what can be said for
@@ -168,6 +169,15 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
      * {@code reread}: a grade leaves it out where the tested findings, not the image, say what to reread.
      */
     public List<String> report(boolean reread) {
+        return report(reread, Set.of());
+    }
+
+    /**
+     * The diagnosis for a person, as {@link #report(boolean)} gives it, with no entry of
+     * {@code ruledOut} given as a cause or a candidate: the code that drew the image answers
+     * otherwise than their models.
+     */
+    public List<String> report(boolean reread, Set<Variant> ruledOut) {
         List<String> lines = new ArrayList<>();
         Verdict verdict = verdict();
         if (verdict != Verdict.UNSURE) {
@@ -183,8 +193,8 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         switch (verdict) {
             case CORRECT -> correct(lines, explaining.get(0));
             case LEVEL_OFF_CORRECT -> levelOff(lines, levelOffCorrect(), reread);
-            case EXPLAINED -> explained(lines, explaining, reread);
-            case UNSURE -> unsure(lines);
+            case EXPLAINED -> explained(lines, explaining, reread, ruledOut);
+            case UNSURE -> unsure(lines, ruledOut);
             default -> throw new IllegalStateException();
         }
         return lines;
@@ -206,7 +216,12 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
     }
 
     private String line(int index, Candidate candidate) {
-        return String.format("  %s %-45s %s", rank(index), title(candidate.variant()), shares(candidate));
+        return line(candidates, index, candidate);
+    }
+
+    /** The line of {@code candidate}, ranked {@code index} among {@code ranked}. */
+    private String line(List<Candidate> ranked, int index, Candidate candidate) {
+        return String.format("  %s %-45s %s", rank(ranked, index), title(candidate.variant()), shares(candidate));
     }
 
     private String onWhichPixels() {
@@ -237,7 +252,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         }
     }
 
-    private void explained(List<String> lines, List<Candidate> explaining, boolean reread) {
+    private void explained(List<String> lines, List<Candidate> explaining, boolean reread, Set<Variant> ruledOut) {
         if (explaining.size() == 1) {
             Candidate only = explaining.get(0);
             int off = only.difference().differingPixels();
@@ -245,6 +260,11 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
                     ? ": every pixel matches its render" + ofTheScene() + " exactly."
                     : ": every pixel within 1 level of its render" + ofTheScene() + " (" + Counted.of(off, "pixel")
                             + " 1 level off, as the same formulas in float or in another order give)."));
+            if (ruledOut.contains(only.variant())) {
+                lines.add("not its cause here: your methods' answers are not those of its model, so another slip "
+                        + "draws the same image on this scene.");
+                return;
+            }
             lines.add("likely cause: " + only.variant().explanation() + ".");
             if (reread) {
                 lines.add("reread: " + toReread().orElseThrow());
@@ -253,39 +273,45 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         }
         lines.add("verdict: a tie: " + titles(explaining) + " each match every pixel exactly; this "
                 + "scene cannot tell them apart.");
-        for (Candidate candidate : explaining) {
+        for (Candidate candidate : explaining.stream().filter(c -> !ruledOut.contains(c.variant())).toList()) {
             lines.add("if it is " + title(candidate.variant()) + ": " + candidate.variant().explanation()
                     + "; reread handout " + candidate.variant().reread() + ".");
         }
     }
 
-    /** No entry explains the image: say so, and show the closest few as candidates, never as the answer. */
-    private void unsure(List<String> lines) {
+    /**
+     * No entry explains the image: say so, and show the closest few as candidates, never as the
+     * answer; never the correct image, which the image is not, nor an entry of {@code ruledOut}.
+     */
+    private void unsure(List<String> lines, Set<Variant> ruledOut) {
         Candidate best = closest();
+        List<Candidate> pool = candidates.stream().filter(c -> !c.variant().isCorrect()
+                && !ruledOut.contains(c.variant())).toList();
         lines.add("verdict: unsure: no entry of the catalogue explains this image exactly; it is not the correct "
                 + "image, and it may show a mistake the catalogue does not know, or two at once.");
         if (isWeak()) {
             lines.add("  (a weak match: the image may show another scene or a mistake not in the catalogue)");
         }
-        List<Candidate> level = tiedWith(best, candidates);
-        List<Candidate> shown = (level.size() > 1 ? level : candidates).subList(0,
-                Math.min(MOST_CANDIDATES, level.size() > 1 ? level.size() : candidates.size()));
-        lines.add(level.size() > 1
+        if (best.variant().isCorrect()) {
+            int off = best.difference().differingPixels();
+            lines.add("the nearest render is the correct one, but " + Counted.of(off, "pixel") + (off == 1
+                    ? " differs" : " differ") + " from it, by up to " + Counted.of(best.difference().maxDifference(),
+                    "level") + ".");
+        }
+        List<Candidate> level = pool.isEmpty() ? pool : tiedWith(pool.get(0), pool);
+        List<Candidate> shown = (level.size() > 1 ? level : pool).subList(0,
+                Math.min(MOST_CANDIDATES, level.size() > 1 ? level.size() : pool.size()));
+        lines.add(pool.isEmpty() ? "candidates: none; your methods' answers rule out every entry that draws a sphere"
+                : level.size() > 1
                 ? "candidates, in a near tie (within " + percent(NEAR_TIE) + " of the sphere pixels):"
                 : "candidates, closest first:");
         for (int i = 0; i < shown.size(); i++) {
-            lines.add(line(i, shown.get(i)));
+            lines.add(line(pool, i, shown.get(i)));
         }
         if (level.size() > shown.size()) {
             lines.add("  (and " + (level.size() - shown.size()) + " more level with them)");
         }
         lines.add(onWhichPixels());
-        if (best.variant().isCorrect()) {
-            int off = best.difference().differingPixels();
-            lines.add("the nearest is the correct image, but " + Counted.of(off, "pixel") + (off == 1 ? " differs"
-                    : " differ") + " from it, by up to " + Counted.of(best.difference().maxDifference(), "level")
-                    + ".");
-        }
         if (strayPixels > 0) {
             lines.add(Counted.of(strayPixels, "pixel") + " where no entry draws a sphere "
                     + (strayPixels == 1 ? "is" : "are") + " not the background.");
@@ -299,7 +325,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
     }
 
     /** "1.", or "1=" for the members of a near tie, ranked by the first of them. */
-    private String rank(int index) {
+    private static String rank(List<Candidate> candidates, int index) {
         int first = index;
         while (first > 0 && nearTie(candidates.get(first - 1), candidates.get(index))) {
             first--;

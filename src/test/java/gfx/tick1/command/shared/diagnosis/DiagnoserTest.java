@@ -13,6 +13,7 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Set;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -39,6 +40,39 @@ class DiagnoserTest {
     private static Diagnosis diagnoseFigure(String file, int border) throws IOException {
         return new Diagnoser(border, 1).diagnose(PngInput.read(requireFigure(file)),
                 BundledScenes.load(BundledScenes.TICK1));
+    }
+
+    /**
+     * An image that is exactly a mistake's render, drawn by code whose answers are not that
+     * mistake's (max(0, (R.V)^n) draws the image of (R.V)^n where every n is even): the image says
+     * which render it is, never that the mistake is its cause, nor what to reread for it.
+     */
+    @Test
+    void anExactMatchWhoseModelTheAnswersRuleOutIsNeverGivenAsTheCause() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        Diagnosis diagnosis = new Diagnoser().diagnose(new VariantRenderer(160, 120).render(scene,
+                Variant.UNCLAMPED_R_DOT_V), scene);
+        String report = String.join("\n", diagnosis.report(true, Set.of(Variant.UNCLAMPED_R_DOT_V)));
+        assertThat(diagnosis.verdict()).as(report).isEqualTo(Diagnosis.Verdict.EXPLAINED);
+        assertThat(report).as("the report").contains("every pixel matches its render")
+                .doesNotContain("likely cause", "reread");
+    }
+
+    /** One pixel off the correct render: the correct image is no candidate, and a ruled-out entry is none either. */
+    @Test
+    void anUnsureImageNamesNeitherTheCorrectImageNorARuledOutEntryAsACandidate() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        BufferedImage image = new VariantRenderer(160, 120).render(scene, Variant.CORRECT);
+        image.setRGB(80, 60, 0xFFFFFF);
+        Diagnosis diagnosis = new Diagnoser().diagnose(image, scene);
+        Variant nearestMistake = diagnosis.candidates().stream().map(Diagnosis.Candidate::variant)
+                .filter(v -> !v.isCorrect()).findFirst().orElseThrow();
+        String report = String.join("\n", diagnosis.report(true, Set.of(nearestMistake)));
+        assertThat(diagnosis.verdict()).as(report).isEqualTo(Diagnosis.Verdict.UNSURE);
+        assertThat(report).as("the report").contains("1 pixel differs from it")
+                .doesNotContain(". the correct image", "= the correct image", ". " + nearestMistake.title(),
+                        "= " + nearestMistake.title(),
+                        "if it is " + nearestMistake.title());
     }
 
     @ParameterizedTest(name = "{0} is {1}")

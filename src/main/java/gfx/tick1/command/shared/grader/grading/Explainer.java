@@ -142,12 +142,13 @@ final class Explainer {
         StringBuilder text = new StringBuilder();
         int hidden = 0;
         boolean wrongImage = false;
-        String exactly = null;
+        String exactly = null, pixel = null;
         for (Judged scene : judged) {
             String name = scene.result().hidden() ? "hidden scene " + ++hidden : scene.result().name();
             if (scene.verdict() instanceof SceneVerdict.WrongPixels wrong) {
                 wrongImage = true;
                 exactly = exactly == null ? wrong.exactly() : exactly;
+                pixel = pixel == null ? wrong.pixel() : pixel;
             } else if (!(scene.verdict() instanceof SceneVerdict.Passed)) {
                 text.append(' ').append(name).append(": ").append(scene.result().explanation().get(0)).append('.');
             }
@@ -157,6 +158,8 @@ final class Explainer {
         }
         if (probes.anyFailed()) {
             text.append(' ').append(probes.sentence());
+        } else if (wrongImage && exactly == null && pixel != null) {
+            text.append(' ').append(BehaviourFindings.capitalised(pixel)).append('.');
         } else if (wrongImage && exactly == null) {
             text.append(' ').append(probes.ran() ? UNSURE_WITH_PROBES : UNSURE_WITHOUT_PROBES);
         }

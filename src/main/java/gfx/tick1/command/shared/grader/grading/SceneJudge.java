@@ -1,6 +1,7 @@
 package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.behaviour.BehaviourFindings;
+import gfx.tick1.command.shared.behaviour.PixelCounterexample;
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.diagnosis.Diagnoser;
 import gfx.tick1.command.shared.diagnosis.Diagnosis;
@@ -16,8 +17,11 @@ import gfx.tick1.engine.scene.Intersection;
 import java.awt.image.BufferedImage;
 import java.io.PrintWriter;
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
+import java.util.stream.Stream;
 
 /**
  * The grade's judging step, scene by scene: compares a student image with the references
@@ -60,15 +64,23 @@ final class SceneJudge {
 
     private final Grading grading;
     private final BehaviourFindings probes;
+    /** The student's code, to call on a wrong image's differing pixels; null: not called. */
+    private final PixelCounterexample.Code code;
     private final FeedbackImages images;
     private final PrintWriter out;
     /** Whether a scene judged before the one being judged now has the behaviour comparison's findings. */
     private boolean probesShown;
 
-    /** Judges with the behaviour comparison's {@code probes}, writing images with {@code images}. */
-    SceneJudge(Grading grading, BehaviourFindings probes, FeedbackImages images, PrintWriter out) {
+    /**
+     * Judges with the behaviour comparison's {@code probes}, writing images with {@code images};
+     * the methods of {@code code} are called on a wrong image's differing pixels when no input
+     * showed a difference ({@code code} null: never).
+     */
+    SceneJudge(Grading grading, BehaviourFindings probes, PixelCounterexample.Code code, FeedbackImages images,
+            PrintWriter out) {
         this.grading = grading;
         this.probes = probes;
+        this.code = code;
         this.images = images;
         this.out = out;
     }
@@ -188,7 +200,8 @@ final class SceneJudge {
             lines.add("(compared with the " + (againstHandout ? "handout-arithmetic" : "robust")
                     + " reference, the closer of the two, which differ on this scene)");
         }
-        Explained explained = explain(scene, image, difference, lines);
+        Explained explained = explain(scene, image, againstHandout ? references.handout() : references.robust(),
+                difference, lines);
         print(scene, lines);
         Optional<SceneResult.Images> written = images.write(number, scene, image, difference,
                 againstHandout ? references.handout() : references.robust());
@@ -205,37 +218,65 @@ final class SceneJudge {
      * The figures and the diagnosis of a wrong image, then the failed probes (the first wrong image
      * only) and what to reread, added to {@code lines}; its verdict.
      */
-    private Explained explain(CourseScene scene, BufferedImage image, ImageDifference difference,
-            List<String> lines) {
+    private Explained explain(CourseScene scene, BufferedImage image, BufferedImage reference,
+            ImageDifference difference, List<String> lines) {
         double[] mean = difference.meanPerChannel();
         String figures = String.format("mean difference R %.3f, G %.3f, B %.3f levels; PSNR %.2f dB", mean[0],
                 mean[1], mean[2], difference.psnr());
         lines.add(figures);
         Diagnosis diagnosis = new Diagnoser().diagnose(image, scene.scene());
-        boolean exact = diagnosis.verdict() == Diagnosis.Verdict.EXPLAINED;
+        // An entry whose model answers otherwise than their methods is neither a cause nor a candidate.
+        Set<Variant> ruledOut = EnumSet.noneOf(Variant.class);
+        Stream.of(Variant.values()).filter(v -> !probes.behaviour().allows(v)).forEach(ruledOut::add);
+        List<Variant> matching = diagnosis.verdict() != Diagnosis.Verdict.EXPLAINED ? List.of()
+                : diagnosis.explaining().stream().map(Diagnosis.Candidate::variant).filter(v -> !ruledOut.contains(v))
+                .toList();
+        boolean exact = !matching.isEmpty();
         boolean behaviourSays = probes.anyFailed();
         // What to reread comes from the tested findings; the image's own entry only when it matches exactly.
         boolean imageSaysReread = exact && !behaviourSays;
-        lines.addAll(diagnosis.report(imageSaysReread));
+        lines.addAll(diagnosis.report(imageSaysReread, ruledOut));
         List<String> reread = new ArrayList<>(imageSaysReread ? diagnosis.toReread().stream().toList() : List.of());
         boolean shows = !probesShown && (behaviourSays || !probes.untested().isEmpty());
         Findings found = shows ? found(probes) : Findings.NONE;
+        // No input showed a difference, yet the image differs: its own pixels' rays are asked.
+        PixelCounterexample.Found pixel = !behaviourSays && !exact && probes.ran() && code != null
+                ? pixelCounterexample(scene, reference, image) : null;
+        if (pixel != null && pixel.differs()) {
+            lines.add("behaviour: " + pixel.words());
+        }
         if (shows) {
             lines.addAll(probes.failureLines());
-        } else if (!behaviourSays && !exact) {
-            lines.add(probes.noFindingLine());
-            found = new Findings(null, List.of(probes.noFinding()), List.of(), List.of(), List.of());
+        }
+        if (pixel != null && pixel.differs()) {
+            found = new Findings(null, List.of(pixel.words()), found.notes(), List.of(), found.reread());
+        } else if (!shows && !behaviourSays && !exact) {
+            String fact = probes.noFinding() + (pixel == null ? "" : "; " + pixel.words());
+            lines.add("behaviour: " + fact);
+            found = new Findings(null, List.of(fact), List.of(), List.of(), List.of());
         }
         reread.addAll(found.reread());
-        Variant catalogued = exact ? diagnosis.explaining().get(0).variant() : null;
+        Variant catalogued = exact ? matching.get(0) : null;
         String title = exact ? catalogued.title() : null;
         String exactly = exact ? (scene.hidden() ? "A hidden scene" : scene.name()) + " is exactly the image of \""
                 + title + "\"." : null;
         // The chart counts exact matches first, then tested findings; never what the scenes cannot show.
         Category category = exact ? new Category.Mistake(title) : behaviourSays ? new Category.Mistake(probes.label())
                 : Category.Outcome.UNRECOGNISED;
-        return new Explained(new SceneVerdict.WrongPixels(category, exactly), shows,
+        return new Explained(new SceneVerdict.WrongPixels(category, exactly,
+                pixel != null && pixel.differs() ? pixel.words() : null), shows,
                 new Findings(catalogued, found.failed(), found.notes(), List.of(figures), reread));
+    }
+
+    /** Their methods called on the differing pixels of {@code image}; null when they could not be. */
+    private PixelCounterexample.Found pixelCounterexample(CourseScene scene, BufferedImage reference,
+            BufferedImage image) {
+        try {
+            return PixelCounterexample.find(code, scene.scene(), scene.name(), reference, image);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt(); // the grade is being stopped: the caller's next wait ends it
+            return null;
+        }
     }
 
     /** What {@link BehaviourFindings#failureLines} words: the tested facts, the untested notes, what to reread. */

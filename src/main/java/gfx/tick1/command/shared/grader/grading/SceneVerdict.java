@@ -23,10 +23,16 @@ sealed interface SceneVerdict {
 
     /**
      * An image whose pixels are not the reference's: the category (the catalogue entry it is exactly,
-     * else the first tested finding's, else that tick1 does not recognise it), and the row's sentence
-     * naming the exact catalogue match, or null when none matches.
+     * else the first tested finding's, else that tick1 does not recognise it), the row's sentence
+     * naming the exact catalogue match, or null when none matches, and where the methods differ
+     * from ours on a differing pixel's ray, when that is what showed it (else null).
      */
-    record WrongPixels(Category category, String exactly) implements SceneVerdict {
+    record WrongPixels(Category category, String exactly, String pixel) implements SceneVerdict {
+
+        /** Without a differing pixel's counterexample. */
+        WrongPixels(Category category, String exactly) {
+            this(category, exactly, null);
+        }
     }
 
     /** The reference's image, but their own methods give other colours, or could not be asked. */

@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.grading;
 
 import gfx.tick1.command.shared.behaviour.Behaviour;
 import gfx.tick1.command.shared.behaviour.BehaviourFindings;
+import gfx.tick1.command.shared.behaviour.PixelCounterexample;
 import gfx.tick1.command.shared.grader.grading.SceneJudge.Judged;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
@@ -44,6 +45,7 @@ public final class SubmissionGrader {
     public static final String NOT_FROM_THE_CODE = "the image does not come from your Sphere and Renderer";
 
     private final Grading grading;
+    private final Sandbox sandbox;
     private final CompileStep compiler;
     private final SceneRuns runs;
 
@@ -53,6 +55,7 @@ public final class SubmissionGrader {
      */
     public SubmissionGrader(Grading grading, Sandbox sandbox, StudentProcess process, Path scenes) {
         this.grading = grading;
+        this.sandbox = sandbox;
         this.compiler = new CompileStep(sandbox, process, grading.limits().timeLimit());
         this.runs = new SceneRuns(grading, sandbox, process, scenes);
     }
@@ -101,7 +104,8 @@ public final class SubmissionGrader {
         if (checked instanceof SourceCheck.Problem problem) {
             return explainer.failed(problem.category(), problem.reason());
         }
-        CompileStep.Started started = compiler.compile(submission, (SourceCheck.Sources) checked, work);
+        SourceCheck.Sources sources = (SourceCheck.Sources) checked;
+        CompileStep.Started started = compiler.compile(submission, sources, work);
         if (!started.compiled().compiled()) {
             return explainer.didNotCompile(started.compiled());
         }
@@ -110,11 +114,12 @@ public final class SubmissionGrader {
         SceneRuns.PublicRun run = runs.runPublic(started, work);
         hiddenRun.publicEnded(runs, started, work, run.ran().took());
         BehaviourFindings probes = run.probes().join();
-        List<Judged> publicScenes = new SceneJudge(grading, probes, images, out)
+        List<Judged> publicScenes = new SceneJudge(grading, probes,
+                new PixelCounterexample.Code(sources.sphere(), sources.renderer(), sandbox), images, out)
                 .judgeBatch(SceneBatch.PUBLIC, run.ran(), List.of());
         SceneRuns.Ran hidden = hiddenRun.ran(runs, started, work, run.ran().took());
         List<Judged> judged = new ArrayList<>(publicScenes);
-        judged.addAll(new SceneJudge(grading, probes, new FeedbackImages(null, out, out), out)
+        judged.addAll(new SceneJudge(grading, probes, null, new FeedbackImages(null, out, out), out)
                 .judgeBatch(SceneBatch.HIDDEN, hidden, publicScenes));
         explainer.lastLinesPrinted(judged, run.printed());
         return explainer.verdict(judged, probes);

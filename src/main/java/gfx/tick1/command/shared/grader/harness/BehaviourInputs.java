@@ -185,6 +185,82 @@ public final class BehaviourInputs {
         return List.copyOf(calls);
     }
 
+    /**
+     * The file, beside the harness's jar, of inputs the grader chose for one run (the rays of an
+     * image's differing pixels, and the shadings there): when it is there, the harness calls the
+     * methods on those alone. It is written by the grader into a folder the student's code can
+     * only read.
+     */
+    public static final String CHOSEN_FILE = "inputs";
+
+    /** Inputs the grader chose, each named as its answer will be. */
+    public record Chosen(List<IntersectionCall> intersections, List<IlluminationCall> illuminations) {
+
+        /** One line a call: "ray NAME" and 10 numbers, or "shade NAME" and 26, each as Double.toString writes it. */
+        public String text() {
+            StringBuilder text = new StringBuilder();
+            for (IntersectionCall call : intersections) {
+                text.append("ray ").append(call.name());
+                append(text, call.origin(), call.direction(), call.centre(), new double[] {call.radius()});
+                text.append('\n');
+            }
+            for (IlluminationCall call : illuminations) {
+                LightInput light = call.light();
+                SphereInput sphere = call.sphere();
+                Material material = sphere.material();
+                text.append("shade ").append(call.name());
+                append(text, call.ambient(), light.position(), light.colour(), new double[] {light.intensity()},
+                        sphere.centre(), new double[] {sphere.radius()}, material.colour(),
+                        new double[] {material.kD(), material.kS(), material.n()}, call.point(), call.normal());
+                text.append('\n');
+            }
+            return text.toString();
+        }
+
+        private static void append(StringBuilder text, double[]... parts) {
+            for (double[] part : parts) {
+                for (double x : part) {
+                    text.append(' ').append(x);
+                }
+            }
+        }
+
+        /** The inputs of {@link #text}; a line of another form is left out. */
+        public static Chosen read(String text) {
+            List<IntersectionCall> rays = new ArrayList<>();
+            List<IlluminationCall> shadings = new ArrayList<>();
+            for (String line : text.split("\n")) {
+                String[] words = line.split(" ");
+                try {
+                    if (words.length == 12 && words[0].equals("ray")) {
+                        double[] n = numbers(words);
+                        rays.add(new IntersectionCall(words[1], part(n, 0), part(n, 3), part(n, 6), n[9]));
+                    } else if (words.length == 28 && words[0].equals("shade")) {
+                        double[] n = numbers(words);
+                        shadings.add(new IlluminationCall(words[1], part(n, 0),
+                                new LightInput(part(n, 3), part(n, 6), n[9]), new SphereInput(part(n, 10), n[13],
+                                new Material(part(n, 14), n[17], n[18], n[19])), part(n, 20), part(n, 23)));
+                    }
+                } catch (NumberFormatException e) {
+                    // not a line of text(): left out
+                }
+            }
+            return new Chosen(List.copyOf(rays), List.copyOf(shadings));
+        }
+
+        private static double[] numbers(String[] words) {
+            double[] n = new double[words.length - 2];
+            for (int i = 0; i < n.length; i++) {
+                n[i] = Double.parseDouble(words[i + 2]);
+            }
+            return n;
+        }
+
+        private static double[] part(double[] n, int from) {
+            return new double[] {n[from], n[from + 1], n[from + 2]};
+        }
+    }
+
     /** A vector of whole coordinates from -bound to bound. */
     private static double[] whole(SplittableRandom random, int bound) {
         return new double[] {random.nextInt(-bound, bound + 1), random.nextInt(-bound, bound + 1),
