@@ -7,6 +7,7 @@ import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.Counted;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
