@@ -12,13 +12,13 @@ import gfx.tick1.engine.math.Ray;
 import gfx.tick1.engine.math.Vector3;
 import gfx.tick1.engine.render.Camera;
 import gfx.tick1.engine.scene.PointLight;
+import gfx.tick1.engine.scene.RaycastHit;
 import gfx.tick1.engine.scene.Scene;
 import gfx.tick1.engine.scene.Sphere;
 import gfx.tick1.engine.scene.SphereGeometry;
 import java.awt.image.BufferedImage;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Set;
 
 /**
  * The input where a student's methods differ from ours, found on the image itself: when their
@@ -105,35 +105,30 @@ public final class PixelCounterexample {
                 }
                 Ray ray = camera.castRay(x, y);
                 List<IntersectionCall> rays = new ArrayList<>();
-                Models.Hit nearest = null;
-                Sphere hitSphere = null;
                 for (int s = 0; s < spheres.size(); s++) {
                     Sphere sphere = spheres.get(s);
-                    Vector3 centre = SphereGeometry.centre(sphere);
-                    double radius = SphereGeometry.radius(sphere);
                     rays.add(new IntersectionCall("pixel" + pixels.size() + "-sphere" + s, xyz(ray.getOrigin()),
-                            xyz(ray.getDirection()), xyz(centre), radius));
-                    Models.Hit hit = Models.intersect(ray.getOrigin(), ray.getDirection(), centre, radius, Set.of());
-                    if (hit != null && (nearest == null || hit.distance() < nearest.distance())) {
-                        nearest = hit;
-                        hitSphere = sphere;
-                    }
+                            xyz(ray.getDirection()), xyz(SphereGeometry.centre(sphere)),
+                            SphereGeometry.radius(sphere)));
                 }
-                pixels.add(new PixelInputs(x, y, rays, nearest == null || scene.getPointLight() == null ? null
-                        : shading("pixel" + pixels.size(), scene, hitSphere, nearest)));
+                // Our hit there, as the reference renders it.
+                RaycastHit ours = scene.findClosestIntersection(ray);
+                pixels.add(new PixelInputs(x, y, rays, !ours.isHit() || scene.getPointLight() == null ? null
+                        : shading("pixel" + pixels.size(), scene, ours)));
             }
         }
         return pixels;
     }
 
-    private static IlluminationCall shading(String name, Scene scene, Sphere sphere, Models.Hit hit) {
+    private static IlluminationCall shading(String name, Scene scene, RaycastHit hit) {
         PointLight light = scene.getPointLight();
+        Sphere sphere = hit.getObjectHit();
         return new IlluminationCall(name, xyz(scene.getAmbientLighting()),
                 new BehaviourInputs.LightInput(xyz(light.getPosition()), xyz(light.getColour()), light.getIntensity()),
                 new BehaviourInputs.SphereInput(xyz(SphereGeometry.centre(sphere)), SphereGeometry.radius(sphere),
                         new BehaviourInputs.Material(xyz(sphere.getColour()), sphere.getPhong_kD(),
                                 sphere.getPhong_kS(), sphere.getPhong_n())),
-                xyz(hit.point()), xyz(hit.normal()));
+                xyz(hit.getLocation()), xyz(hit.getNormal()));
     }
 
     private static double[] xyz(Vector3 v) {
