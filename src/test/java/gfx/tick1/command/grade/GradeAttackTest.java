@@ -14,7 +14,6 @@ import java.io.ByteArrayOutputStream;
 import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.OutputStream;
 import java.io.UncheckedIOException;
 import java.lang.annotation.ElementType;
 import java.lang.annotation.Retention;
@@ -24,20 +23,16 @@ import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
-import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
-import java.util.HexFormat;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Lock;
 import java.util.concurrent.locks.ReentrantReadWriteLock;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
@@ -222,7 +217,7 @@ class GradeAttackTest {
      * {@link #ATTACK_TOOLS} shows, or a program the code wrote): their grades let the runs start
      * processes, which a real grade refuses.
      */
-    private static final Set<String> STARTS_PROGRAMS = Set.of("deep-tree", "drop-the-page-cache", "fifo-progress",
+    private static final Set<String> STARTS_PROGRAMS = Set.of("deep-tree", "fifo-progress",
             "memory-in-many-processes", "outlive-the-grade", "reserve-the-disk", "unreadable-progress",
             "native-code-from-its-own-files");
 
@@ -230,12 +225,10 @@ class GradeAttackTest {
      * The host's programs the attacks start, which the sandbox shows them (a real grade shows none
      * but java): so that the limits are tested against what the programs can do that Java cannot.
      */
-    /** The witness of what the kernel answered a call the program that made it keeps quiet about. */
-    private static final Path STRACE = Path.of("/usr/bin/strace");
     private static final List<String> ATTACK_TOOLS = List.of("/bin/sh", "/usr/bin/setsid", "/usr/bin/sleep",
             "/usr/bin/head", "/usr/bin/tail", "/usr/bin/mkfifo", "/usr/bin/touch", "/usr/bin/chmod",
             "/usr/bin/fallocate", "/usr/bin/mkdir", "/usr/bin/cat", "/usr/bin/ln", "/usr/bin/dd", "/usr/bin/rm",
-            "/usr/bin/seq", STRACE.toString());
+            "/usr/bin/seq");
 
     /** An attack's file of the lines the correct solution's render runs first, in place of its own files. */
     private static final String RENDER_FIRST = "render-first.java.txt";
@@ -607,100 +600,6 @@ class GradeAttackTest {
         }
     }
 
-    /**
-     * Two grades, one after the other (two submissions of one student's, or two students' of a
-     * cohort): in the first, the hidden scene's run reads pages of a file of the JDK that no JVM
-     * reads, one for each 1 bit of the scene; in the second, tick1.xml's run times a read of each
-     * page (one in memory is quick) and quotes what it read in the report. The host's page cache,
-     * which every run shares, would carry the hidden scene from one grade to the next, but the
-     * grader reads every file a run sees before the run starts.
-     */
-    @Test
-    @Alone
-    void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheHostsPageCache() throws Exception {
-        Path scenes = secretScenes();
-        // Out of memory, so that only the first grade's reads would bring pages of it back.
-        Process drop = new ProcessBuilder("/bin/dd", "if=" + PAGE_CACHE_FILE, "iflag=nocache", "count=0")
-                .redirectErrorStream(true).start();
-        assumeThat(drop.waitFor()).as("dd can drop the file from the page cache").isZero();
-
-        Grade writing = grade("page-cache-write", "--scenes", scenes.toString());
-        Grade reading = grade("page-cache-read");
-
-        assertFailedAndHarmedNothing(writing);
-        assertFailedAndHarmedNothing(reading);
-        Matcher read = Pattern.compile("read: \\[([0-9a-f]{60})]")
-                .matcher(reading.output());
-        assertThat(read.find()).as("the second grade's code timed the pages: " + reading.output()).isTrue();
-        assertThat(bitsInCommon(HexFormat.of().parseHex(read.group(1)), secret.getBytes(StandardCharsets.UTF_8)))
-                .as("of the hidden scene's secret's " + 8 * secret.length() + " bits, those the code read right "
-                        + "(about half would be chance)")
-                .isLessThan(7 * secret.length());
-    }
-
-    /**
-     * Two grades, one after the other (two submissions of one student's, or two students' of a
-     * cohort, even with --jobs 1), of code that needs no program of the host's: in each, tick1.xml's
-     * run reads the inode number the kernel gives the next pipe (one count for the whole machine,
-     * shown in the pipe's name under /proc/self/fd) and quotes it in the report; the hidden scene's
-     * run opens (v + 1) x 100,000 pipes, v the last hex digit of the scene's secret. The second
-     * report's count less the first's, in steps of 100,000, would be v (the rest of the machine
-     * moves the count by thousands, not by hundreds of thousands), but a run that renders hidden
-     * scenes cannot open a pipe.
-     */
-    @Test
-    void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheKernelsCountOfInodes() throws Exception {
-        // No run has /proc now, where Java read the count, so tick1.xml's run quotes -1: the test
-        // stands for the day the count can be read again, and then asserts the hidden run cannot move it.
-        assertTheHiddenDigitIsNotCarried("inode-counter", INODE_STEP);
-    }
-
-    /**
-     * The same, through the same count, with no pipe nor socket: /proc numbers a process's files
-     * from it as they are first looked at, so the hidden scene's run starts threads that each look
-     * at their own files in /proc until the count has moved (v + 1) x 50,000, and tick1.xml's run
-     * reads it as the highest inode number of the /proc files of threads it starts.
-     */
-    @Test
-    void aHiddenSceneCannotBeCarriedToALaterGradeThroughTheInodeNumbersOfProc() throws Exception {
-        // No run has /proc now: the attack's reading quotes -1 and its moving fails, and this test
-        // stands for the day either becomes possible again.
-        assertTheHiddenDigitIsNotCarried("proc-inode-counter", PROC_INODE_STEP);
-    }
-
-    /**
-     * Two grades of {@code attack} with a scene whose secret's last hex digit is v: the second
-     * report's count less the first's, in steps of {@code step}, less one, is not v.
-     */
-    private void assertTheHiddenDigitIsNotCarried(String attack, int step) throws Exception {
-        Path scenes = secretScenes();
-        int digit = Character.digit(secret.charAt(secret.length() - 1), 16);
-
-        Grade first = grade(attack, "--scenes", scenes.toString(), "--time-limit", "30");
-        Grade second = grade(attack, "--scenes", scenes.toString(), "--time-limit", "30");
-
-        assertFailedAndHarmedNothing(first);
-        assertFailedAndHarmedNothing(second);
-        Long before = quotedCount(first), after = quotedCount(second);
-        if (before != null && after != null && before >= 0 && after >= 0) {
-            long read = Math.round((double) ((after - before) & 0xFFFF_FFFFL) / step) - 1;
-            assertThat(read).as("the hidden scene's digit, " + digit + ", read back from the counts " + before
-                    + " and " + after + " (the code can still read the count and move it)").isNotEqualTo(digit);
-        }
-    }
-
-    /** How far the proc-inode-counter attack moves the count for each step of the digit it carries. */
-    private static final int PROC_INODE_STEP = 50_000;
-
-    /** The pipes the inode-counter attack opens for each step of the digit it carries. */
-    private static final int INODE_STEP = 100_000;
-
-    /** The count tick1.xml's report quotes ("count: [N]"), or null where the report quotes none. */
-    private static Long quotedCount(Grade grade) {
-        Matcher count = Pattern.compile("count: \\[(-?\\d+)]").matcher(grade.output());
-        return count.find() ? Long.valueOf(count.group(1)) : null;
-    }
-
     /** The organiser's hidden scene with this test's secret in a comment its scene element begins with. */
     private String secretScene() throws IOException {
         return resourceOr("/gfx/tick1/scenes/hidden.xml", null).replace("<scene>", "<scene><!-- " + secret + " -->");
@@ -712,47 +611,6 @@ class GradeAttackTest {
         Files.writeString(scenes.resolve("secret-scene.xml"), secretScene());
         return scenes;
     }
-
-    /** How many of the bits of {@code expected} are the same in {@code read}. */
-    private static int bitsInCommon(byte[] read, byte[] expected) {
-        int same = 0;
-        for (int i = 0; i < expected.length && i < read.length; i++) {
-            same += 8 - Integer.bitCount((read[i] ^ expected[i]) & 0xFF);
-        }
-        return same;
-    }
-
-    /**
-     * A run that drops pages of a file of the JDK's from the host's page cache, which a run of
-     * another grade going at the same time (a cohort's jobs) could see by timing its reads: the
-     * sandbox refuses the calls that drop them, so they stay in memory.
-     */
-    @Test
-    @Alone
-    void aRunCannotDropTheJdksFilesFromTheHostsPageCache() throws Exception {
-        assumeThat(Files.isWritable(PAGE_CACHE_FILE))
-                .as("the test may write the file, so the kernel says which of its pages are in memory (as root)")
-                .isTrue();
-        assumeThat(Files.isExecutable(STRACE)).as("strace is installed, to show what the kernel answered dd").isTrue();
-        try (InputStream in = Files.newInputStream(PAGE_CACHE_FILE)) {
-            in.transferTo(OutputStream.nullOutputStream());
-        }
-
-        Grade grade = grade("drop-the-page-cache");
-
-        assertFailedAndHarmedNothing(grade);
-        assertThat(grade.output()).as("dd iflag=nocache in the sandbox, and what strace saw the kernel answer")
-                .contains("tick1.xml: FAIL: the code threw java.lang.IllegalStateException: dd exited with status 0: "
-                        + "fadvise64(0, 0, 0, POSIX_FADV_DONTNEED) = -1 EOPNOTSUPP (Operation not supported)");
-        try (FileChannel file = FileChannel.open(PAGE_CACHE_FILE)) {
-            assertThat(file.map(FileChannel.MapMode.READ_ONLY, 0, file.size()).isLoaded())
-                    .as("every page of " + PAGE_CACHE_FILE + " in memory after the grade").isTrue();
-        }
-    }
-
-    /** The file whose pages {@link #aHiddenSceneCannotBeCarriedToALaterGradeThroughTheHostsPageCache} uses. */
-    private static final Path PAGE_CACHE_FILE = Path.of(System.getProperty("java.home"), "lib", "server",
-            "classes_nocoops.jsa");
 
     @Test
     void theSandboxsOwnFileSystemsInMemoryAreReadOnly() throws Exception {

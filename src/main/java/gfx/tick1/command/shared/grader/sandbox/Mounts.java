@@ -33,16 +33,4 @@ final class Mounts {
         arguments.addAll(List.of("--remount-ro", "/", "--chdir", "/", "--"));
         return arguments;
     }
-
-    /**
-     * Reads into memory every file of the host's that a run sees ({@link SystemFiles#warm}) and
-     * every file of the folders {@code binds} shows it read-only, before the run starts: whatever
-     * pages of them an earlier run read or dropped, all are in memory when this one times them.
-     */
-    static void warm(SystemFiles system, List<Bind> binds) {
-        if (system == null) {
-            return;
-        }
-        system.warm(binds.stream().filter(bind -> !bind.writable()).map(Bind::outside).toList());
-    }
 }

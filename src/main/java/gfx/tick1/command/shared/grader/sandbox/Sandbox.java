@@ -15,7 +15,7 @@ import java.util.concurrent.TimeUnit;
  *   <li>runs as an unprivileged user of its own when {@code grade} runs as root (through
  *       {@code setpriv}), with no capabilities and no way to gain any;
  *   <li>sees of the host's files only the JDK and the libraries it loads ({@link SystemFiles}),
- *       read-only, each in memory when the run starts, the folders {@code grade} binds in
+ *       read-only, the folders {@code grade} binds in
  *       (read-only but for its output folder, which is a file system of
  *       its own when {@code grade} runs as root, where nothing is mapped as code: {@link OutputDisk})
  *       and nothing else: no home folder, no {@code /tmp}, no shared memory ({@code /dev/shm} is an empty
@@ -284,11 +284,6 @@ public final class Sandbox {
         ProcessBuilder builder = new ProcessBuilder(wrappedCommand);
         builder.environment().keySet().removeAll(List.of("JAVA_TOOL_OPTIONS", "_JAVA_OPTIONS", "JDK_JAVA_OPTIONS"));
         return builder;
-    }
-
-    /** Reads what a run with {@code binds} sees into memory before it starts ({@link Mounts#warm}). */
-    void warm(List<Bind> binds) {
-        Mounts.warm(host.system(), binds);
     }
 
     /**

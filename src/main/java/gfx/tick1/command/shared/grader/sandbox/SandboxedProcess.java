@@ -195,7 +195,6 @@ final class SandboxedProcess {
         Cgroup cgroup = sandbox.cgroupFor(new Cgroup.Totals(
                 (long) (heapMegabytes + TOTAL_BEYOND_HEAP_MEGABYTES) << 20, RunLimits.PROCESSES_LIMIT, oneCore));
         try {
-            sandbox.warm(binds);
             Process process = sandbox.process(sandbox.wrap(command, binds,
                     new RunLimits(cpuSeconds, heapMegabytes + NON_HEAP_MEGABYTES, oneCore), cgroup, batch))
                     .redirectErrorStream(true).start();

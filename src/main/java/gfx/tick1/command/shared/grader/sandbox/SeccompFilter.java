@@ -24,19 +24,7 @@ import java.util.Map;
  *   <li>{@code setxattr}, {@code lsetxattr}, {@code fsetxattr}, {@code setxattrat}: an extended
  *       attribute takes a block of its own;
  *   <li>{@code io_uring_setup}, {@code io_uring_enter}, {@code io_uring_register}: io_uring
- *       runs fallocate (and fadvise, below) without a system call the filter could see.
- * </ul>
- *
- * And it refuses the calls that drop a file's pages from the host's page cache, which every run
- * shares: the grader reads the files a run sees into memory before it starts, but a run going at
- * the same time as another could drop pages of the JDK's files while the other times its reads.
- *
- * <ul>
- *   <li>{@code fadvise64} ({@code posix_fadvise}'s {@code POSIX_FADV_DONTNEED}, as
- *       {@code dd iflag=nocache} gives it);
- *   <li>{@code madvise} with {@code MADV_PAGEOUT} on a mapping of the file; the JVM gives madvise
- *       other advice ({@code MADV_DONTNEED}, {@code MADV_HUGEPAGE}, ...), which stays allowed;
- *   <li>{@code process_madvise}, which gives the same advice for a process's memory.
+ *       runs fallocate without a system call the filter could see.
  * </ul>
  *
  * A run that renders the organiser's hidden scenes has a stricter filter, which also refuses the
@@ -71,10 +59,9 @@ final class SeccompFilter {
             EPERM = 1, ENOSYS = 38;
     /**
      * Offsets in struct seccomp_data: the call's number, the architecture, and the low words of the
-     * second and third arguments (both machines are little-endian).
+     * first and second arguments (both machines are little-endian).
      */
-    private static final int NUMBER = 0, ARCHITECTURE = 4, FIRST_ARGUMENT = 16, SECOND_ARGUMENT = 24,
-            THIRD_ARGUMENT = 32;
+    private static final int NUMBER = 0, ARCHITECTURE = 4, FIRST_ARGUMENT = 16, SECOND_ARGUMENT = 24;
     /** clone's flags (linux/sched.h), its first argument on both machines: a thread, and a pidfd for the child. */
     private static final int CLONE_THREAD = 0x00010000, CLONE_PIDFD = 0x00001000;
     /** x86-64's x32 calls have this bit in their number. */
@@ -82,16 +69,10 @@ final class SeccompFilter {
     /** An ioctl's type is the second byte of its request: 'X' for the space reservations. */
     private static final int IOCTL_TYPE = 0xff00, RESERVATIONS = 'X' << 8;
     /**
-     * madvise's advice that reclaims the pages (linux/mman-common.h). The kernel reads the advice
-     * as an int, so the low word is all of it.
+     * One architecture's numbers: AUDIT_ARCH_* (linux/audit.h), ioctl's, those of the calls
+     * refused outright, of those refused in hidden runs, and of those that start processes.
      */
-    private static final int MADV_PAGEOUT = 21;
-
-    /**
-     * One architecture's numbers: AUDIT_ARCH_* (linux/audit.h), ioctl's and madvise's, those of
-     * the calls refused outright, of those refused in hidden runs, and of those that start processes.
-     */
-    private record Architecture(int audit, int ioctl, int madvise, int[] refused, int[] numbering, Starting starting) {
+    private record Architecture(int audit, int ioctl, int[] refused, int[] numbering, Starting starting) {
     }
 
     /** The numbers of clone and clone3, which may start a thread, and of the calls that only start a process. */
@@ -99,16 +80,16 @@ final class SeccompFilter {
     }
 
     // The numbers are the kernel's: x86-64's arch/x86/entry/syscalls/syscall_64.tbl, AArch64's
-    // include/uapi/asm-generic/unistd.h (ioctl 16 and 29, madvise 28 and 233). Refused outright:
-    // fallocate, setxattr, lsetxattr, fsetxattr, io_uring_setup, io_uring_enter, io_uring_register, setxattrat,
-    // fadvise64, process_madvise. Refused in hidden runs (the kernel's counts of numbered objects): pipe
+    // include/uapi/asm-generic/unistd.h (ioctl 16 and 29). Refused outright:
+    // fallocate, setxattr, lsetxattr, fsetxattr, io_uring_setup, io_uring_enter, io_uring_register, setxattrat.
+    // Refused in hidden runs (the kernel's counts of numbered objects): pipe
     // (x86-64 only), pipe2, socket, memfd_create, memfd_secret, io_setup, shmget, mq_open, userfaultfd. Then
     // clone (56 and 220) and clone3 (435); refused as starting a process: fork and vfork (x86-64 only), pidfd_open.
-    private static final Architecture X86_64 = new Architecture(0xc000003e, 16, 28,
-            new int[] {285, 188, 189, 190, 425, 426, 427, 463, 221, 440},
+    private static final Architecture X86_64 = new Architecture(0xc000003e, 16,
+            new int[] {285, 188, 189, 190, 425, 426, 427, 463},
             new int[] {22, 293, 41, 319, 447, 206, 29, 240, 323}, new Starting(56, 435, new int[] {57, 58, 434}));
-    private static final Architecture AARCH64 = new Architecture(0xc00000b7, 29, 233,
-            new int[] {47, 5, 6, 7, 425, 426, 427, 463, 223, 440},
+    private static final Architecture AARCH64 = new Architecture(0xc00000b7, 29,
+            new int[] {47, 5, 6, 7, 425, 426, 427, 463},
             new int[] {59, 198, 279, 447, 0, 194, 180, 282}, new Starting(220, 435, new int[] {434}));
 
     private SeccompFilter() {
@@ -151,15 +132,11 @@ final class SeccompFilter {
             code.jump(JUMP_EQUAL, architecture.starting().clone3Call(), "no such call", null);
             code.jump(JUMP_EQUAL, architecture.starting().cloneCall(), "clone", null);
         }
-        code.jump(JUMP_EQUAL, architecture.ioctl(), "ioctl", null);
-        code.jump(JUMP_EQUAL, architecture.madvise(), "madvise", "allow");
+        code.jump(JUMP_EQUAL, architecture.ioctl(), "ioctl", "allow");
         code.label("ioctl");
         code.add(LOAD_WORD, SECOND_ARGUMENT);
         code.add(AND, IOCTL_TYPE);
         code.jump(JUMP_EQUAL, RESERVATIONS, "refuse", "allow");
-        code.label("madvise");
-        code.add(LOAD_WORD, THIRD_ARGUMENT);
-        code.jump(JUMP_EQUAL, MADV_PAGEOUT, "refuse", "allow");
         code.label("clone");
         // A thread of this process, and no pidfd: (flags & (CLONE_THREAD | CLONE_PIDFD)) == CLONE_THREAD.
         code.add(LOAD_WORD, FIRST_ARGUMENT);

@@ -1,9 +1,6 @@
 package gfx.tick1.command.shared.grader.sandbox;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.MappedByteBuffer;
-import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
@@ -21,13 +18,6 @@ import java.util.concurrent.TimeUnit;
  * with the links to folders on the way made there too; the folders around them are the run's own,
  * so a run sees no other name in them, and nothing it looks up there is remembered once it has
  * ended.
- *
- * <p>Before each run the grader reads every one of these files whole ({@link #warm}), so that all
- * their pages are in the host's page cache when the run starts. Every run shares that cache: a run
- * that read some pages of a file no one else reads, or dropped some ({@code posix_fadvise}), would
- * otherwise leave a mark a later run finds by timing its reads, and carry what it knows (a hidden
- * scene) from one grade to the next. After {@link #warm}, the pages a run can time are all in
- * memory, whatever earlier runs did.
  */
 final class SystemFiles {
 
@@ -73,12 +63,6 @@ final class SystemFiles {
     private final List<Bound> files;
     /** The links to folders on the way to them, where the paths asked for go through links. */
     private final List<Link> links;
-    /** Each file the kernel tells this grader the pages of, mapped (never read through), made by the first warm. */
-    private List<Pages> pages;
-
-    /** A file, and its pages mapped where the kernel says which are in memory; null where it would not. */
-    private record Pages(Path file, MappedByteBuffer mapped) {
-    }
 
     SystemFiles(List<Bound> files, List<Link> links) {
         this.files = List.copyOf(files);
@@ -163,68 +147,6 @@ final class SystemFiles {
             arguments.addAll(List.of("--ro-bind", file.real().toString(), file.at().toString()));
         }
         return arguments;
-    }
-
-    /**
-     * Reads every file whole that may have a page out of memory, so that each page of them is in
-     * the host's page cache when the next run starts (a file that is gone or unreadable is
-     * skipped: the run will find it missing too). Which pages are in memory the kernel tells
-     * ({@code mincore}, through {@link MappedByteBuffer#isLoaded}) only for files this grader could
-     * write (as root): those are read only when one of their pages is out; the others always are.
-     * And every file of {@code folders} (a run's own, bound read-only: the harness's jar, the class
-     * data archive, its scenes), whole: what cannot be listed, the run cannot read either.
-     */
-    void warm(List<Path> folders) {
-        ByteBuffer buffer = ByteBuffer.allocateDirect(1 << 20);
-        for (Pages file : pages()) {
-            if (file.mapped() == null || !file.mapped().isLoaded()) {
-                readWhole(file.file(), buffer);
-            }
-        }
-        for (Path folder : folders) {
-            try (var inside = Files.walk(folder)) {
-                inside.filter(file -> Files.isRegularFile(file, LinkOption.NOFOLLOW_LINKS))
-                        .forEach(file -> readWhole(file, buffer));
-            } catch (IOException | java.io.UncheckedIOException e) {
-                // A folder the grader made for this run, gone or unreadable: nothing of it to time.
-            }
-        }
-    }
-
-    private synchronized List<Pages> pages() {
-        if (pages == null) {
-            List<Pages> all = new ArrayList<>();
-            for (Path file : files()) {
-                all.add(new Pages(file, mapped(file)));
-            }
-            pages = List.copyOf(all);
-        }
-        return pages;
-    }
-
-    /**
-     * {@code file} mapped, read-only, where the kernel says which of its pages are in memory (to a
-     * process that may write it); null elsewhere, or where it is empty or cannot be mapped.
-     */
-    private static MappedByteBuffer mapped(Path file) {
-        try (FileChannel channel = FileChannel.open(file)) {
-            long size = channel.size();
-            return size == 0 || size > Integer.MAX_VALUE || !Files.isWritable(file) ? null
-                    : channel.map(FileChannel.MapMode.READ_ONLY, 0, size);
-        } catch (IOException | UnsupportedOperationException e) {
-            return null;
-        }
-    }
-
-    /** Reads {@code file} to its end through {@code buffer}, and forgets what it read. */
-    private static void readWhole(Path file, ByteBuffer buffer) {
-        try (FileChannel channel = FileChannel.open(file)) {
-            do {
-                buffer.clear();
-            } while (channel.read(buffer) >= 0);
-        } catch (IOException e) {
-            // Not there or not readable: nothing of it is in memory, and nothing of it can be timed.
-        }
     }
 
     /**

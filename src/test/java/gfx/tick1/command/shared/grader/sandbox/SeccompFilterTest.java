@@ -17,7 +17,7 @@ class SeccompFilterTest {
     /** seccomp's answers (linux/seccomp.h): the call goes on, fails with EOPNOTSUPP, or kills its process. */
     private static final int ALLOW = 0x7fff0000, REFUSED = 0x00050000 | 95, KILL_PROCESS = 0x80000000;
     /** madvise's advice (linux/mman-common.h). */
-    private static final int MADV_DONTNEED = 4, MADV_HUGEPAGE = 14, MADV_PAGEOUT = 21;
+    private static final int MADV_DONTNEED = 4, MADV_HUGEPAGE = 14;
     /** AUDIT_ARCH_I386 (linux/audit.h): a 32-bit program's calls, on either machine. */
     private static final int I386 = 0x40000003;
 
@@ -26,7 +26,7 @@ class SeccompFilterTest {
      * arch/x86/entry/syscalls/syscall_64.tbl, AArch64's include/uapi/asm-generic/unistd.h.
      */
     record Machine(String osArch, int audit, int read, int openat, int mmap, int ioctl, int fallocate,
-            int fadvise64, int madvise, int processMadvise, int pipe2, int socket, int socketpair, int memfdCreate,
+            int madvise, int pipe2, int socket, int socketpair, int memfdCreate,
             int cloneCall, int clone3Call, int pidfdOpen, int fork) {
 
         /** What the filter answers this machine's call {@code number} with these arguments. */
@@ -46,10 +46,8 @@ class SeccompFilterTest {
     }
 
     static Stream<Machine> machines() {
-        return Stream.of(new Machine("amd64", 0xc000003e, 0, 257, 9, 16, 285, 221, 28, 440, 293, 41, 53, 319, 56, 435,
-                        434, 57),
-                new Machine("aarch64", 0xc00000b7, 63, 56, 222, 29, 47, 223, 233, 440, 59, 198, 199, 279, 220, 435, 434,
-                        -1));
+        return Stream.of(new Machine("amd64", 0xc000003e, 0, 257, 9, 16, 285, 28, 293, 41, 53, 319, 56, 435, 434, 57),
+                new Machine("aarch64", 0xc00000b7, 63, 56, 222, 29, 47, 233, 59, 198, 199, 279, 220, 435, 434, -1));
     }
 
     /** The answers to starting a process (EPERM) and to clone3 (ENOSYS, on which glibc uses clone). */
@@ -108,30 +106,6 @@ class SeccompFilterTest {
     void theOtherRunsMayMakePipesAndSockets(Machine machine) {
         assertThat(machine.answer(machine.pipe2(), 0, 0)).as("pipe2").isEqualTo(ALLOW);
         assertThat(machine.answer(machine.socket(), 1, 1, 0)).as("socket").isEqualTo(ALLOW);
-    }
-
-    @ParameterizedTest(name = "{0}")
-    @MethodSource("machines")
-    void droppingAFilesPagesFromThePageCacheWithFadviseIsRefused(Machine machine) {
-        assertThat(machine.answer(machine.fadvise64, 3, 0, 0, 4 /* POSIX_FADV_DONTNEED */))
-                .as("fadvise64 (posix_fadvise, dd iflag=nocache)").isEqualTo(REFUSED);
-    }
-
-    @ParameterizedTest(name = "{0}")
-    @MethodSource("machines")
-    void adviceOnAnotherProcesssMemoryIsRefused(Machine machine) {
-        assertThat(machine.answer(machine.processMadvise, 3, 0x1000, 1, MADV_PAGEOUT, 0))
-                .as("process_madvise").isEqualTo(REFUSED);
-    }
-
-    @ParameterizedTest(name = "{0}")
-    @MethodSource("machines")
-    void pagingOutAMappingIsRefused(Machine machine) {
-        assertThat(machine.answer(machine.madvise, 0x7f0000000000L, 1 << 20, MADV_PAGEOUT))
-                .as("madvise(MADV_PAGEOUT)").isEqualTo(REFUSED);
-        // The kernel reads madvise's advice as an int: the high word of the register is not looked at.
-        assertThat(machine.answer(machine.madvise, 0x7f0000000000L, 1 << 20, 0xffffffffL << 32 | MADV_PAGEOUT))
-                .as("madvise(MADV_PAGEOUT) with the high word set").isEqualTo(REFUSED);
     }
 
     @ParameterizedTest(name = "{0}")

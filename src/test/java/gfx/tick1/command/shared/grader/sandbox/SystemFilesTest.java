@@ -5,12 +5,9 @@ import static org.assertj.core.api.Assumptions.assumeThat;
 
 import java.io.File;
 import java.io.IOException;
-import java.nio.MappedByteBuffer;
-import java.nio.channels.FileChannel;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -99,28 +96,5 @@ class SystemFilesTest {
         SystemFiles system = SystemFiles.following(List.of(dangling, folder, dir.resolve("missing.so")));
 
         assertThat(system.files()).as("the files shown").isEmpty();
-    }
-
-    @Test
-    void afterWarmingEveryPageOfAFileDroppedFromMemoryIsInMemoryAgain() throws Exception {
-        Path file = dir.resolve("cold.bin");
-        byte[] noise = new byte[4 << 20];
-        new Random(1).nextBytes(noise);
-        Files.write(file, noise);
-        try (FileChannel channel = FileChannel.open(file, java.nio.file.StandardOpenOption.WRITE)) {
-            channel.force(true);
-        }
-        Process drop = new ProcessBuilder("/bin/dd", "if=" + file, "iflag=nocache", "count=0")
-                .redirectErrorStream(true).start();
-        assumeThat(drop.waitFor()).as("dd can drop the file from the page cache").isZero();
-        try (FileChannel channel = FileChannel.open(file)) {
-            // isLoaded asks the kernel (mincore) which pages are in memory, without reading them.
-            MappedByteBuffer pages = channel.map(FileChannel.MapMode.READ_ONLY, 0, noise.length);
-            assumeThat(pages.isLoaded()).as("the file's pages were dropped from memory").isFalse();
-
-            SystemFiles.following(List.of(file)).warm(List.of());
-
-            assertThat(pages.isLoaded()).as("every page of the file in memory after warming").isTrue();
-        }
     }
 }
