@@ -88,15 +88,33 @@ class DiagnoseCommandTest {
                 .doesNotContain("background only", "clamped", "candidates");
     }
 
-    /** A sphere's colour four levels off in blue: tick1.xml's outlines, colours no entry and no one slip explain. */
+    /**
+     * A sphere's colour four levels off in blue: tick1.xml's outlines, colours no entry and no one
+     * slip explain. The spheres are where the handout's are, so nothing blames the scene file: the
+     * facts are given (a code mistake no entry knows gives the same image).
+     */
     @Test
-    void tick1sOutlinesWithColoursNothingExplainsSayTheSceneFileMayDiffer() throws IOException {
+    void tick1sOutlinesWithColoursNothingExplainsGiveTheFactsWithoutSceneFileAdvice() throws IOException {
         CliRun run = CliRun.of("diagnose", renderOfTick1With("#FF1D25", "#FF1D29").toString());
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_UNSURE);
         assertThat(run.out()).as(run.transcript()).contains("verdict: unsure: ",
                 "the spheres' outlines are exactly those of tick1.xml, but no entry of the catalogue explains their "
-                        + "colours: if the scene file you rendered is your own, it may differ from the handout's "
-                        + "section 3").doesNotContain("verdict: correct");
+                        + "colours.").doesNotContain("verdict: correct", "scene file");
+    }
+
+    /**
+     * The correct code's render of tick1.xml with its shading in float is a level off the correct
+     * render in places: its spheres are where the handout's are, so no line suggests that the
+     * scene file differs.
+     */
+    @Test
+    void aRenderALevelOffTheCorrectOneGivesNoSceneFileAdvice() throws IOException {
+        Path image = dir.resolve("float.png");
+        PngOutput.write(FloatShading.render(new SceneLoader(Path.of("scenes/tick1.xml"), false).getScene(), 160, 120),
+                image);
+        CliRun run = CliRun.of("diagnose", image.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiagnoseCommand.EXIT_NOT_CORRECT);
+        assertThat(run.out()).as(run.transcript()).doesNotContain("scene file");
     }
 
     /**
