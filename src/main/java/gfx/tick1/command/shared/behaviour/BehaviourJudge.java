@@ -53,8 +53,15 @@ final class BehaviourJudge {
     private BehaviourJudge() {
     }
 
+    /**
+     * Said of a counterexample when no differing answer moves a byte of the image: toRGB() gives
+     * the same three bytes for the student's colour and ours on every input where they differ.
+     */
+    static final String BELOW_ONE_LEVEL = "every difference is smaller than one colour level: toRGB() gives the "
+            + "same bytes for yours and ours";
+
     /** One tested input and the student's answer to it. */
-    private interface Case {
+    interface Case {
         /** Whether the answer is that of the model of {@code variants} (none: ours in plain doubles). */
         boolean answerIs(Set<Variant> variants);
 
@@ -64,6 +71,11 @@ final class BehaviourJudge {
         }
 
         double roughness();
+
+        /** Whether the answer differs from ours where an image shows it: any but a colour within a level. */
+        default boolean visible() {
+            return true;
+        }
 
         /** "for INPUT, yours is X; ours is Y". */
         String counterexample();
@@ -95,7 +107,7 @@ final class BehaviourJudge {
         return new Behaviour(true, intersection, illumination);
     }
 
-    private static MethodBehaviour judge(String method, List<? extends Case> cases, Variant.Method which,
+    static MethodBehaviour judge(String method, List<? extends Case> cases, Variant.Method which,
             List<String> properties) {
         List<Integer> differing = IntStream.range(0, cases.size()).filter(i -> !cases.get(i).isOurs()).boxed()
                 .toList();
@@ -108,10 +120,14 @@ final class BehaviourJudge {
         List<Case> order = new ArrayList<>();
         differing.forEach(i -> order.add(cases.get(i)));
         IntStream.range(0, cases.size()).filter(i -> !differing.contains(i)).forEach(i -> order.add(cases.get(i)));
-        Case simplest = differing.stream().map(cases::get).min(Comparator.comparingDouble(Case::roughness))
-                .orElseThrow();
+        // The simplest input a student can see in an image; else the simplest, said to be invisible.
+        Comparator<Case> simplestFirst = Comparator.comparingDouble(Case::roughness);
+        String counterexample = differing.stream().map(cases::get).filter(Case::visible).min(simplestFirst)
+                .map(Case::counterexample)
+                .orElseGet(() -> differing.stream().map(cases::get).min(simplestFirst).orElseThrow().counterexample()
+                        + " (" + BELOW_ONE_LEVEL + ")");
         return new MethodBehaviour(method, cases.size(), new MethodBehaviour.Difference(differing,
-                reproducing(order, which), simplest.counterexample(), properties), List.of(), ruledOut);
+                reproducing(order, which), counterexample, properties), List.of(), ruledOut);
     }
 
     /** The catalogue's mistakes of the method {@code which}: the entries with a model of it, but ours. */
@@ -278,6 +294,17 @@ final class BehaviourJudge {
         public double roughness() {
             Vector3 ours = model(OURS);
             return Words.roughness(call) + Words.roughness(ours.x, ours.y, ours.z);
+        }
+
+        @Override
+        public boolean visible() {
+            if (!(answer instanceof Colour colour)) {
+                return true;
+            }
+            Vector3 ours = model(OURS);
+            double[] rgb = colour.rgb();
+            return Vector3.toByte(rgb[0]) != Vector3.toByte(ours.x) || Vector3.toByte(rgb[1]) != Vector3.toByte(ours.y)
+                    || Vector3.toByte(rgb[2]) != Vector3.toByte(ours.z) || Double.isNaN(rgb[0] + rgb[1] + rgb[2]);
         }
 
         @Override

@@ -4,6 +4,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.command.shared.grader.harness.BehaviourInputs;
 import gfx.tick1.engine.math.Vector3;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -27,6 +30,52 @@ class CounterexampleWordsTest {
                 words.indexOf("; ours returns "));
         String ours = words.substring(words.indexOf("; ours returns ") + "; ours returns ".length());
         assertThat(yours).as("the two answers, as printed: %s", words).isNotEqualTo(ours);
+    }
+
+    /** The course's fixed shading inputs, simplest first (the order a counterexample is chosen in). */
+    private static List<BehaviourJudge.ShadeCase> simplestFirst() {
+        List<BehaviourJudge.ShadeCase> calls = new ArrayList<>();
+        BehaviourInputs.ILLUMINATIONS.forEach(call -> calls.add(new BehaviourJudge.ShadeCase(call, null, false)));
+        calls.sort(Comparator.comparingDouble(BehaviourJudge.ShadeCase::roughness));
+        return calls;
+    }
+
+    /** Each input answered with our colour plus {@code offset(i)} in red, i its place simplest first. */
+    private static List<BehaviourJudge.ShadeCase> answered(java.util.function.IntToDoubleFunction offset) {
+        List<BehaviourJudge.ShadeCase> calls = simplestFirst();
+        List<BehaviourJudge.ShadeCase> answered = new ArrayList<>();
+        for (int i = 0; i < calls.size(); i++) {
+            Vector3 ours = calls.get(i).model(BehaviourJudge.OURS);
+            answered.add(new BehaviourJudge.ShadeCase(calls.get(i).call(),
+                    new Answers.Colour(new double[] {ours.x + offset.applyAsDouble(i), ours.y, ours.z}), false));
+        }
+        return answered;
+    }
+
+    @Test
+    void theCounterexampleIsTheSimplestInputWhoseAnswerAnImageShowsNotOneBelowALevel() {
+        List<BehaviourJudge.ShadeCase> calls = simplestFirst();
+        int visibleAt = java.util.stream.IntStream.range(1, calls.size())
+                .filter(i -> calls.get(i).model(BehaviourJudge.OURS).x < 0.75).findFirst().orElseThrow();
+        // The simplest input is a millionth off (no byte moves); a rougher one, with room for it, a fifth.
+        List<BehaviourJudge.ShadeCase> answered = answered(i -> i == 0 ? 1e-6 : i == visibleAt ? 0.2 : 0);
+        assertThat(answered.get(0).visible()).as("a millionth moves no byte of the simplest input").isFalse();
+
+        String counterexample = BehaviourJudge.judge("illuminate", answered, Variant.Method.ILLUMINATE, List.of())
+                .difference().counterexample();
+        assertThat(counterexample).as("the input whose colour is a fifth off")
+                .isEqualTo(answered.get(visibleAt).counterexample());
+    }
+
+    @Test
+    void whenNoDifferenceMovesAByteTheCounterexampleSaysSo() {
+        List<BehaviourJudge.ShadeCase> answered = answered(i -> i < 3 ? 1e-6 : 0);
+        assertThat(answered.subList(0, 3)).as("no byte moves").noneMatch(BehaviourJudge.ShadeCase::visible);
+
+        String counterexample = BehaviourJudge.judge("illuminate", answered, Variant.Method.ILLUMINATE, List.of())
+                .difference().counterexample();
+        assertThat(counterexample).as("the simplest, said to be below a level")
+                .isEqualTo(answered.get(0).counterexample() + " (" + BehaviourJudge.BELOW_ONE_LEVEL + ")");
     }
 
     @Test
