@@ -89,10 +89,12 @@ public enum Variant {
                     + "light.getIlluminationAt(distanceToLight) has the right formula",
             "section 5, \"Phong illumination code\": the given line "
                     + "Vector3 I = light.getIlluminationAt(distanceToLight)"),
-    V_AWAY_FROM_CAMERA("V pointing away from the camera", "",
-            "V points from the camera to the surface (P) instead of back to the camera (-P), so highlights land "
-                    + "where the light is mirrored away from you; negating R (reflecting -L, a bounce) gives the same "
-                    + "picture",
+    // Two mistakes with one model: R.V changes sign either way, so no answer and no image tells
+    // them apart, and the entry names both, V first as the handout's step 1 computes it first.
+    V_AWAY_FROM_CAMERA("V pointing away from the camera or R negated", "",
+            "either V points from the camera to the surface (P) instead of back to the camera (-P), or R is "
+                    + "negated (the bounce of L, not its mirror reflection in N): R.V changes sign either way, so "
+                    + "the two give the same answers, with highlights where the light is mirrored away from you",
             "section 5, step 1: \"Remember that the camera is positioned at the origin\", and footnote 1"),
     R_WRONG_WAY("R reflected the wrong way", "",
             "R is computed as N reflected in L (N.reflectIn(L)) instead of L reflected in N (L.reflectIn(N)), so "

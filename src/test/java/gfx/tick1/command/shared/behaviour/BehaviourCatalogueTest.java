@@ -158,6 +158,22 @@ class BehaviourCatalogueTest {
     }
 
     /**
+     * Code that negates R (the bounce of L) gives the answers of V pointing away from the camera on
+     * every input, since R.V changes sign either way: the finding names both together, V first as
+     * the handout's step 1 computes it first, and leads with neither alone.
+     */
+    @Test
+    void rNegatedIsToldAsATieWithVPointingAwayNotAsOneOfThem(@TempDir Path folder) throws Exception {
+        BehaviourFindings findings = CalledSolution.correct().renderer("Vector3 R = L.reflectIn(N);",
+                "Vector3 R = L.reflectIn(N).scale(-1);").findings(folder);
+
+        assertThat(findings.tested()).as("the tested findings").singleElement()
+                .extracting(BehaviourFindings.Finding::fact).asString()
+                .contains("gives the answers of \"V pointing away from the camera or R negated\"",
+                        "either V points", "or R is negated");
+    }
+
+    /**
      * A slip of our own that only a graze shows (the distance -b/a where the discriminant is 0, the
      * 2 forgotten): neither answer the handout allows (our touching point, or the six steps' no
      * hit), so the note calls it a mistake, never something the handout leaves open, and it is no
