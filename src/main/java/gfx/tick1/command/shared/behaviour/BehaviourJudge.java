@@ -135,13 +135,18 @@ final class BehaviourJudge {
         return Stream.of(Variant.values()).filter(v -> v.method() == which && !v.isCorrect()).toList();
     }
 
-    /** The catalogue's entries whose model gives every answer: one, or two together, or none. */
+    /**
+     * The catalogue's entries whose model gives every answer: one, or two together, or none. Two
+     * entries that each give every answer alone are equally the explanation: naming one would lead
+     * with it, so neither is named and the facts are given (the catalogue names a known tie as one
+     * entry).
+     */
     static List<Variant> reproducing(List<? extends Case> cases, Variant.Method which) {
         List<Variant> models = mistakes(which);
-        for (Variant v : models) {
-            if (everyAnswer(cases, c -> c.answerIs(EnumSet.of(v)))) {
-                return List.of(v);
-            }
+        List<Variant> alone = models.stream().filter(v -> everyAnswer(cases, c -> c.answerIs(EnumSet.of(v))))
+                .toList();
+        if (!alone.isEmpty()) {
+            return alone.size() == 1 ? alone : List.of();
         }
         for (int i = 0; i < models.size(); i++) {
             for (int j = i + 1; j < models.size(); j++) {

@@ -78,6 +78,34 @@ class CounterexampleWordsTest {
                 .isEqualTo(answered.get(0).counterexample() + " (" + BehaviourJudge.BELOW_ONE_LEVEL + ")");
     }
 
+    /**
+     * On an input where two mistakes' models give the same colour, other than ours, an answer of
+     * that colour is reproduced by each alone: neither is named, since naming one would lead with it.
+     */
+    @Test
+    void twoEntriesThatEachGiveEveryAnswerAreNeitherNamed() {
+        List<Variant> mistakes = java.util.stream.Stream.of(Variant.values())
+                .filter(v -> v.method() == Variant.Method.ILLUMINATE && !v.isCorrect()).toList();
+        BehaviourJudge.ShadeCase tie = null;
+        for (BehaviourInputs.IlluminationCall call : BehaviourInputs.ILLUMINATIONS) {
+            BehaviourJudge.ShadeCase asked = new BehaviourJudge.ShadeCase(call, null, false);
+            Vector3 ours = asked.model(BehaviourJudge.OURS);
+            for (Variant first : mistakes) {
+                Vector3 theirs = asked.model(java.util.EnumSet.of(first));
+                boolean shared = mistakes.stream().filter(other -> other != first)
+                        .anyMatch(other -> asked.model(java.util.EnumSet.of(other)).equals(theirs));
+                if (tie == null && shared && !theirs.equals(ours)) {
+                    tie = new BehaviourJudge.ShadeCase(call,
+                            new Answers.Colour(new double[] {theirs.x, theirs.y, theirs.z}), false);
+                }
+            }
+        }
+        assertThat(tie).as("an input where two mistakes give one colour that is not ours").isNotNull();
+
+        assertThat(BehaviourJudge.reproducing(List.of(tie), Variant.Method.ILLUMINATE))
+                .as("the entries named for an answer two of them give alone").isEmpty();
+    }
+
     @Test
     void answersApartAtTheSeventhDigitAreStillPrintedShort() {
         assertThat(Words.colour(new Vector3(0.24, 0, 0.12))).as("a colour of short numbers")
