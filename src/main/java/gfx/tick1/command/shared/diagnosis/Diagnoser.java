@@ -113,11 +113,23 @@ public final class Diagnoser {
 
     /** As {@link #diagnose(BufferedImage, Scene)}, the report naming the scene {@code name} (null: unnamed). */
     public Diagnosis diagnose(BufferedImage image, Scene scene, String name) {
+        return diagnose(image, scene, name, Variant.seenInImages());
+    }
+
+    /**
+     * As {@link #diagnose(BufferedImage, Scene, String)}, ranking only the entries {@code considered}
+     * (the correct one among them): those the code's own answers have not ruled out, so that an
+     * entry the code cannot be is neither rendered nor a candidate.
+     */
+    public Diagnosis diagnose(BufferedImage image, Scene scene, String name, Set<Variant> considered) {
         checkBorder(image);
         int width = image.getWidth(), height = image.getHeight();
         VariantRenderer renderer = new VariantRenderer(width, height);
         BufferedImage inside = inner(image);
-        VariantRenderer.Renders renders = renderer.renders(scene, Variant.seenInImages());
+        Set<Variant> seen = EnumSet.copyOf(considered);
+        seen.retainAll(Variant.seenInImages());
+        seen.add(Variant.CORRECT);
+        VariantRenderer.Renders renders = renderer.renders(scene, seen);
         SpherePixels spheres = SpherePixels.inside(renders.spheres(), width, height, border);
         BufferedImage correct = inner(renders.images().get(Variant.CORRECT));
         List<Candidate> candidates = new ArrayList<>();

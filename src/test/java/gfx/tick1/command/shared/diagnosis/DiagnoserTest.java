@@ -58,6 +58,25 @@ class DiagnoserTest {
                 .doesNotContain("likely cause", "reread");
     }
 
+    /**
+     * A grade ranks only the entries the code's answers leave possible: one they rule out is not
+     * among the candidates at all, however close its render, and the correct entry always is.
+     */
+    @Test
+    void anEntryLeftOutOfThoseConsideredIsNoCandidate() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        BufferedImage image = new VariantRenderer(160, 120).render(scene, Variant.UNCLAMPED_N_DOT_L);
+        Set<Variant> considered = java.util.EnumSet.allOf(Variant.class);
+        considered.remove(Variant.UNCLAMPED_R_DOT_V);
+        considered.remove(Variant.CORRECT);
+
+        Diagnosis diagnosis = new Diagnoser().diagnose(image, scene, null, considered);
+
+        assertThat(diagnosis.candidates()).as("the candidates").extracting(Diagnosis.Candidate::variant)
+                .doesNotContain(Variant.UNCLAMPED_R_DOT_V).contains(Variant.CORRECT, Variant.UNCLAMPED_N_DOT_L);
+        assertThat(diagnosis.closest().variant()).as("the closest").isEqualTo(Variant.UNCLAMPED_N_DOT_L);
+    }
+
     /** One pixel off the correct render: the correct image is no candidate, and a ruled-out entry is none either. */
     @Test
     void anUnsureImageNamesNeitherTheCorrectImageNorARuledOutEntryAsACandidate() {

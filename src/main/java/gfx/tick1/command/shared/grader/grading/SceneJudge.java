@@ -224,10 +224,13 @@ final class SceneJudge {
         String figures = String.format("mean difference R %.3f, G %.3f, B %.3f levels; PSNR %.2f dB", mean[0],
                 mean[1], mean[2], difference.psnr());
         lines.add(figures);
-        Diagnosis diagnosis = new Diagnoser().diagnose(image, scene.scene());
-        // An entry whose model answers otherwise than their methods is neither a cause nor a candidate.
+        // An entry whose model answers otherwise than their methods is neither a cause nor a candidate,
+        // and is not rendered.
         Set<Variant> ruledOut = EnumSet.noneOf(Variant.class);
         Stream.of(Variant.values()).filter(v -> !probes.behaviour().allows(v)).forEach(ruledOut::add);
+        Set<Variant> considered = EnumSet.allOf(Variant.class);
+        considered.removeAll(ruledOut);
+        Diagnosis diagnosis = new Diagnoser().diagnose(image, scene.scene(), null, considered);
         List<Variant> matching = diagnosis.verdict() != Diagnosis.Verdict.EXPLAINED ? List.of()
                 : diagnosis.explaining().stream().map(Diagnosis.Candidate::variant).filter(v -> !ruledOut.contains(v))
                 .toList();
