@@ -83,9 +83,9 @@ final class BehaviourJudge {
         BehaviourInputs.RANDOM_INTERSECTIONS.forEach(call -> rays.add(new RayCase(call, answers.get(call.name()))));
         List<ShadeCase> shadings = new ArrayList<>();
         BehaviourInputs.ILLUMINATIONS.forEach(call -> shadings.add(new ShadeCase(call, answers.get(call.name()),
-                false)));
+                BehaviourInputs.Phong.FIXED)));
         BehaviourInputs.RANDOM_ILLUMINATIONS.forEach(call -> shadings.add(new ShadeCase(call,
-                answers.get(call.name()), answers.phongSet())));
+                answers.get(call.name()), answers.phong())));
         MethodBehaviour intersection = judge("intersectionWith", rays, Variant.Method.INTERSECTION_WITH,
                 AnswerFacts.ofHits(rays));
         intersection = new MethodBehaviour(intersection.method(), intersection.inputs(), intersection.difference(),
@@ -251,10 +251,11 @@ final class BehaviourJudge {
     }
 
     /** A point to shade and what illuminate gave. */
-    record ShadeCase(BehaviourInputs.IlluminationCall call, Answer answer, boolean phongSet) implements Case {
+    record ShadeCase(BehaviourInputs.IlluminationCall call, Answer answer, BehaviourInputs.Phong phong)
+            implements Case {
 
         Vector3 model(Set<Variant> variants) {
-            boolean set = phongSet;
+            boolean set = phong == BehaviourInputs.Phong.SET;
             BehaviourInputs.LightInput light = call.light();
             BehaviourInputs.Material material = call.sphere().material();
             return Models.illuminate(new Models.Shading(v(call.ambient()),
@@ -289,7 +290,7 @@ final class BehaviourJudge {
                 yours = Words.colour(answer, true);
                 ours = Words.colour(model(OURS), true);
             }
-            return "for " + Words.shading(call, phongSet) + ", yours returns " + yours + "; ours returns " + ours;
+            return "for " + Words.shading(call, phong) + ", yours returns " + yours + "; ours returns " + ours;
         }
     }
 

@@ -24,10 +24,10 @@ final class Words {
                 + " and the sphere of centre C = " + vector(call.centre()) + " and radius r = " + number(call.radius());
     }
 
-    static String shading(BehaviourInputs.IlluminationCall call, boolean phongSet) {
+    static String shading(BehaviourInputs.IlluminationCall call, BehaviourInputs.Phong phong) {
         BehaviourInputs.LightInput light = call.light();
         BehaviourInputs.Material material = call.sphere().material();
-        boolean course = !phongSet || material.kD() == BehaviourInputs.COURSE_KD
+        boolean course = phong == BehaviourInputs.Phong.FIXED || material.kD() == BehaviourInputs.COURSE_KD
                 && material.kS() == BehaviourInputs.COURSE_KS
                 && material.n() == BehaviourInputs.COURSE_N;
         String coefficients = course ? "" : ", k_d = " + number(material.kD()) + ", k_s = " + number(material.kS())
