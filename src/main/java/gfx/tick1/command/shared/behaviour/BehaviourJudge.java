@@ -239,14 +239,8 @@ final class BehaviourJudge {
 
         @Override
         public String counterexample() {
-            String yours = Words.hit(answer, false);
-            String ours = Words.hit(model(OURS), false);
-            if (yours.equals(ours)) {
-                // Apart beyond the seventh digit (float arithmetic, say): every digit, so the two differ.
-                yours = Words.hit(answer, true);
-                ours = Words.hit(model(OURS), true);
-            }
-            return "for " + Words.ray(call) + ", yours returns " + yours + "; ours returns " + ours;
+            return "for " + Words.ray(call) + ", " + Words.yoursAndOurs(digits -> Words.hit(answer, digits),
+                    digits -> Words.hit(model(OURS), digits));
         }
     }
 
@@ -259,9 +253,11 @@ final class BehaviourJudge {
             BehaviourInputs.LightInput light = call.light();
             BehaviourInputs.Material material = call.sphere().material();
             return Models.illuminate(new Models.Shading(v(call.ambient()),
-                    new PointLight(v(light.position()), v(light.colour()), light.intensity()), v(material.colour()),
-                    set ? material.kD() : BehaviourInputs.COURSE_KD, set ? material.kS() : BehaviourInputs.COURSE_KS,
-                    set ? material.n() : BehaviourInputs.COURSE_N, v(call.point()), v(call.normal())), variants);
+                    new PointLight(v(light.position()), v(light.colour()), light.intensity()),
+                    new Models.Surface(v(material.colour()), set ? material.kD() : BehaviourInputs.COURSE_KD,
+                            set ? material.kS() : BehaviourInputs.COURSE_KS,
+                            set ? material.n() : BehaviourInputs.COURSE_N),
+                    v(call.point()), v(call.normal())), variants);
         }
 
         @Override
@@ -283,14 +279,8 @@ final class BehaviourJudge {
 
         @Override
         public String counterexample() {
-            String yours = Words.colour(answer, false);
-            String ours = Words.colour(model(OURS), false);
-            if (yours.equals(ours)) {
-                // Apart beyond the seventh digit (float arithmetic, say): every digit, so the two differ.
-                yours = Words.colour(answer, true);
-                ours = Words.colour(model(OURS), true);
-            }
-            return "for " + Words.shading(call, phong) + ", yours returns " + yours + "; ours returns " + ours;
+            return "for " + Words.shading(call, phong) + ", " + Words.yoursAndOurs(
+                    digits -> Words.colour(answer, digits), digits -> Words.colour(model(OURS), digits));
         }
     }
 
