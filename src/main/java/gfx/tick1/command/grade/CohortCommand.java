@@ -215,7 +215,7 @@ final class CohortCommand {
             writeGrades(results, done.results().stream().map(StudentResult::submission)
                     .map(Submissions::namedByMoodle).toList(), report);
             CohortReport.write(report, results,
-                    result -> Worksheet.grade(CohortOutputs.grade(result, maxGrade, cohortOptions.perScene())),
+                    result -> Worksheet.grade(cohortOptions.marking().grade(result, maxGrade)),
                     cohortOptions.lookalikes() ? Lookalikes.find(results) : null)
                     .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
         } catch (CohortInputException e) {
@@ -234,7 +234,7 @@ final class CohortCommand {
         unwritten.forEach((folder, why) -> err.println("tick1 grade: " + printable(folder) + ": its feedback "
                 + "cannot be written in " + report + " (" + why + "): its grade is in grades.csv, but its feedback "
                 + "is not in feedback.zip"));
-        return CohortEnding.status(done.ungraded(), !unwritten.isEmpty());
+        return CohortEnding.status(done.ungraded(), unwritten.keySet());
     }
 
     /**
@@ -279,7 +279,7 @@ final class CohortCommand {
         for (int i = 0; i < results.size(); i++) {
             if (moodleNamed.get(i)) {
                 marks.add(Worksheet.Mark.of(results.get(i),
-                        CohortOutputs.grade(results.get(i), maxGrade, cohortOptions.perScene())));
+                        cohortOptions.marking().grade(results.get(i), maxGrade)));
             }
         }
         if (worksheet == null) {

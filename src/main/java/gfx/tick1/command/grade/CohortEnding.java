@@ -5,6 +5,7 @@ import gfx.tick1.command.shared.grader.cohort.Ungraded;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.engine.io.Counted;
 import java.util.List;
+import java.util.Set;
 
 /**
  * How a cohort's grade ends: the closing line that counts its results, and the exit status that
@@ -36,17 +37,17 @@ record CohortEnding(long total, long stored, long problems, long passed, long no
     }
 
     /**
-     * The exit status of a report written whole but for {@code ungraded} and, when {@code unwritten}, some
-     * feedback: an error of tick1's first (it asks for a report), then the grader's own shortage (it asks for
-     * room and the same command again), then the report's folder.
+     * The exit status of a report written whole but for {@code ungraded} and the feedback of the students
+     * {@code unwritten}: an error of tick1's first (it asks for a report), then the grader's own shortage (it
+     * asks for room and the same command again), then the report's folder.
      */
-    static int status(List<Ungraded> ungraded, boolean unwritten) {
+    static int status(List<Ungraded> ungraded, Set<String> unwritten) {
         if (ungraded.stream().anyMatch(one -> one.cause() == Ungraded.Cause.TICK1_ERROR)) {
             return ExitStatuses.EXIT_INTERNAL;
         }
         if (ungraded.stream().anyMatch(one -> one.cause() == Ungraded.Cause.GRADER_SHORT)) {
             return GradeCommand.EXIT_NOT_GRADED;
         }
-        return ungraded.isEmpty() && !unwritten ? GradeCommand.EXIT_PASS : GradeCommand.EXIT_CANNOT_WRITE;
+        return ungraded.isEmpty() && unwritten.isEmpty() ? GradeCommand.EXIT_PASS : GradeCommand.EXIT_CANNOT_WRITE;
     }
 }

@@ -1,5 +1,6 @@
 package gfx.tick1.command.grade;
 
+import gfx.tick1.command.shared.grader.report.Marking;
 import java.nio.file.Path;
 import picocli.CommandLine.Option;
 
@@ -60,8 +61,9 @@ final class CohortOptions {
         return maxGrade;
     }
 
-    boolean perScene() {
-        return perScene;
+    /** How a result is marked: pass or fail, or with --per-scene by the scenes passed. */
+    Marking marking() {
+        return perScene ? Marking.PER_SCENE : Marking.PASS;
     }
 
     /** Whether to look for look-alikes in the cohort (on unless --no-lookalikes). */

@@ -65,13 +65,7 @@ public final class PngOutput {
         write(target, out -> out.write(png));
     }
 
-    /** What goes into the file. */
-    @FunctionalInterface
-    private interface Contents {
-        void writeTo(OutputStream out) throws IOException;
-    }
-
-    private static void write(Path target, Contents contents) throws IOException {
+    private static void write(Path target, AtomicFile.Content contents) throws IOException {
         Path given = target.toAbsolutePath();
         if (Files.isDirectory(given)) {
             throw new IOException("is a directory, expected a file name for the PNG");
@@ -95,7 +89,7 @@ public final class PngOutput {
         if (!Files.isDirectory(directory)) {
             throw new IOException(directory + " is not a directory");
         }
-        AtomicFile.write(absolute, contents::writeTo, e -> cannotCreate(directory, e));
+        AtomicFile.write(absolute, contents, e -> cannotCreate(directory, e));
     }
 
     /** Most failures to create a file name only the file; say the reason where one is known. */

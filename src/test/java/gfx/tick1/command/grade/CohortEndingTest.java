@@ -12,6 +12,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
+import java.util.Set;
 import org.junit.jupiter.api.Test;
 
 /** How a cohort's grade ends: the closing line's counts, and the exit status its students not graded give. */
@@ -41,7 +42,7 @@ class CohortEndingTest {
         List<Ungraded> ungraded = List.of(new Ungraded("S_3_assignsubmission_file", "the grader's temporary folder "
                 + "is full", Ungraded.Cause.GRADER_SHORT));
 
-        assertThat(CohortEnding.status(ungraded, false)).isEqualTo(GradeCommand.EXIT_NOT_GRADED)
+        assertThat(CohortEnding.status(ungraded, Set.of())).isEqualTo(GradeCommand.EXIT_NOT_GRADED)
                 .isNotEqualTo(ExitStatuses.EXIT_INTERNAL);
     }
 
@@ -50,7 +51,7 @@ class CohortEndingTest {
         List<Ungraded> ungraded = List.of(new Ungraded("a", "the grader's memory", Ungraded.Cause.GRADER_SHORT),
                 new Ungraded("b", "an error in tick1", Ungraded.Cause.TICK1_ERROR));
 
-        assertThat(CohortEnding.status(ungraded, false)).isEqualTo(ExitStatuses.EXIT_INTERNAL);
+        assertThat(CohortEnding.status(ungraded, Set.of())).isEqualTo(ExitStatuses.EXIT_INTERNAL);
     }
 
     @Test

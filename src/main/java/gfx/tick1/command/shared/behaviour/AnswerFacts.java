@@ -45,10 +45,10 @@ final class AnswerFacts {
         List<String> facts = new ArrayList<>();
         simplest(cases, c -> rgb(c) != null && (Double.isNaN(rgb(c)[0]) || Double.isNaN(rgb(c)[1])
                 || Double.isNaN(rgb(c)[2]))).ifPresent(c -> facts.add("the colour you return is NaN for "
-                        + Words.shading(c.call(), c.phongSet())));
+                        + Words.shading(c.call(), c.phong())));
         simplest(cases, c -> rgb(c) != null && (rgb(c)[0] < 0 || rgb(c)[1] < 0 || rgb(c)[2] < 0)).ifPresent(c ->
                 facts.add("the colour you return has a negative channel, " + Words.vector(rgb(c)) + ", for "
-                        + Words.shading(c.call(), c.phongSet())));
+                        + Words.shading(c.call(), c.phong())));
         return facts;
     }
 

@@ -43,7 +43,7 @@ final class Answers {
 
     private final Map<String, Answer> answers = new HashMap<>();
     /** Whether the random shadings' k_d, k_s and n were set on the student's spheres (else the course's). */
-    private Boolean phongSet;
+    private BehaviourInputs.Phong phong;
 
     private Answers() {
     }
@@ -76,10 +76,13 @@ final class Answers {
         }
         log.lines().limit(maxLines).forEach(line -> {
             String[] words = line.split(" ", 12);
-            if (words.length == 2 && words[0].equals("phong") && parsed.phongSet == null
-                    && (words[1].equals("set") || words[1].equals("fixed"))) {
-                parsed.phongSet = words[1].equals("set");
-                return;
+            if (words.length == 2 && words[0].equals("phong") && parsed.phong == null) {
+                for (BehaviourInputs.Phong phong : BehaviourInputs.Phong.values()) {
+                    if (words[1].equals(phong.word())) {
+                        parsed.phong = phong;
+                        return;
+                    }
+                }
             }
             if (names.contains(words[0]) && !parsed.answers.containsKey(words[0])) {
                 Answer answer = answer(words);
@@ -137,8 +140,8 @@ final class Answers {
     }
 
     /** Whether the random shadings' spheres had their k_d, k_s and n set (else they kept the course's). */
-    boolean phongSet() {
-        return Boolean.TRUE.equals(phongSet);
+    BehaviourInputs.Phong phong() {
+        return phong == null ? BehaviourInputs.Phong.FIXED : phong;
     }
 
     /** The answer to the call {@code name}; "missing" when none was logged. */

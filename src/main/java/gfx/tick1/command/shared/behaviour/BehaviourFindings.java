@@ -106,12 +106,7 @@ public final class BehaviourFindings {
         return lines;
     }
 
-    /** The line for a wrong image when no method differs: what the comparison did find. */
-    public String noFindingLine() {
-        return "behaviour: " + noFinding();
-    }
-
-    /** What the comparison did find when no method differs, as {@link #noFindingLine} words it. */
+    /** What the comparison did find when no method differs. */
     public String noFinding() {
         return behaviour.ran() ? "your intersectionWith and illuminate behave as ours on "
                 + Counted.of(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(),

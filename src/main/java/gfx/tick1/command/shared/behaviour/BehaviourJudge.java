@@ -95,9 +95,9 @@ final class BehaviourJudge {
         BehaviourInputs.RANDOM_INTERSECTIONS.forEach(call -> rays.add(new RayCase(call, answers.get(call.name()))));
         List<ShadeCase> shadings = new ArrayList<>();
         BehaviourInputs.ILLUMINATIONS.forEach(call -> shadings.add(new ShadeCase(call, answers.get(call.name()),
-                false)));
+                BehaviourInputs.Phong.FIXED)));
         BehaviourInputs.RANDOM_ILLUMINATIONS.forEach(call -> shadings.add(new ShadeCase(call,
-                answers.get(call.name()), answers.phongSet())));
+                answers.get(call.name()), answers.phong())));
         MethodBehaviour intersection = judge("intersectionWith", rays, Variant.Method.INTERSECTION_WITH,
                 AnswerFacts.ofHits(rays));
         intersection = new MethodBehaviour(intersection.method(), intersection.inputs(), intersection.difference(),
@@ -260,28 +260,25 @@ final class BehaviourJudge {
 
         @Override
         public String counterexample() {
-            String yours = Words.hit(answer, false);
-            String ours = Words.hit(model(OURS), false);
-            if (yours.equals(ours)) {
-                // Apart beyond the seventh digit (float arithmetic, say): every digit, so the two differ.
-                yours = Words.hit(answer, true);
-                ours = Words.hit(model(OURS), true);
-            }
-            return "for " + Words.ray(call) + ", yours returns " + yours + "; ours returns " + ours;
+            return "for " + Words.ray(call) + ", " + Words.yoursAndOurs(digits -> Words.hit(answer, digits),
+                    digits -> Words.hit(model(OURS), digits));
         }
     }
 
     /** A point to shade and what illuminate gave. */
-    record ShadeCase(BehaviourInputs.IlluminationCall call, Answer answer, boolean phongSet) implements Case {
+    record ShadeCase(BehaviourInputs.IlluminationCall call, Answer answer, BehaviourInputs.Phong phong)
+            implements Case {
 
         Vector3 model(Set<Variant> variants) {
-            boolean set = phongSet;
+            boolean set = phong == BehaviourInputs.Phong.SET;
             BehaviourInputs.LightInput light = call.light();
             BehaviourInputs.Material material = call.sphere().material();
             return Models.illuminate(new Models.Shading(v(call.ambient()),
-                    new PointLight(v(light.position()), v(light.colour()), light.intensity()), v(material.colour()),
-                    set ? material.kD() : BehaviourInputs.COURSE_KD, set ? material.kS() : BehaviourInputs.COURSE_KS,
-                    set ? material.n() : BehaviourInputs.COURSE_N, v(call.point()), v(call.normal())), variants);
+                    new PointLight(v(light.position()), v(light.colour()), light.intensity()),
+                    new Models.Surface(v(material.colour()), set ? material.kD() : BehaviourInputs.COURSE_KD,
+                            set ? material.kS() : BehaviourInputs.COURSE_KS,
+                            set ? material.n() : BehaviourInputs.COURSE_N),
+                    v(call.point()), v(call.normal())), variants);
         }
 
         @Override
@@ -314,14 +311,8 @@ final class BehaviourJudge {
 
         @Override
         public String counterexample() {
-            String yours = Words.colour(answer, false);
-            String ours = Words.colour(model(OURS), false);
-            if (yours.equals(ours)) {
-                // Apart beyond the seventh digit (float arithmetic, say): every digit, so the two differ.
-                yours = Words.colour(answer, true);
-                ours = Words.colour(model(OURS), true);
-            }
-            return "for " + Words.shading(call, phongSet) + ", yours returns " + yours + "; ours returns " + ours;
+            return "for " + Words.shading(call, phong) + ", " + Words.yoursAndOurs(
+                    digits -> Words.colour(answer, digits), digits -> Words.colour(model(OURS), digits));
         }
     }
 

@@ -84,10 +84,10 @@ public final class Models {
         private final double kD, kS, n;
 
         ShadedSphere(Shading at) {
-            super(at.point().subtract(at.normal()), 1, at.colour());
-            this.kD = at.kD();
-            this.kS = at.kS();
-            this.n = at.n();
+            super(at.point().subtract(at.normal()), 1, at.surface().colour());
+            this.kD = at.surface().kD();
+            this.kS = at.surface().kS();
+            this.n = at.surface().n();
         }
 
         @Override
@@ -110,12 +110,15 @@ public final class Models {
     public record Hit(double distance, Vector3 point, Vector3 normal) {
     }
 
+    /** A sphere's surface as illuminate reads it: its colour C_diff and Phong coefficients k_d, k_s and n. */
+    public record Surface(Vector3 colour, double kD, double kS, double n) {
+    }
+
     /**
-     * What illuminate is given: the scene's ambient light I_a and point light, the sphere's colour
-     * C_diff and Phong coefficients, the point P and the normal N.
+     * What illuminate is given: the scene's ambient light I_a and point light, the sphere's surface,
+     * the point P and the normal N.
      */
-    public record Shading(Vector3 ambientLight, PointLight light, Vector3 colour, double kD, double kS, double n,
-            Vector3 point, Vector3 normal) {
+    public record Shading(Vector3 ambientLight, PointLight light, Surface surface, Vector3 point, Vector3 normal) {
     }
 
     /**
@@ -183,7 +186,7 @@ public final class Models {
             return reference(at);
         }
         Vector3 I_a = at.ambientLight();
-        Vector3 C_diff = at.colour();
+        Vector3 C_diff = at.surface().colour();
         if (variants.contains(FLAT_COLOUR)) {
             return C_diff;
         }
@@ -199,9 +202,9 @@ public final class Models {
         Vector3 C_spec = variants.contains(HIGHLIGHT_COLOURED) ? C_diff : new Vector3(1);
 
         boolean swapped = variants.contains(KD_SWAPPED_WITH_KS);
-        double k_d = swapped ? at.kS() : at.kD();
-        double k_s = swapped ? at.kD() : at.kS();
-        double n = at.n();
+        double k_d = swapped ? at.surface().kS() : at.surface().kD();
+        double k_s = swapped ? at.surface().kD() : at.surface().kS();
+        double n = at.surface().n();
 
         Vector3 toLight = variants.contains(L_FROM_THE_LIGHT) ? P.subtract(light.getPosition())
                 : light.getPosition().subtract(P);

@@ -81,7 +81,8 @@ public final class PixelCounterexample {
                 }
             }
             if (pixel.shading() != null) {
-                ShadeCase asked = new ShadeCase(pixel.shading(), answers.get(pixel.shading().name()), false);
+                ShadeCase asked = new ShadeCase(pixel.shading(), answers.get(pixel.shading().name()),
+                        BehaviourInputs.Phong.FIXED);
                 if (!asked.isOurs()) {
                     return new Found(true, "your illuminate differs from ours " + at + asked.counterexample());
                 }

@@ -8,6 +8,7 @@ import gfx.tick1.command.shared.grader.harness.BehaviourInputs;
 import gfx.tick1.engine.math.Vector3;
 import java.math.BigDecimal;
 import java.math.MathContext;
+import java.util.function.Function;
 
 /**
  * The inputs and answers of the behaviour comparison in words, with numbers as short as they
@@ -16,7 +17,19 @@ import java.math.MathContext;
  */
 final class Words {
 
+    /** How a long number is written: in seven significant digits, or in every digit that reads back as it. */
+    enum Digits { SEVEN, EVERY }
+
     private Words() {
+    }
+
+    /**
+     * "yours returns A; ours returns B", in seven digits, or in every digit where seven would write the two the
+     * same: they are apart beyond the seventh (float arithmetic, say), and the reader must see them differ.
+     */
+    static String yoursAndOurs(Function<Digits, String> yours, Function<Digits, String> ours) {
+        Digits digits = yours.apply(Digits.SEVEN).equals(ours.apply(Digits.SEVEN)) ? Digits.EVERY : Digits.SEVEN;
+        return "yours returns " + yours.apply(digits) + "; ours returns " + ours.apply(digits);
     }
 
     static String ray(BehaviourInputs.IntersectionCall call) {
@@ -24,10 +37,10 @@ final class Words {
                 + " and the sphere of centre C = " + vector(call.centre()) + " and radius r = " + number(call.radius());
     }
 
-    static String shading(BehaviourInputs.IlluminationCall call, boolean phongSet) {
+    static String shading(BehaviourInputs.IlluminationCall call, BehaviourInputs.Phong phong) {
         BehaviourInputs.LightInput light = call.light();
         BehaviourInputs.Material material = call.sphere().material();
-        boolean course = !phongSet || material.kD() == BehaviourInputs.COURSE_KD
+        boolean course = phong == BehaviourInputs.Phong.FIXED || material.kD() == BehaviourInputs.COURSE_KD
                 && material.kS() == BehaviourInputs.COURSE_KS
                 && material.n() == BehaviourInputs.COURSE_N;
         String coefficients = course ? "" : ", k_d = " + number(material.kD()) + ", k_s = " + number(material.kS())
@@ -40,43 +53,43 @@ final class Words {
 
     /** A hit, no hit, or how the call gave no answer. */
     static String hit(Answer answer) {
-        return hit(answer, false);
+        return hit(answer, Digits.SEVEN);
     }
 
-    /** As {@link #hit(Answer)}; with {@code everyDigit}, each number as the shortest decimal that reads back as it. */
-    static String hit(Answer answer, boolean everyDigit) {
+    /** As {@link #hit(Answer)}, each number in {@code digits}. */
+    static String hit(Answer answer, Digits digits) {
         if (answer instanceof Hit hit) {
             return !hit.sameSphere() ? "a hit that names another sphere than this one"
-                    : "a hit at s = " + number(hit.distance(), everyDigit) + ", P = "
-                    + vector(hit.point(), everyDigit) + ", N = " + vector(hit.normal(), everyDigit);
+                    : "a hit at s = " + number(hit.distance(), digits) + ", P = "
+                    + vector(hit.point(), digits) + ", N = " + vector(hit.normal(), digits);
         }
         return answer instanceof Answers.None ? "no hit" : failure(answer);
     }
 
     static String hit(Models.Hit hit) {
-        return hit(hit, false);
+        return hit(hit, Digits.SEVEN);
     }
 
-    static String hit(Models.Hit hit, boolean everyDigit) {
-        return hit == null ? "no hit" : "a hit at s = " + number(hit.distance(), everyDigit) + ", P = "
-                + vector(new double[] {hit.point().x, hit.point().y, hit.point().z}, everyDigit) + ", N = "
-                + vector(new double[] {hit.normal().x, hit.normal().y, hit.normal().z}, everyDigit);
+    static String hit(Models.Hit hit, Digits digits) {
+        return hit == null ? "no hit" : "a hit at s = " + number(hit.distance(), digits) + ", P = "
+                + vector(new double[] {hit.point().x, hit.point().y, hit.point().z}, digits) + ", N = "
+                + vector(new double[] {hit.normal().x, hit.normal().y, hit.normal().z}, digits);
     }
 
     static String colour(Answer answer) {
-        return colour(answer, false);
+        return colour(answer, Digits.SEVEN);
     }
 
-    static String colour(Answer answer, boolean everyDigit) {
-        return answer instanceof Colour colour ? "the colour " + vector(colour.rgb(), everyDigit) : failure(answer);
+    static String colour(Answer answer, Digits digits) {
+        return answer instanceof Colour colour ? "the colour " + vector(colour.rgb(), digits) : failure(answer);
     }
 
     static String colour(Vector3 colour) {
-        return colour(colour, false);
+        return colour(colour, Digits.SEVEN);
     }
 
-    static String colour(Vector3 colour, boolean everyDigit) {
-        return "the colour " + vector(new double[] {colour.x, colour.y, colour.z}, everyDigit);
+    static String colour(Vector3 colour, Digits digits) {
+        return "the colour " + vector(new double[] {colour.x, colour.y, colour.z}, digits);
     }
 
     private static String failure(Answer answer) {
@@ -103,21 +116,20 @@ final class Words {
     }
 
     static String vector(double[] v) {
-        return vector(v, false);
+        return vector(v, Digits.SEVEN);
     }
 
-    private static String vector(double[] v, boolean everyDigit) {
-        return "(" + number(v[0], everyDigit) + ", " + number(v[1], everyDigit) + ", " + number(v[2], everyDigit)
-                + ")";
+    private static String vector(double[] v, Digits digits) {
+        return "(" + number(v[0], digits) + ", " + number(v[1], digits) + ", " + number(v[2], digits) + ")";
     }
 
     /** The shortest decimal that reads back as {@code x}, or 7 significant digits for a long one. */
     static String number(double x) {
-        return number(x, false);
+        return number(x, Digits.SEVEN);
     }
 
-    /** As {@link #number(double)}; with {@code everyDigit}, always the shortest decimal that reads back as x. */
-    private static String number(double x, boolean everyDigit) {
+    /** As {@link #number(double)}; with {@link Digits#EVERY}, always the shortest decimal that reads back as x. */
+    private static String number(double x, Digits digits) {
         if (Double.isNaN(x) || Double.isInfinite(x)) {
             return Double.toString(x);
         }
@@ -125,7 +137,7 @@ final class Words {
             return Long.toString((long) x);
         }
         String shortest = BigDecimal.valueOf(x).stripTrailingZeros().toPlainString();
-        if (everyDigit || shortest.length() <= 10) {
+        if (digits == Digits.EVERY || shortest.length() <= 10) {
             return shortest;
         }
         return new BigDecimal(x).round(new MathContext(7)).stripTrailingZeros().toPlainString();

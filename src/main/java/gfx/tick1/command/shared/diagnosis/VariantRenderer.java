@@ -108,7 +108,7 @@ public final class VariantRenderer {
         }
         Sphere object = hit.getObjectHit();
         return Models.illuminate(new Models.Shading(scene.getAmbientLighting(), scene.getPointLight(),
-                object.getColour(), object.getPhong_kD(), object.getPhong_kS(), object.getPhong_n(),
+                new Models.Surface(object.getColour(), object.getPhong_kD(), object.getPhong_kS(), object.getPhong_n()),
                 hit.getLocation(), hit.getNormal()), model);
     }
 

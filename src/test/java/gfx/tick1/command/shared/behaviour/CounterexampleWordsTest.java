@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.behaviour;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.command.shared.grader.harness.BehaviourInputs;
+import gfx.tick1.command.shared.grader.harness.BehaviourInputs.Phong;
 import gfx.tick1.engine.math.Vector3;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -19,12 +20,13 @@ class CounterexampleWordsTest {
     @Test
     void answersApartOnlyBeyondTheSeventhDigitArePrintedWithEveryDigit() {
         BehaviourInputs.IlluminationCall call = BehaviourInputs.ILLUMINATIONS.stream()
-                .filter(each -> new BehaviourJudge.ShadeCase(each, null, false).model(BehaviourJudge.OURS).x > 0.1)
+                .filter(each -> new BehaviourJudge.ShadeCase(each, null, Phong.FIXED).model(BehaviourJudge.OURS).x
+                        > 0.1)
                 .findFirst().orElseThrow();
-        Vector3 reference = new BehaviourJudge.ShadeCase(call, null, false).model(BehaviourJudge.OURS);
+        Vector3 reference = new BehaviourJudge.ShadeCase(call, null, Phong.FIXED).model(BehaviourJudge.OURS);
         // 1e-8 off in one channel, as float arithmetic leaves it: past the tolerance, within seven digits.
         double[] floatSlip = {Math.nextUp(reference.x + 1e-8), reference.y, reference.z};
-        String words = new BehaviourJudge.ShadeCase(call, new Answers.Colour(floatSlip), false).counterexample();
+        String words = new BehaviourJudge.ShadeCase(call, new Answers.Colour(floatSlip), Phong.FIXED).counterexample();
 
         String yours = words.substring(words.indexOf(", yours returns ") + ", yours returns ".length(),
                 words.indexOf("; ours returns "));

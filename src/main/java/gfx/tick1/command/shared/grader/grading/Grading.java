@@ -164,12 +164,7 @@ public final class Grading {
                 return existing.join();
             } catch (CompletionException e) {
                 // Rendered ahead and failed there: the failure as the renderer threw it.
-                if (e.getCause() instanceof RuntimeException cause) {
-                    throw cause;
-                }
-                if (e.getCause() instanceof Error cause) {
-                    throw cause;
-                }
+                Causes.throwIfUnchecked(e.getCause());
                 throw e;
             }
         }

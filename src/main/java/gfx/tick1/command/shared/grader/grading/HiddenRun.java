@@ -68,10 +68,9 @@ abstract class HiddenRun {
                     if (e.getCause() instanceof InterruptedException cause) {
                         throw cause;
                     }
-                    if (e.getCause() instanceof RuntimeException cause) {
-                        throw cause;
-                    }
-                    throw (Error) e.getCause();
+                    Causes.throwIfUnchecked(e.getCause());
+                    throw new IllegalStateException("the hidden run threw a checked exception it does not declare",
+                            e.getCause());
                 }
             }
 

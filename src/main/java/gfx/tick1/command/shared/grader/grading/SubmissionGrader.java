@@ -124,8 +124,4 @@ public final class SubmissionGrader {
         explainer.lastLinesPrinted(judged, run.printed());
         return explainer.verdict(judged, probes);
     }
-
-    public static String count(int n, String noun) {
-        return n + " " + noun + (n == 1 ? "" : "s");
-    }
 }

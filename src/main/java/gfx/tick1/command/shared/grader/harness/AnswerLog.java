@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.grader.harness;
 
+import gfx.tick1.command.shared.grader.harness.BehaviourInputs.Phong;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.net.URISyntaxException;
@@ -64,7 +65,7 @@ public final class AnswerLog {
             if (chosen != null) {
                 batch(lines, chosen.intersections(), call -> intersect(call));
                 if (api.hasIlluminate()) {
-                    batch(lines, chosen.illuminations(), call -> illuminate(call, false));
+                    batch(lines, chosen.illuminations(), call -> illuminate(call, Phong.FIXED));
                 }
                 return;
             }
@@ -72,12 +73,13 @@ public final class AnswerLog {
                 lines.write(call.name(), Bounded.call(() -> intersect(call), CALL_MILLIS));
             }
             for (BehaviourInputs.IlluminationCall call : BehaviourInputs.ILLUMINATIONS) {
-                lines.write(call.name(), api.hasIlluminate() ? Bounded.call(() -> illuminate(call, false), CALL_MILLIS)
+                lines.write(call.name(), api.hasIlluminate()
+                        ? Bounded.call(() -> illuminate(call, Phong.FIXED), CALL_MILLIS)
                         : new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
             }
             batch(lines, BehaviourInputs.RANDOM_INTERSECTIONS, call -> intersect(call));
-            boolean phong = api.hasPhongFields();
-            lines.write("phong", new Bounded.Outcome<>(Bounded.Ending.RETURNED, phong ? "set" : "fixed"));
+            Phong phong = api.hasPhongFields() ? Phong.SET : Phong.FIXED;
+            lines.write("phong", new Bounded.Outcome<>(Bounded.Ending.RETURNED, phong.word()));
             if (api.hasIlluminate()) {
                 batch(lines, BehaviourInputs.RANDOM_ILLUMINATIONS, call -> illuminate(call, phong));
             } else {
@@ -160,13 +162,13 @@ public final class AnswerLog {
         return line.toString();
     }
 
-    private String illuminate(BehaviourInputs.IlluminationCall call, boolean setPhong)
+    private String illuminate(BehaviourInputs.IlluminationCall call, Phong phong)
             throws ReflectiveOperationException {
         BehaviourInputs.LightInput light = call.light();
         BehaviourInputs.Material material = call.sphere().material();
         Object scene = api.scene(call.ambient(), light.position(), light.colour(), light.intensity());
         Object sphere = api.sphere(call.sphere().centre(), call.sphere().radius(), material.colour());
-        if (setPhong) {
+        if (phong == Phong.SET) {
             api.setPhong(sphere, material.kD(), material.kS(), material.n());
         }
         Object colour = api.illuminate(api.renderer(1, 1), scene, sphere, api.vector(call.point()),

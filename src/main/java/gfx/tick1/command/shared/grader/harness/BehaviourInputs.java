@@ -41,6 +41,18 @@ public final class BehaviourInputs {
     public record SphereInput(double[] centre, double radius, Material material) {
     }
 
+    /**
+     * Whether the student's spheres take the Phong coefficients k_d, k_s and n they are given (the Sphere has
+     * setPhong) or keep the course's; the word names it in the answer log.
+     */
+    public enum Phong {
+        SET, FIXED;
+
+        public String word() {
+            return name().toLowerCase(java.util.Locale.ROOT);
+        }
+    }
+
     /** A sphere's material: its colour C_diff and its Phong coefficients k_d, k_s and n. */
     public record Material(double[] colour, double kD, double kS, double n) {
 

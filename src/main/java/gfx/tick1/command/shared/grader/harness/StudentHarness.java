@@ -78,12 +78,15 @@ public final class StudentHarness {
     public static final List<Class<?>> CLASSES = List.of(StudentHarness.class, StudentCompiler.class,
             StarterApi.class, BehaviourInputs.class, AnswerLog.class, SampleTrace.class, Bounded.class);
 
+    /** Whether {@code render} calls the two methods on fixed inputs after the scenes ({@link #PROBES}). */
+    private enum Probes { ASKED, NONE }
+
     private StudentHarness() {
     }
 
     public static void main(String[] arguments) throws Exception {
-        boolean probes = arguments.length > 1 && arguments[1].equals(PROBES);
-        String[] args = probes ? dropSecond(arguments) : arguments;
+        Probes probes = arguments.length > 1 && arguments[1].equals(PROBES) ? Probes.ASKED : Probes.NONE;
+        String[] args = probes == Probes.ASKED ? dropSecond(arguments) : arguments;
         if (args[0].equals(COMPILE_SERVER)) {
             serveCompiles(Path.of(args[1]));
             return;
@@ -150,7 +153,7 @@ public final class StudentHarness {
     }
 
     private static void render(Path classes, Path output, int width, int height, List<String> scenes,
-            boolean probes) throws IOException {
+            Probes probes) throws IOException {
         Path progress = output.resolve(PROGRESS_FILE);
         try (URLClassLoader student = new URLClassLoader(new URL[] {classes.toUri().toURL()},
                 ClassLoader.getPlatformClassLoader())) {
@@ -165,7 +168,7 @@ public final class StudentHarness {
                 }
                 log(progress, "end " + index);
             }
-            if (probes) {
+            if (probes == Probes.ASKED) {
                 AnswerLog.write(student, output.resolve(PROBES_FILE));
             }
         }

@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.lookalike;
 
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.ToIntFunction;
 
 /**
  * Two sides' code as compared, and the runs of tokens they share.
@@ -29,12 +30,20 @@ public record Comparison(ComparedCode codeA, ComparedCode codeB, List<GreedyStri
         return Lookalikes.similarity(codeA, codeB, tiles);
     }
 
-    /** For each token of a (true: b), whether it is in a shared run. */
-    public boolean[] shared(boolean ofA) {
-        boolean[] shared = new boolean[(ofA ? codeA : codeB).length()];
+    /** For each token of a, whether it is in a shared run. */
+    public boolean[] sharedOfA() {
+        return shared(codeA.length(), GreedyStringTiling.Tile::a);
+    }
+
+    /** For each token of b, whether it is in a shared run. */
+    public boolean[] sharedOfB() {
+        return shared(codeB.length(), GreedyStringTiling.Tile::b);
+    }
+
+    private boolean[] shared(int length, ToIntFunction<GreedyStringTiling.Tile> start) {
+        boolean[] shared = new boolean[length];
         for (GreedyStringTiling.Tile tile : tiles) {
-            int start = ofA ? tile.a() : tile.b();
-            Arrays.fill(shared, start, start + tile.length(), true);
+            Arrays.fill(shared, start.applyAsInt(tile), start.applyAsInt(tile) + tile.length(), true);
         }
         return shared;
     }

@@ -25,11 +25,6 @@ public record Lookalike(Submission a, Submission b, Reason reason, String why, C
         SAME_WRONG_ANSWERS
     }
 
-    /** Whether B is tick1's reference rather than a student. */
-    public boolean withReference() {
-        return b == null;
-    }
-
     /** The share of both sides' tokens that lie in shared runs: see {@link Comparison#similarity()}. */
     public double similarity() {
         return compared.similarity();

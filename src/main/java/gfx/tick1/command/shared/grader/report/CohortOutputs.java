@@ -46,23 +46,6 @@ public final class CohortOutputs {
     static final int MAX_NAME = 200;
 
     /**
-     * The mark for {@code result}: the pass mark, or with {@code perScene} the share of scenes passed of it; null
-     * (a blank Grade, which Moodle's upload skips) for a submission never run because of a problem with its files
-     * (a missing or misnamed file, two candidates, a refused zip, a participant id in two folders), and for one
-     * tick1 could not grade (its grader failed: a full disk, an error of tick1's own): staff look at those first,
-     * and a 0.00 would read as a verdict on code that was never tried.
-     */
-    public static Double grade(StudentResult result, double maxGrade, boolean perScene) {
-        if (result.submission().problem() != null || !result.graded()) {
-            return null;
-        }
-        if (perScene) {
-            return result.scenesTotal() == 0 ? 0 : maxGrade * result.scenesPassed() / result.scenesTotal();
-        }
-        return result.passed() ? maxGrade : 0;
-    }
-
-    /**
      * Copies each result's images (the files its scene results name) from the folder where its
      * result is stored, {@code images} (in the same order; null for none), into its feedback folder.
      *

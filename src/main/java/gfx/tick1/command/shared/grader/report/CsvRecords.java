@@ -170,10 +170,15 @@ final class CsvRecords {
         }
     }
 
-    /** A cell's text as RFC 4180 writes it: between quotes when asked, or when it holds a comma, quote or break. */
-    static String encode(String value, boolean quote) {
+    /** A cell's text as RFC 4180 writes it: between quotes when it holds a comma, quote or break. */
+    static String encode(String value) {
         boolean needed = value.indexOf(',') >= 0 || value.indexOf('"') >= 0 || value.indexOf('\r') >= 0
                 || value.indexOf('\n') >= 0;
-        return quote || needed ? "\"" + value.replace("\"", "\"\"") + "\"" : value;
+        return needed ? quoted(value) : value;
+    }
+
+    /** A cell's text between quotes, as RFC 4180 writes it. */
+    static String quoted(String value) {
+        return "\"" + value.replace("\"", "\"\"") + "\"";
     }
 }

@@ -54,8 +54,8 @@ final class LookalikePage {
                         + "declared. <mark>Marked</mark>: runs of at least ").append(Lookalikes.MINIMUM_MATCH)
                 .append(" tokens the two share. <span class=\"base\">Grey</span>: the starter code every student "
                         + "was given, which does not count.</p>\n<div class=\"sides\">\n");
-        side(out, pair.a(), pair.compared().codeA(), pair.compared().shared(true));
-        side(out, pair.b(), pair.compared().codeB(), pair.compared().shared(false));
+        side(out, pair.a(), pair.compared().codeA(), pair.compared().sharedOfA());
+        side(out, pair.b(), pair.compared().codeB(), pair.compared().sharedOfB());
         return out.append("</div>\n</body>\n</html>\n").toString();
     }
 

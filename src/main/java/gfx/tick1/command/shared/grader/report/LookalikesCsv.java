@@ -38,7 +38,7 @@ final class LookalikesCsv {
 
     private static void row(StringBuilder csv, List<String> cells) {
         for (int i = 0; i < cells.size(); i++) {
-            csv.append(i == 0 ? "" : ",").append(CsvRecords.encode(CellText.cell(cells.get(i)), false));
+            csv.append(i == 0 ? "" : ",").append(CsvRecords.encode(CellText.cell(cells.get(i))));
         }
         csv.append("\r\n");
     }

@@ -193,7 +193,7 @@ public final class Worksheet {
 
     private static void appendRow(StringBuilder csv, List<String> cells) {
         for (int i = 0; i < cells.size(); i++) {
-            csv.append(i == 0 ? "" : ",").append(CsvRecords.encode(cells.get(i), false));
+            csv.append(i == 0 ? "" : ",").append(CsvRecords.encode(cells.get(i)));
         }
         csv.append(CRLF);
     }
@@ -330,7 +330,8 @@ public final class Worksheet {
     /** Copies the bytes up to the cell, then the cell's new text; returns where copying resumes. */
     private int replace(ByteArrayOutputStream out, int copied, CsvRecords.Cell cell, String text) {
         out.write(bytes, copied, cell.start() - copied);
-        out.writeBytes(CsvRecords.encode(text, cell.quoted()).getBytes(StandardCharsets.UTF_8));
+        String encoded = cell.quoted() ? CsvRecords.quoted(text) : CsvRecords.encode(text);
+        out.writeBytes(encoded.getBytes(StandardCharsets.UTF_8));
         return cell.end();
     }
 

@@ -41,7 +41,8 @@ record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDis
         Path seccompFilter;
         Path hiddenRunFilter;
         try {
-            boolean processes = Boolean.getBoolean(PROCESSES_PROPERTY);
+            SeccompFilter.Processes processes = Boolean.getBoolean(PROCESSES_PROPERTY)
+                    ? SeccompFilter.Processes.ALLOWED : SeccompFilter.Processes.REFUSED;
             seccompFilter = SeccompFilter.writeForThisMachine(SceneBatch.PUBLIC, processes);
             hiddenRunFilter = SeccompFilter.writeForThisMachine(SceneBatch.HIDDEN, processes);
         } catch (IOException e) {

@@ -61,17 +61,20 @@ final class RunUsers {
         }
     }
 
+    /** What the run's user may do with a folder shared with it: read it, or own it and so write it. */
+    enum Access { READ, OWN }
+
     /**
-     * Makes {@code folder} readable (or, if {@code writable}, owned) by {@code uid}, the user the
+     * Makes {@code folder} readable (or, with {@link Access#OWN}, owned) by {@code uid}, the user the
      * student's code runs as, and no one else. Does nothing when that user is the grader (-1).
      */
-    static void share(int uid, Path folder, boolean writable) throws IOException {
+    static void share(int uid, Path folder, Access access) throws IOException {
         if (uid < 0) {
             return;
         }
         try (var files = Files.walk(folder)) {
             for (Path file : files.toList()) {
-                if (writable) {
+                if (access == Access.OWN) {
                     Files.setAttribute(file, "unix:uid", uid);
                 }
                 Files.setAttribute(file, "unix:gid", uid);

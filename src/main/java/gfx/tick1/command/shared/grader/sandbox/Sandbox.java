@@ -181,12 +181,12 @@ public final class Sandbox {
 
     /** Makes {@code folder} readable by the run's user alone ({@link RunUsers#share}). */
     public void share(Path folder) throws IOException {
-        RunUsers.share(uid, folder, false);
+        RunUsers.share(uid, folder, RunUsers.Access.READ);
     }
 
     /** Makes {@code folder} owned, so writable, by the run's user alone ({@link RunUsers#share}). */
     public void shareWritable(Path folder) throws IOException {
-        RunUsers.share(uid, folder, true);
+        RunUsers.share(uid, folder, RunUsers.Access.OWN);
     }
 
     /** What this sandbox holds the code to: results graded under other rules are graded again. */

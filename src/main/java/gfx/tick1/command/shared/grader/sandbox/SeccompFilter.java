@@ -92,14 +92,17 @@ final class SeccompFilter {
             new int[] {47, 5, 6, 7, 425, 426, 427, 463},
             new int[] {59, 198, 279, 447, 0, 194, 180, 282}, new Starting(220, 435, new int[] {434}));
 
+    /** Whether a run may start processes: a grade's never may (see the class's comment). */
+    enum Processes { REFUSED, ALLOWED }
+
     private SeccompFilter() {
     }
 
     /**
      * The filter for an architecture as Java names it ({@code os.arch}), for {@code batch}, one that
-     * lets a run start processes with {@code processes}; or null where tick1 has none.
+     * lets a run start {@code processes}; or null where tick1 has none.
      */
-    static byte[] forArchitecture(String name, SceneBatch batch, boolean processes) {
+    static byte[] forArchitecture(String name, SceneBatch batch, Processes processes) {
         return switch (name) {
             case "amd64", "x86_64" -> program(X86_64, batch, processes);
             case "aarch64" -> program(AARCH64, batch, processes);
@@ -111,7 +114,7 @@ final class SeccompFilter {
      * The filter as bwrap reads it: struct sock_filter ({@code u16 code; u8 jt, jf; u32 k}) in the
      * machine's byte order, both of whose architectures are little-endian.
      */
-    private static byte[] program(Architecture architecture, SceneBatch batch, boolean processes) {
+    private static byte[] program(Architecture architecture, SceneBatch batch, Processes processes) {
         Program code = new Program();
         code.add(LOAD_WORD, ARCHITECTURE);
         code.jump(JUMP_EQUAL, architecture.audit(), "number", null);
@@ -125,7 +128,7 @@ final class SeccompFilter {
         for (int numbering : batch == SceneBatch.HIDDEN ? architecture.numbering() : new int[0]) {
             code.jump(JUMP_EQUAL, numbering, "refuse", null);
         }
-        if (!processes) {
+        if (processes == Processes.REFUSED) {
             for (int starting : architecture.starting().processes()) {
                 code.jump(JUMP_EQUAL, starting, "not permitted", null);
             }
@@ -196,10 +199,10 @@ final class SeccompFilter {
     /**
      * The filter for the host's architecture written to a new file of the grader's alone, deleted
      * when this program ends, for the shell that starts each sandbox to open for bwrap; null where
-     * tick1 has none (it then warns). For {@code batch}; with {@code processes}, one that lets runs
+     * tick1 has none (it then warns). For {@code batch}; with {@link Processes#ALLOWED}, one that lets runs
      * start processes (for the tests that hold the limits against what other programs can do).
      */
-    static Path writeForThisMachine(SceneBatch batch, boolean processes) throws IOException {
+    static Path writeForThisMachine(SceneBatch batch, Processes processes) throws IOException {
         byte[] program = forArchitecture(System.getProperty("os.arch", ""), batch, processes);
         if (program == null) {
             return null;

@@ -4,6 +4,7 @@ import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.model.FindingText;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
+import gfx.tick1.engine.io.Counted;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -115,7 +116,7 @@ public final class VplReport {
      */
     private static String scenesWrong(List<SceneResult> scenes) {
         long wrong = scenes.stream().filter(scene -> !scene.passed()).count();
-        return "FAILED: " + wrong + " of " + scenes.size() + " scene" + (scenes.size() == 1 ? "" : "s") + " wrong.";
+        return "FAILED: " + wrong + " of " + Counted.of(scenes.size(), "scene") + " wrong.";
     }
 
     /**

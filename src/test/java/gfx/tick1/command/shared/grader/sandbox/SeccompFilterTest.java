@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.sandbox;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.command.shared.grader.sandbox.SeccompFilter.Processes;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.util.stream.Stream;
@@ -35,7 +36,7 @@ class SeccompFilterTest {
         }
 
         int answerOf(int architecture, int number, long... arguments) {
-            byte[] filter = SeccompFilter.forArchitecture(osArch, SceneBatch.PUBLIC, false);
+            byte[] filter = SeccompFilter.forArchitecture(osArch, SceneBatch.PUBLIC, Processes.REFUSED);
             return run(filter, architecture, number, arguments);
         }
 
@@ -59,7 +60,7 @@ class SeccompFilterTest {
     @MethodSource("machines")
     void noRunCanStartAProcessButEveryRunMayStartThreads(Machine machine) {
         for (SceneBatch batch : SceneBatch.values()) {
-            byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), batch, false);
+            byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), batch, Processes.REFUSED);
             String run = batch == SceneBatch.HIDDEN ? " in a hidden run" : " in a public run";
             assertThat(run(filter, machine.audit(), machine.cloneCall(), THREAD)).as("clone of a thread" + run)
                     .isEqualTo(ALLOW);
@@ -80,7 +81,7 @@ class SeccompFilterTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("machines")
     void aFilterThatLetsRunsStartProcessesAllowsCloneOfAProcess(Machine machine) {
-        byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), SceneBatch.PUBLIC, true);
+        byte[] filter = SeccompFilter.forArchitecture(machine.osArch(), SceneBatch.PUBLIC, Processes.ALLOWED);
         assertThat(run(filter, machine.audit(), machine.cloneCall(), SPAWN)).as("clone of a process").isEqualTo(ALLOW);
         assertThat(run(filter, machine.audit(), machine.clone3Call(), 0, 88)).as("clone3").isEqualTo(ALLOW);
     }
@@ -88,7 +89,7 @@ class SeccompFilterTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("machines")
     void aHiddenRunCannotMakeThePipesSocketsAndMemfdsTheKernelNumbersForTheWholeMachine(Machine machine) {
-        byte[] hidden = SeccompFilter.forArchitecture(machine.osArch(), SceneBatch.HIDDEN, false);
+        byte[] hidden = SeccompFilter.forArchitecture(machine.osArch(), SceneBatch.HIDDEN, Processes.REFUSED);
         assertThat(run(hidden, machine.audit(), machine.pipe2(), 0, 0)).as("pipe2 in a hidden run").isEqualTo(REFUSED);
         assertThat(run(hidden, machine.audit(), machine.socket(), 1, 1, 0)).as("socket in a hidden run")
                 .isEqualTo(REFUSED);

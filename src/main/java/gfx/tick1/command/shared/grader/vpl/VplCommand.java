@@ -1,11 +1,8 @@
-package gfx.tick1.command.vpl;
+package gfx.tick1.command.shared.grader.vpl;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
 import gfx.tick1.command.shared.coverage.ScenesShortfall;
-import gfx.tick1.command.shared.grader.vpl.GradeRange;
-import gfx.tick1.command.shared.grader.vpl.VplFiles;
-import gfx.tick1.command.shared.grader.vpl.VplReport;
 import gfx.tick1.engine.io.IoErrors;
 import java.io.IOException;
 import java.io.PrintWriter;

@@ -1,4 +1,4 @@
-package gfx.tick1.command.vpl;
+package gfx.tick1.command.shared.grader.vpl;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -7,8 +7,6 @@ import gfx.tick1.CliRun;
 import gfx.tick1.command.grade.StudentSolution;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.vpl.VplParser.Annotation;
-import gfx.tick1.command.shared.grader.vpl.VplParser;
-import gfx.tick1.command.shared.grader.vpl.VplReport;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;

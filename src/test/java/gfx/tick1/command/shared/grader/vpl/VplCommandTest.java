@@ -1,10 +1,9 @@
-package gfx.tick1.command.vpl;
+package gfx.tick1.command.shared.grader.vpl;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
-import gfx.tick1.command.shared.grader.vpl.VplReport;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

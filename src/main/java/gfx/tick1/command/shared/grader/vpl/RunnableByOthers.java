@@ -1,4 +1,4 @@
-package gfx.tick1.command.vpl;
+package gfx.tick1.command.shared.grader.vpl;
 
 import java.io.IOException;
 import java.nio.file.Files;
