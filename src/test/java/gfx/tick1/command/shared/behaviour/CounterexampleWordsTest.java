@@ -37,7 +37,7 @@ class CounterexampleWordsTest {
     /** The course's fixed shading inputs, simplest first (the order a counterexample is chosen in). */
     private static List<BehaviourJudge.ShadeCase> simplestFirst() {
         List<BehaviourJudge.ShadeCase> calls = new ArrayList<>();
-        BehaviourInputs.ILLUMINATIONS.forEach(call -> calls.add(new BehaviourJudge.ShadeCase(call, null, false)));
+        BehaviourInputs.ILLUMINATIONS.forEach(call -> calls.add(new BehaviourJudge.ShadeCase(call, null, Phong.FIXED)));
         calls.sort(Comparator.comparingDouble(BehaviourJudge.ShadeCase::roughness));
         return calls;
     }
@@ -49,7 +49,7 @@ class CounterexampleWordsTest {
         for (int i = 0; i < calls.size(); i++) {
             Vector3 ours = calls.get(i).model(BehaviourJudge.OURS);
             answered.add(new BehaviourJudge.ShadeCase(calls.get(i).call(),
-                    new Answers.Colour(new double[] {ours.x + offset.applyAsDouble(i), ours.y, ours.z}), false));
+                    new Answers.Colour(new double[] {ours.x + offset.applyAsDouble(i), ours.y, ours.z}), Phong.FIXED));
         }
         return answered;
     }
@@ -90,7 +90,7 @@ class CounterexampleWordsTest {
                 .filter(v -> v.method() == Variant.Method.ILLUMINATE && !v.isCorrect()).toList();
         BehaviourJudge.ShadeCase tie = null;
         for (BehaviourInputs.IlluminationCall call : BehaviourInputs.ILLUMINATIONS) {
-            BehaviourJudge.ShadeCase asked = new BehaviourJudge.ShadeCase(call, null, false);
+            BehaviourJudge.ShadeCase asked = new BehaviourJudge.ShadeCase(call, null, Phong.FIXED);
             Vector3 ours = asked.model(BehaviourJudge.OURS);
             for (Variant first : mistakes) {
                 Vector3 theirs = asked.model(java.util.EnumSet.of(first));
@@ -98,7 +98,7 @@ class CounterexampleWordsTest {
                         .anyMatch(other -> asked.model(java.util.EnumSet.of(other)).equals(theirs));
                 if (tie == null && shared && !theirs.equals(ours)) {
                     tie = new BehaviourJudge.ShadeCase(call,
-                            new Answers.Colour(new double[] {theirs.x, theirs.y, theirs.z}), false);
+                            new Answers.Colour(new double[] {theirs.x, theirs.y, theirs.z}), Phong.FIXED);
                 }
             }
         }
