@@ -2,6 +2,8 @@ package gfx.tick1.command.grade;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
+import gfx.tick1.command.shared.cli.OutputGate;
+import gfx.tick1.command.shared.cli.StopSignal;
 import gfx.tick1.command.shared.coverage.ScenesShortfall;
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
@@ -131,14 +133,23 @@ public final class GradeCommand implements Callable<Integer> {
                     + "cannot run (macOS, Windows), or code you trust. Not with --format vpl.")
     private boolean noSandbox;
 
+    /** Shut when a stop has been said: nothing the grade's threads print comes after that line. */
+    private final OutputGate gate = new OutputGate();
+    /** The standard error, past the gate: for the line that says the grade stopped, and what comes with it. */
+    private PrintWriter stopErr;
+
     @Override
     public Integer call() throws IOException, InterruptedException {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
         String usage = checkOptions();
         if (usage != null) {
             throw new ParameterException(spec.commandLine(), usage);
         }
+        StopSignal.exitOnSigterm(EXIT_STOPPED);
+        // Every line of the grade passes the gate, the one-line errors that tick1's start-up prints included.
+        stopErr = spec.commandLine().getErr();
+        PrintWriter out = gate.wrap(spec.commandLine().getOut());
+        PrintWriter err = gate.wrap(stopErr);
+        spec.commandLine().setOut(out).setErr(err);
         return format == Format.vpl ? vplEvaluation(out, err) : call(out, err);
     }
 
@@ -233,11 +244,12 @@ public final class GradeCommand implements Callable<Integer> {
         AtomicBoolean ended = new AtomicBoolean();
         OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
             if (ended.compareAndSet(false, true)) {
-                err.println("tick1 grade: " + STOPPED);
-                err.flush();
+                gate.shut();
+                stopErr.println("tick1 grade: " + STOPPED);
+                stopErr.flush();
             }
             process.stop();
-            reportUndeleted(WorkFolder.delete(work), err);
+            reportUndeleted(WorkFolder.delete(work), stopErr);
         });
         try {
             return grade(work, sandbox, process, out, err);
