@@ -4,6 +4,7 @@ import gfx.tick1.command.shared.behaviour.BehaviourCheck;
 import gfx.tick1.command.shared.behaviour.RunIn;
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
+import gfx.tick1.command.shared.cli.TemporaryFolder;
 import gfx.tick1.command.shared.grader.intake.StudentFile;
 import gfx.tick1.command.shared.javacode.JavaMembers;
 import gfx.tick1.command.shared.javacode.ReferenceMembers;
@@ -19,6 +20,7 @@ import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
@@ -194,6 +196,11 @@ public final class DiffCommand implements Callable<Integer> {
         // A file not given is the starter kit's: its method is not reported.
         for (String className : StarterKit.STUDENT_CLASSES) {
             starter.put(className, StarterKit.source(className));
+        }
+        Optional<String> temporary = TemporaryFolder.problem();
+        if (temporary.isPresent()) {
+            out.println(colours.yellow("behaviour could not be checked: " + temporary.get()));
+            return null;
         }
         try {
             Hints.Said said = Hints.of(given, starter, noSandbox ? RunIn.OWN_PROCESS : RunIn.SANDBOX);

@@ -4,6 +4,7 @@ import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
 import gfx.tick1.command.shared.cli.OutputGate;
 import gfx.tick1.command.shared.cli.StopSignal;
+import gfx.tick1.command.shared.cli.TemporaryFolder;
 import gfx.tick1.command.shared.coverage.ScenesShortfall;
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
@@ -65,7 +66,7 @@ public final class GradeCommand implements Callable<Integer> {
     public static final int EXIT_PASS = 0;
     @ExitStatus("the code failed: it does not compile, crashed, ran out of time or memory, or an image is wrong")
     public static final int EXIT_FAIL = 1;
-    @ExitStatus("the command line is wrong, a file given cannot be read, or the sandbox cannot be made")
+    @ExitStatus("the command line is wrong, or a file given, the temporary folder or the sandbox is unusable")
     public static final int EXIT_USAGE = 2;
     @ExitStatus("a scene failed and its images could not be written to the report folder; with --submissions: the "
             + "report could not be written, or a submission's images could not be stored")
@@ -191,6 +192,9 @@ public final class GradeCommand implements Callable<Integer> {
      * and a grade that ends in a one-line error graded nothing.
      */
     private Integer call(PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
+        TemporaryFolder.problem().ifPresent(problem -> {
+            throw new CommandFailure(EXIT_USAGE, problem);
+        });
         Sandbox sandbox = sandbox(err);
         int status = call(sandbox, out, err);
         ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
