@@ -240,6 +240,8 @@ public final class GradeCommand implements Callable<Integer> {
         if (target.cohort != null) {
             return new CohortCommand(options, target.cohort, sandbox, out, err).call();
         }
+        // What killed runs left (work folders that may hold hidden scenes, mounts, control groups) goes first.
+        reportUndeleted(Leftovers.remove(), err);
         Path work = Leftovers.newWorkFolder("grade");
         StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), options.memoryMegabytes());
         // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
