@@ -27,6 +27,7 @@ public final class Leftovers {
     private static final Pattern WORK_FOLDER = Pattern.compile("tick1-(?:grade|mount|behaviour|vpl)-(\\d+)-.+");
     private static final Pattern FILTER_FILE = Pattern.compile("tick1-seccomp-(\\d+)-.+\\.bpf");
     private static final Pattern CONTROL_GROUP = Pattern.compile("tick1-(\\d+)-\\d+");
+    private static final Pattern MARKED = Pattern.compile("(\\d+)-.*");
     /** The most names the line of what could not be removed shows. */
     private static final int SHOWN = 3;
 
@@ -39,7 +40,22 @@ public final class Leftovers {
      * told from what a live one holds.
      */
     static String prefix(String use) {
-        return "tick1-" + use + "-" + ProcessHandle.current().pid() + "-";
+        return "tick1-" + use + "-" + mark();
+    }
+
+    /** This process's id and a dash: the start of a name that {@link #leftByAGoneRun} can read back. */
+    public static String mark() {
+        return ProcessHandle.current().pid() + "-";
+    }
+
+    /**
+     * Whether {@code name}, which starts with a {@link #mark}, was left by a run whose process is {@link #gone}.
+     * A name that starts with no process id was made by an older tick1, which did not mark its names, and is
+     * taken as left.
+     */
+    public static boolean leftByAGoneRun(String name) {
+        Long owner = owner(MARKED, name);
+        return owner == null || gone(owner);
     }
 
     /** A new work folder for {@code use} ("grade", "mount") in the temporary folder, named by {@link #prefix}. */
