@@ -4,6 +4,8 @@ import gfx.tick1.command.shared.behaviour.BehaviourCheck;
 import gfx.tick1.command.shared.behaviour.RunIn;
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
+import gfx.tick1.command.shared.cli.TemporaryFolder;
+import gfx.tick1.command.shared.grader.intake.StudentFile;
 import gfx.tick1.command.shared.javacode.JavaMembers;
 import gfx.tick1.command.shared.javacode.ReferenceMembers;
 import gfx.tick1.command.shared.javacode.SameMeaning;
@@ -11,7 +13,6 @@ import gfx.tick1.command.shared.kit.StarterKit;
 import gfx.tick1.engine.io.IoErrors;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -19,6 +20,7 @@ import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
@@ -119,6 +121,9 @@ public final class DiffCommand implements Callable<Integer> {
                 theirs.add(parsed);
             } catch (JavaMembers.ParseException e) {
                 throw new CommandFailure(EXIT_CANNOT_COMPARE, parseError(file, e));
+            } catch (StudentFile.NotUtf8Exception | StudentFile.TooLargeException e) {
+                // Their message names the file, and where in it the first byte that is not UTF-8 is.
+                throw new CommandFailure(EXIT_CANNOT_COMPARE, e.getMessage());
             } catch (IOException e) {
                 throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": " + unreadable(file, e));
             } catch (StackOverflowError e) {
@@ -191,6 +196,11 @@ public final class DiffCommand implements Callable<Integer> {
         // A file not given is the starter kit's: its method is not reported.
         for (String className : StarterKit.STUDENT_CLASSES) {
             starter.put(className, StarterKit.source(className));
+        }
+        Optional<String> temporary = TemporaryFolder.problem();
+        if (temporary.isPresent()) {
+            out.println(colours.yellow("behaviour could not be checked: " + temporary.get()));
+            return null;
         }
         try {
             Hints.Said said = Hints.of(given, starter, noSandbox ? RunIn.OWN_PROCESS : RunIn.SANDBOX);
@@ -267,10 +277,12 @@ public final class DiffCommand implements Callable<Integer> {
         return lines;
     }
 
-    /** The file's text, without the byte-order mark Windows editors may put first (javac refuses one). */
+    /**
+     * The file's text, without the byte-order mark Windows editors may put first (javac refuses one), read as grade
+     * reads it: no further than any real Sphere.java or Renderer.java goes.
+     */
     private static String read(Path file) throws IOException {
-        String text = Files.readString(file, StandardCharsets.UTF_8);
-        return text.startsWith("\uFEFF") ? text.substring(1) : text;
+        return StudentFile.read(file);
     }
 
     /**

@@ -2,6 +2,9 @@ package gfx.tick1.command.grade;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
+import gfx.tick1.command.shared.cli.OutputGate;
+import gfx.tick1.command.shared.cli.StopSignal;
+import gfx.tick1.command.shared.cli.TemporaryFolder;
 import gfx.tick1.command.shared.coverage.ScenesShortfall;
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
@@ -63,7 +66,7 @@ public final class GradeCommand implements Callable<Integer> {
     public static final int EXIT_PASS = 0;
     @ExitStatus("the code failed: it does not compile, crashed, ran out of time or memory, or an image is wrong")
     public static final int EXIT_FAIL = 1;
-    @ExitStatus("the command line is wrong, a file given cannot be read, or the sandbox cannot be made")
+    @ExitStatus("the command line is wrong, or a file given, the temporary folder or the sandbox is unusable")
     public static final int EXIT_USAGE = 2;
     @ExitStatus("a scene failed and its images could not be written to the report folder; with --submissions: the "
             + "report could not be written, or a submission's images could not be stored")
@@ -131,14 +134,23 @@ public final class GradeCommand implements Callable<Integer> {
                     + "cannot run (macOS, Windows), or code you trust. Not with --format vpl.")
     private boolean noSandbox;
 
+    /** Shut when a stop has been said: nothing the grade's threads print comes after that line. */
+    private final OutputGate gate = new OutputGate();
+    /** The standard error, past the gate: for the line that says the grade stopped, and what comes with it. */
+    private PrintWriter stopErr;
+
     @Override
     public Integer call() throws IOException, InterruptedException {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
         String usage = checkOptions();
         if (usage != null) {
             throw new ParameterException(spec.commandLine(), usage);
         }
+        StopSignal.exitOnSigterm(EXIT_STOPPED);
+        // Every line of the grade passes the gate, the one-line errors that tick1's start-up prints included.
+        stopErr = spec.commandLine().getErr();
+        PrintWriter out = gate.wrap(spec.commandLine().getOut());
+        PrintWriter err = gate.wrap(stopErr);
+        spec.commandLine().setOut(out).setErr(err);
         return format == Format.vpl ? vplEvaluation(out, err) : call(out, err);
     }
 
@@ -180,6 +192,9 @@ public final class GradeCommand implements Callable<Integer> {
      * and a grade that ends in a one-line error graded nothing.
      */
     private Integer call(PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
+        TemporaryFolder.problem().ifPresent(problem -> {
+            throw new CommandFailure(EXIT_USAGE, problem);
+        });
         Sandbox sandbox = sandbox(err);
         int status = call(sandbox, out, err);
         ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
@@ -225,6 +240,8 @@ public final class GradeCommand implements Callable<Integer> {
         if (target.cohort != null) {
             return new CohortCommand(options, target.cohort, sandbox, out, err).call();
         }
+        // What killed runs left (work folders that may hold hidden scenes, mounts, control groups) goes first.
+        reportUndeleted(Leftovers.remove(), err);
         Path work = Leftovers.newWorkFolder("grade");
         StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), options.memoryMegabytes());
         // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
@@ -233,11 +250,12 @@ public final class GradeCommand implements Callable<Integer> {
         AtomicBoolean ended = new AtomicBoolean();
         OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
             if (ended.compareAndSet(false, true)) {
-                err.println("tick1 grade: " + STOPPED);
-                err.flush();
+                gate.shut();
+                stopErr.println("tick1 grade: " + STOPPED);
+                stopErr.flush();
             }
             process.stop();
-            reportUndeleted(WorkFolder.delete(work), err);
+            reportUndeleted(WorkFolder.delete(work), stopErr);
         });
         try {
             return grade(work, sandbox, process, out, err);

@@ -11,8 +11,9 @@ import java.util.Optional;
 
 /**
  * One student's two files as {@code grade --sphere --renderer} takes them: each read and checked as
- * UTF-8 (a file that is not is exit status 2), and recognised by its class, as {@code tick1 diff}
- * recognises them, so that two files given the wrong way round are graded the right way round.
+ * UTF-8 (a file that is not, or is larger than any real one, is exit status 2), and recognised by
+ * its class, as {@code tick1 diff} recognises them, so that two files given the wrong way round are
+ * graded the right way round.
  */
 final class StudentFiles {
 
@@ -48,8 +49,9 @@ final class StudentFiles {
         try {
             return of(sphere, renderer, err);
         } catch (StudentFile.NotUtf8Exception e) {
-            return new Submission("", "", "", new Submission.SourceFile(sphere.toString(), Files.readAllBytes(sphere)),
-                    new Submission.SourceFile(renderer.toString(), Files.readAllBytes(renderer)), null);
+            return new Submission("", "", "", new Submission.SourceFile(sphere.toString(),
+                    StudentFile.readBytes(sphere)), new Submission.SourceFile(renderer.toString(),
+                    StudentFile.readBytes(renderer)), null);
         }
     }
 
@@ -57,7 +59,7 @@ final class StudentFiles {
         if (Files.isDirectory(file)) {
             throw new IOException(file + ": a folder, not a file: " + option + " wants the student's " + wanted);
         }
-        byte[] content = Files.readAllBytes(file);
+        byte[] content = StudentFile.readBytes(file);
         StudentFile.decode(file.toString(), content);
         return new Submission.SourceFile(file.toString(), content);
     }

@@ -1,9 +1,9 @@
 package gfx.tick1.engine.scene;
 
+import gfx.tick1.engine.io.BoundedFile;
 import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.math.Vector3;
 import java.io.IOException;
-import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
@@ -132,19 +132,10 @@ public final class SceneLoader {
             if (Files.isDirectory(file)) {
                 throw new SceneException(fileName + ": is a directory, expected a scene file");
             }
-            long size = Files.size(file);
-            if (size > MAX_FILE_BYTES) {
-                throw new SceneException(fileName + ": file is " + size + " bytes, expected at most "
-                        + MAX_FILE_BYTES + " (64 MiB)");
-            }
-            try (InputStream in = Files.newInputStream(file)) {
-                // Read one byte past the limit in case the file grew after it was measured.
-                byte[] bytes = in.readNBytes((int) MAX_FILE_BYTES + 1);
-                if (bytes.length > MAX_FILE_BYTES) {
-                    throw new SceneException(fileName + ": file is larger than " + MAX_FILE_BYTES + " bytes (64 MiB)");
-                }
-                return bytes;
-            }
+            return BoundedFile.read(file, MAX_FILE_BYTES);
+        } catch (BoundedFile.TooLarge e) {
+            throw new SceneException(fileName + (e.size() >= 0 ? ": file is " + e.size() + " bytes, expected at most "
+                    + MAX_FILE_BYTES : ": file is larger than " + MAX_FILE_BYTES + " bytes") + " (64 MiB)");
         } catch (NoSuchFileException | AccessDeniedException e) {
             throw new SceneException(fileName + ": " + IoErrors.reason(e));
         } catch (IOException e) {

@@ -1,6 +1,7 @@
 package gfx.tick1.command.shared.behaviour;
 
 import gfx.tick1.command.shared.grader.harness.BehaviourInputs;
+import gfx.tick1.command.shared.grader.sandbox.Leftovers;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
@@ -86,7 +87,7 @@ public final class BehaviourCheck {
             throws InterruptedException {
         Path work = null;
         try {
-            work = Files.createTempDirectory("tick1-behaviour");
+            work = Leftovers.newWorkFolder("behaviour");
             return call(sandbox, work, sphere, renderer, chosen);
         } catch (IOException e) {
             return new Called(null, "behaviour could not be checked: your methods could not be run ("

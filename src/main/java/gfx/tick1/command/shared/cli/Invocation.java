@@ -1,5 +1,7 @@
 package gfx.tick1.command.shared.cli;
 
+import java.util.regex.Matcher;
+
 /**
  * How the user starts tick1, for the lines that tell them what to type next: {@code tick1} for the
  * installed launcher, {@code java -jar tick1.jar} (the jar as they named it) for the students'
@@ -34,6 +36,17 @@ public final class Invocation {
 
     /** As {@link #moreMemory()}, for tick1 started by this {@link #command()}. */
     static String moreMemory(String command) {
-        return command.equals("tick1") ? "JAVA_OPTS=-Xmx..." : command.replaceFirst("^java ", "java -Xmx... ");
+        return javaOption(command, "-Xmx...");
+    }
+
+    /** How to give this tick1's Java the option {@code option} ("-Djava.io.tmpdir=FOLDER"). */
+    public static String javaOption(String option) {
+        return javaOption(command(), option);
+    }
+
+    /** As {@link #javaOption(String)}, for tick1 started by this {@link #command()}. */
+    static String javaOption(String command, String option) {
+        return command.equals("tick1") ? "JAVA_OPTS=" + option : command.replaceFirst("^java ",
+                Matcher.quoteReplacement("java " + option + " "));
     }
 }

@@ -25,6 +25,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Function;
 import java.util.function.Predicate;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
 /**
@@ -38,6 +40,9 @@ import java.util.stream.Collectors;
  *                  the file's order
  */
 public record JavaMembers(String className, Map<String, Member> members) {
+
+    /** Where the lexer's message says it stopped: "Lexical error at line 2, column 19.  Encountered: ...". */
+    private static final Pattern LEXER_PLACE = Pattern.compile(" at line (\\d+), column (\\d+)");
 
     /**
      * One member: its text in the standard layout (with its independent declarations in
@@ -96,14 +101,14 @@ public record JavaMembers(String className, Map<String, Member> members) {
 
     private static JavaMembers parse(String name, String source, Function<String, JavaMembers> likeOf,
             Predicate<String> wanted) throws ParseException {
+        // A tab is one column, as it is one step of an editor's cursor (and one character of a scene's errors).
         JavaParser parser = new JavaParser(new ParserConfiguration()
-                .setLanguageLevel(ParserConfiguration.LanguageLevel.JAVA_17));
+                .setLanguageLevel(ParserConfiguration.LanguageLevel.JAVA_17).setTabSize(1));
         ParseResult<CompilationUnit> result = parser.parse(source);
         if (!result.isSuccessful() || result.getResult().isEmpty()) {
             Problem problem = result.getProblems().get(0);
-            String where = problem.getLocation().flatMap(range -> range.getBegin().getRange())
-                    .map(range -> ":" + range.begin.line + ":" + range.begin.column).orElse("");
-            throw new ParseException(name + where + ": " + firstLine(problem.getMessage()));
+            throw new ParseException(name + where(problem) + ": "
+                    + firstLine(problem.getMessage()).replaceFirst(LEXER_PLACE.pattern() + "\\.?", "."));
         }
         CompilationUnit unit = result.getResult().get();
         if (unit.getTypes().isEmpty()) {
@@ -173,6 +178,24 @@ public record JavaMembers(String className, Map<String, Member> members) {
                 call.removeScope();
             }
         }
+    }
+
+    /**
+     * ":line:column" of what the parser could not take, 1-based: the token it found (the problem's range begins at
+     * the token before it, which is not where the student must look), or the place a lexer's error names; else
+     * the start of the problem's range, or nothing.
+     */
+    private static String where(Problem problem) {
+        if (problem.getCause().orElse(null) instanceof com.github.javaparser.ParseException e
+                && e.currentToken != null && e.currentToken.next != null) {
+            return ":" + e.currentToken.next.beginLine + ":" + Math.max(1, e.currentToken.next.beginColumn);
+        }
+        Matcher lexer = LEXER_PLACE.matcher(problem.getMessage());
+        if (lexer.find()) {
+            return ":" + lexer.group(1) + ":" + Math.max(1, Integer.parseInt(lexer.group(2)));
+        }
+        return problem.getLocation().flatMap(range -> range.getBegin().getRange())
+                .map(range -> ":" + range.begin.line + ":" + range.begin.column).orElse("");
     }
 
     private static String firstLine(String message) {

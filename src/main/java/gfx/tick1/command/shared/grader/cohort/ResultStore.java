@@ -8,6 +8,7 @@ import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.Enforcement;
+import gfx.tick1.command.shared.grader.sandbox.Leftovers;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.OwnFolder;
 import java.io.IOException;
@@ -45,7 +46,10 @@ public final class ResultStore {
 
     /** What is stored in each result's folder besides the images. */
     private static final String RESULT_FILE = "result.properties";
-    /** The prefix of folders being written: never read, deleted at the next start. */
+    /**
+     * The prefix of folders being written, before the id of the process writing them: never read, and deleted by
+     * the next start once that process is gone (two runs may write into one report folder at once).
+     */
     private static final String WRITING = ".writing-";
     /**
      * Changes when the way a result is stored or keyed changes, so that older results are graded again
@@ -59,13 +63,15 @@ public final class ResultStore {
 
     /**
      * The store in {@code folder}, made if need be (never a link: one there is replaced, {@link OwnFolder}); what a
-     * stopped run left half-written is deleted.
+     * stopped run left half-written is deleted, and what a live run is writing is left to it.
      */
     public ResultStore(Path folder) throws IOException {
         this.folder = OwnFolder.at(folder);
         try (DirectoryStream<Path> entries = Files.newDirectoryStream(folder, WRITING + "*")) {
             for (Path entry : entries) {
-                WorkFolder.delete(entry);
+                if (Leftovers.leftByAGoneRun(entry.getFileName().toString().substring(WRITING.length()))) {
+                    WorkFolder.delete(entry);
+                }
             }
         }
     }
@@ -159,7 +165,7 @@ public final class ResultStore {
 
     /** A new folder to write a result's images into before {@link #save} stores it. */
     Path newEntry() throws IOException {
-        return Files.createDirectory(folder.resolve(WRITING + UUID.randomUUID()));
+        return Files.createDirectory(folder.resolve(WRITING + Leftovers.mark() + UUID.randomUUID()));
     }
 
     /**

@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.grader.intake;
 
+import gfx.tick1.engine.io.BoundedFile;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.CharBuffer;
@@ -8,7 +9,6 @@ import java.nio.charset.CharsetDecoder;
 import java.nio.charset.CoderResult;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
 
@@ -37,9 +37,34 @@ public final class StudentFile {
         }
     }
 
-    /** The text of {@code file}, read as UTF-8, without a leading byte-order mark. */
+    /** A student file larger than any real one (or a device, or a stream without end): the message names it. */
+    public static final class TooLargeException extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        TooLargeException(String message) {
+            super(message);
+        }
+    }
+
+    /** The text of {@code file}, read as {@link #readBytes(Path)} reads it, as UTF-8, without a byte-order mark. */
     public static String read(Path file) throws IOException {
-        return decode(file.toString(), Files.readAllBytes(file));
+        return decode(file.toString(), readBytes(file));
+    }
+
+    /**
+     * The bytes of a student's file named on the command line, read no further than the intake reads a student's
+     * file in a download: a device or an endless stream given in its place ends in one line.
+     *
+     * @throws TooLargeException past that bound
+     */
+    public static byte[] readBytes(Path file) throws IOException {
+        long bound = IntakeLimits.DEFAULT.maxFileBytes();
+        try {
+            return BoundedFile.read(file, bound);
+        } catch (BoundedFile.TooLarge e) {
+            throw new TooLargeException(file + ": " + e.getMessage() + ", far more than any Sphere.java or "
+                    + "Renderer.java");
+        }
     }
 
     /** {@code bytes} as UTF-8 text without a leading byte-order mark; errors name {@code name}. */

@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.report;
 
 import gfx.tick1.command.shared.grader.model.CohortInputException;
 import gfx.tick1.command.shared.grader.model.StudentResult;
+import gfx.tick1.engine.io.BoundedFile;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.math.BigDecimal;
@@ -67,6 +68,8 @@ public final class Worksheet {
     private static final DateTimeFormatter MOODLE_DATE = DateTimeFormatter.ofPattern("EEEE, d MMMM yyyy, h:mm a xxx",
             Locale.ENGLISH);
     private static final String CRLF = "\r\n";
+    /** The largest worksheet read: a row is some hundred bytes, and a device or an endless stream stops here. */
+    private static final long MAX_BYTES = 64L << 20;
     /** Where a fresh worksheet's row has its grade, its grading time and its comment. */
     private static final int GRADE_AT = HEADER.indexOf(GRADE), GRADED_AT = HEADER.indexOf("Last modified (grade)"),
             COMMENT_AT = HEADER.indexOf(FEEDBACK);
@@ -211,7 +214,10 @@ public final class Worksheet {
         }
         byte[] bytes;
         try {
-            bytes = Files.readAllBytes(worksheet);
+            bytes = BoundedFile.read(worksheet, MAX_BYTES);
+        } catch (BoundedFile.TooLarge e) {
+            throw new CohortInputException(worksheet + ": " + e.getMessage() + ", far more than the grading "
+                    + "worksheet of any cohort");
         } catch (NoSuchFileException e) {
             throw new CohortInputException(worksheet + ": no such file");
         } catch (IOException e) {

@@ -16,16 +16,18 @@ import java.util.stream.Stream;
 /**
  * What tick1 runs killed before their clean-up (SIGKILL, a power cut) left on the machine: the
  * tmpfs mounted on their runs' and compilers' folders (source {@code tick1-output}), their work
- * folders ({@code tick1-grade-PID-...}), seccomp filter files ({@code tick1-seccomp-PID-....bpf})
+ * folders ({@code tick1-grade-PID-...}, and those of the behaviour check and of {@code tick1 vpl}'s check of the
+ * scenes, all made by {@link #newWorkFolder}), seccomp filter files ({@code tick1-seccomp-PID-....bpf})
  * and control groups ({@code tick1-PID-N}). Each name carries the process id of the run that made
  * it; what belongs to a process that is gone is removed. A live process under that id is left
  * alone when it is a Java program (tick1 always is one), or when what it runs cannot be told.
  */
 public final class Leftovers {
 
-    private static final Pattern WORK_FOLDER = Pattern.compile("tick1-(?:grade|mount)-(\\d+)-.+");
+    private static final Pattern WORK_FOLDER = Pattern.compile("tick1-(?:grade|mount|behaviour|vpl)-(\\d+)-.+");
     private static final Pattern FILTER_FILE = Pattern.compile("tick1-seccomp-(\\d+)-.+\\.bpf");
     private static final Pattern CONTROL_GROUP = Pattern.compile("tick1-(\\d+)-\\d+");
+    private static final Pattern MARKED = Pattern.compile("(\\d+)-.*");
     /** The most names the line of what could not be removed shows. */
     private static final int SHOWN = 3;
 
@@ -38,7 +40,22 @@ public final class Leftovers {
      * told from what a live one holds.
      */
     static String prefix(String use) {
-        return "tick1-" + use + "-" + ProcessHandle.current().pid() + "-";
+        return "tick1-" + use + "-" + mark();
+    }
+
+    /** This process's id and a dash: the start of a name that {@link #leftByAGoneRun} can read back. */
+    public static String mark() {
+        return ProcessHandle.current().pid() + "-";
+    }
+
+    /**
+     * Whether {@code name}, which starts with a {@link #mark}, was left by a run whose process is {@link #gone}.
+     * A name that starts with no process id was made by an older tick1, which did not mark its names, and is
+     * taken as left.
+     */
+    public static boolean leftByAGoneRun(String name) {
+        Long owner = owner(MARKED, name);
+        return owner == null || gone(owner);
     }
 
     /** A new work folder for {@code use} ("grade", "mount") in the temporary folder, named by {@link #prefix}. */

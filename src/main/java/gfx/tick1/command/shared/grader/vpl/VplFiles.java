@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.vpl;
 
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.grading.ReferenceChoice;
+import gfx.tick1.command.shared.grader.sandbox.Leftovers;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.scene.SceneException;
@@ -9,7 +10,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
@@ -74,7 +74,7 @@ public record VplFiles(Path launcher, String maxGrade, List<String> sceneFiles, 
     public static String checkScenes(Path folder) {
         Path work = null;
         try {
-            work = Files.createTempDirectory("tick1-vpl");
+            work = Leftovers.newWorkFolder("vpl");
             Grading.prepare(work, folder, new Grading.Limits(1, 1, Duration.ofSeconds(1), 64, ReferenceChoice.either));
             return null;
         } catch (SceneException e) {

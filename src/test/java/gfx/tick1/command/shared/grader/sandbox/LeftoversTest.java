@@ -129,6 +129,30 @@ class LeftoversTest {
         }
     }
 
+    @Test
+    void theWorkFoldersOfTheBehaviourCheckAndOfVplsScenesCheckOfARunWhoseProcessIsGoneAreRemoved() throws Exception {
+        long gone = goneProcess();
+        Path behaviour = Files.createDirectories(temporary.resolve("tick1-behaviour-" + gone + "-1")
+                .resolve("harness"));
+        Path vpl = Files.createDirectory(temporary.resolve("tick1-vpl-" + gone + "-2"));
+
+        assertThat(Leftovers.remove(temporary, null)).as("what could not be removed").isNull();
+
+        assertThat(behaviour.getParent()).as("the behaviour check's work folder").doesNotExist();
+        assertThat(vpl).as("the work folder of tick1 vpl's check of the scenes").doesNotExist();
+    }
+
+    @Test
+    void theWorkFoldersOfTheBehaviourCheckAndOfVplsScenesCheckOfALiveRunAreLeftAlone() throws Exception {
+        long live = ProcessHandle.current().pid();
+        Path behaviour = Files.createDirectory(temporary.resolve("tick1-behaviour-" + live + "-1"));
+        Path vpl = Files.createDirectory(temporary.resolve("tick1-vpl-" + live + "-2"));
+
+        assertThat(Leftovers.remove(temporary, null)).isNull();
+
+        assertThat(List.of(behaviour, vpl)).as("a live run's work folders").allMatch(Files::isDirectory);
+    }
+
     /** The id of a process that has ended. */
     private static long goneProcess() throws IOException, InterruptedException {
         Process done = new ProcessBuilder("/bin/true").start();
