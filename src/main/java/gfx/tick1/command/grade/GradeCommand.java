@@ -6,27 +6,16 @@ import gfx.tick1.command.shared.cli.OutputGate;
 import gfx.tick1.command.shared.cli.StopSignal;
 import gfx.tick1.command.shared.cli.TemporaryFolder;
 import gfx.tick1.command.shared.coverage.ScenesShortfall;
-import gfx.tick1.command.shared.grader.grading.Grading;
-import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
-import gfx.tick1.command.shared.grader.model.Submission;
-import gfx.tick1.command.shared.grader.sandbox.Leftovers;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
-import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
-import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.command.shared.grader.vpl.GradeRange;
 import gfx.tick1.command.shared.grader.vpl.VplReport;
-import gfx.tick1.engine.io.IoErrors;
-import gfx.tick1.engine.io.OnExit;
-import gfx.tick1.engine.scene.SceneException;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
-import java.util.concurrent.atomic.AtomicBoolean;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -78,9 +67,6 @@ public final class GradeCommand implements Callable<Integer> {
     @ExitStatus("stopped by Ctrl-C or SIGTERM; with --submissions: the results finished so far are kept, and the same "
             + "command grades the rest")
     public static final int EXIT_STOPPED = 130;
-
-    /** What a grade stopped by Ctrl-C or SIGTERM says. */
-    private static final String STOPPED = "the grade was stopped (Ctrl-C or SIGTERM); no verdict";
 
     @Spec
     private CommandSpec spec;
@@ -240,35 +226,8 @@ public final class GradeCommand implements Callable<Integer> {
         if (target.cohort != null) {
             return new CohortCommand(options, target.cohort, sandbox, out, err).call();
         }
-        // What killed runs left (work folders that may hold hidden scenes, mounts, control groups) goes first.
-        reportUndeleted(Leftovers.remove(), err);
-        Path work = Leftovers.newWorkFolder("grade");
-        StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), options.memoryMegabytes());
-        // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
-        // scenes and all. Stopped, the JVM ends when its shutdown hooks do, whatever the grade's thread
-        // is doing, so the hook says so itself: whichever of the two sees the stop first says it, once.
-        AtomicBoolean ended = new AtomicBoolean();
-        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
-            if (ended.compareAndSet(false, true)) {
-                gate.shut();
-                stopErr.println("tick1 grade: " + STOPPED);
-                stopErr.flush();
-            }
-            process.stop();
-            reportUndeleted(WorkFolder.delete(work), stopErr);
-        });
-        try {
-            return grade(work, sandbox, process, out, err);
-        } catch (InterruptedException e) {
-            // Ctrl-C or SIGTERM stopped the student's process: the grade's end, not a fault of tick1's.
-            if (ended.compareAndSet(false, true)) {
-                throw new CommandFailure(EXIT_STOPPED, STOPPED);
-            }
-            return EXIT_STOPPED;
-        } finally {
-            ended.set(true);
-            cleanUp.now();
-        }
+        return new StudentGrade(options, target.student.sphere, target.student.renderer,
+                vpl() ? gradeRange() : null, sandbox, gate, stopErr).call(out, err);
     }
 
     static void reportUndeleted(String problem, PrintWriter err) {
@@ -301,48 +260,12 @@ public final class GradeCommand implements Callable<Integer> {
         return format == Format.vpl ? vplOptionsProblem() : null;
     }
 
-    private int grade(Path work, Sandbox sandbox, StudentProcess process, PrintWriter out, PrintWriter err)
-            throws IOException, InterruptedException {
-        Grading grading;
-        Submission submission;
-        try {
-            sandbox.checkReachable(work);
-            grading = Grading.prepare(work, options.scenesFolder(), options.limits());
-            grading.copyScenes(work);
-            grading.renderReferencesAhead();
-            submission = vpl() ? StudentFiles.asSubmitted(target.student.sphere, target.student.renderer, err)
-                    : StudentFiles.of(target.student.sphere, target.student.renderer, err);
-            if (!vpl()) {
-                WorkFolder.removeEarlierReport(options.reportFolder());
-            }
-        } catch (SceneException e) {
-            throw new CommandFailure(EXIT_USAGE, e.getMessage());
-        } catch (IOException e) {
-            throw new CommandFailure(EXIT_USAGE, IoErrors.describe(e));
-        }
-        StudentProcess.writeHarness(Files.createDirectory(work.resolve("harness")));
-        SubmissionGrader grader = new SubmissionGrader(grading, sandbox, process, work);
-        // VPL adds up the memory of every process: its hidden run waits until this JVM has explained the public
-        // scenes. A grade of tick1's own runs it beside that explaining.
-        SubmissionGrader.Graded graded = vpl() ? grader.grade(submission, work, work.resolve("images"),
-                new PrintWriter(Writer.nullWriter()), err)
-                : grader.gradeWithHiddenRunAhead(submission, work, options.reportFolder(), out, err);
-        if (vpl()) {
-            out.print(VplReport.of(graded.result(), graded.compileErrors(), gradeRange()));
-            out.flush();
-        }
-        if (graded.result().passed()) {
-            return EXIT_PASS;
-        }
-        return graded.imagesUnwritable() ? EXIT_CANNOT_WRITE : EXIT_FAIL;
-    }
-
-    boolean vpl() {
+    private boolean vpl() {
         return format == Format.vpl;
     }
 
     /** The --grade-range, checked by {@link #checkOptions()} first. */
-    GradeRange gradeRange() {
+    private GradeRange gradeRange() {
         return GradeRange.parse(gradeRange);
     }
 

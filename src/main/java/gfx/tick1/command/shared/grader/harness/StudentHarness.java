@@ -13,6 +13,7 @@ import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import javax.imageio.ImageIO;
 
 /**
@@ -74,6 +75,16 @@ public final class StudentHarness {
     /** The file of a scene's traced samples, beside its image: {@code <index>.trace}. */
     public static final String TRACE_SUFFIX = ".trace";
 
+    /**
+     * The system property that a run outside the sandbox sets to the process id of the tick1 that starts it: the
+     * harness then stops the processes the student's code started when it ends, and ends when that tick1 is gone
+     * (its parent, unless tick1 died before the harness could look). In the sandbox its PID namespace and bwrap's
+     * --die-with-parent do both, and there is no /proc to do them by.
+     */
+    public static final String GRADER_PID = "tick1.graderPid";
+    /** The exit status of a harness whose parent is gone: nobody reads it. */
+    private static final int PARENT_GONE = 143;
+
     /** The classes of the harness's jar: these and their nested classes are all of tick1 the child sees. */
     public static final List<Class<?>> CLASSES = List.of(StudentHarness.class, StudentCompiler.class,
             StarterApi.class, BehaviourInputs.class, AnswerLog.class, SampleTrace.class, Bounded.class);
@@ -85,6 +96,17 @@ public final class StudentHarness {
     }
 
     public static void main(String[] arguments) throws Exception {
+        if (unconfined()) {
+            // However this process ends (its end, the student's System.exit, a stop), what the student's code
+            // started and left running ends with it, and it ends with tick1: outside the sandbox nothing else would.
+            Runtime.getRuntime().addShutdownHook(new Thread(StudentHarness::stopStartedProcesses, "stop-started"));
+            long grader = Long.parseLong(System.getProperty(GRADER_PID));
+            ProcessHandle.current().parent().filter(parent -> parent.pid() == grader)
+                    .map(ProcessHandle::onExit).orElse(CompletableFuture.completedFuture(null)).thenRun(() -> {
+                        stopStartedProcesses();
+                        Runtime.getRuntime().halt(PARENT_GONE);
+                    });
+        }
         Probes probes = arguments.length > 1 && arguments[1].equals(PROBES) ? Probes.ASKED : Probes.NONE;
         String[] args = probes == Probes.ASKED ? dropSecond(arguments) : arguments;
         if (args[0].equals(COMPILE_SERVER)) {
@@ -172,8 +194,25 @@ public final class StudentHarness {
                 AnswerLog.write(student, output.resolve(PROBES_FILE));
             }
         }
-        // Student code may have left threads running; the results are written, so stop here.
+        // Student code may have left threads (and, outside the sandbox, processes) running; the results are
+        // written, so stop here.
+        if (unconfined()) {
+            stopStartedProcesses();
+        }
         Runtime.getRuntime().halt(0);
+    }
+
+    private static boolean unconfined() {
+        return System.getProperty(GRADER_PID) != null;
+    }
+
+    /** Kills every process that this one started, and theirs, that still runs. */
+    private static void stopStartedProcesses() {
+        try {
+            ProcessHandle.current().descendants().forEach(ProcessHandle::destroyForcibly);
+        } catch (RuntimeException e) {
+            // No way to list them here (no /proc): nothing more this process can do.
+        }
     }
 
     /** Traces the samples of a scene whose image is written; without the starter's API, none. */

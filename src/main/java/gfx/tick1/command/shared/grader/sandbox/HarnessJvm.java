@@ -106,6 +106,9 @@ record HarnessJvm(Sandbox sandbox, Path harness, int memoryMegabytes, Path share
                 "-Djava.awt.headless=true",
                 "-Djava.io.tmpdir=" + (sandbox.isConfined() ? OUTPUT : System.getProperty("java.io.tmpdir")),
                 "-cp", inside(harness, HARNESS) + "/" + HARNESS_JAR));
+        if (!sandbox.isConfined()) {
+            command.add("-D" + StudentHarness.GRADER_PID + "=" + ProcessHandle.current().pid());
+        }
         command.addAll(request.jvm().options());
         command.add(StudentHarness.class.getName());
         command.addAll(sandbox.isConfined() ? request.harnessArguments()
