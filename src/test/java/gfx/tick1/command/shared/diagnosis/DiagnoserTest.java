@@ -119,9 +119,9 @@ class DiagnoserTest {
     }
 
     /**
-     * What the reference renderer draws of any scene is correct. At a quarter of the golden images' size: the
-     * verdict reads only which entry's render the image is, and the correct entry's render is the reference
-     * renderer's at every size (VariantRendererTest, on the golden images' frame).
+     * What the reference renderer draws of any scene is diagnosed correct. At 160 x 120, not the golden images'
+     * 640 x 480: the verdict says which entry's render the image is, at any size, and VariantRendererTest holds the
+     * correct entry to the reference renderer at 640 x 480.
      */
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
