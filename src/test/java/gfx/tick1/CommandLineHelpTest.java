@@ -8,7 +8,9 @@ import gfx.tick1.command.shared.cli.Version;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine.Command;
@@ -148,10 +150,9 @@ class CommandLineHelpTest {
     @Test
     void everyHelpBreaksLinesOnlyAtSpaces() {
         for (String command : EVERY_HELP) {
-            CommandLine target = command(command);
-            List<String> words = words(usage(target, 1000));
+            List<String> words = words(ourHelp(command, 1000));
             for (int width = 55; width <= 140; width++) {
-                List<String> wrapped = words(usage(target, width));
+                List<String> wrapped = words(ourHelp(command, width));
                 assertThat(wrapped).as("%s --help at %d columns splits %s", ("tick1 " + command).strip(), width,
                         firstSplit(wrapped, words)).isEqualTo(words);
             }
@@ -166,15 +167,14 @@ class CommandLineHelpTest {
     void whereNoWordIsSplitTheHelpIsPicoclisOwnLayout() {
         int compared = 0;
         for (String command : EVERY_HELP) {
-            CommandLine ours = command(command);
             CommandLine picocli = command(command);
             picocli.setHelpFactory(CommandLine.Help::new);
-            String summary = ours.getCommandSpec().usageMessage().description()[0].substring(0, 12);
-            List<String> words = words(usage(ours, 1000));
+            String summary = picocli.getCommandSpec().usageMessage().description()[0].substring(0, 12);
+            List<String> words = words(ourHelp(command, 1000));
             for (int width = 55; width <= 140; width++) {
                 String theirs = usage(picocli, width);
                 if (words(theirs).equals(words)) {
-                    String mine = usage(ours, width);
+                    String mine = ourHelp(command, width);
                     assertThat(mine.substring(mine.indexOf(summary)))
                             .as("%s --help at %d columns", ("tick1 " + command).strip(), width)
                             .isEqualTo(theirs.substring(theirs.indexOf(summary)));
@@ -303,13 +303,24 @@ class CommandLineHelpTest {
 
     /** The words of the usage lines of {@code tick1 COMMAND --help} at this width. */
     private static List<String> synopsisTokens(String command, int width) {
-        CommandLine commandLine = Tick1.commandLine(new RenderCommand());
-        CommandLine target = command.isEmpty() ? commandLine : commandLine.getSubcommands().get(command);
-        target.setUsageHelpAutoWidth(false);
-        target.setUsageHelpWidth(width);
-        String usage = target.getUsageMessage(CommandLine.Help.Ansi.OFF);
-        String synopsis = usage.substring(0, usage.indexOf(target.getCommandSpec().usageMessage().description()[0]
-                .substring(0, 20)));
+        String usage = ourHelp(command, width);
+        String synopsis = usage.substring(0, usage.indexOf(ourCommand(command).getCommandSpec().usageMessage()
+                .description()[0].substring(0, 20)));
         return Arrays.asList(synopsis.trim().split("\\s+"));
+    }
+
+    /** Our helps as laid out so far, by command and width: the layout tests read each of them more than once. */
+    private static final Map<String, String> OUR_HELPS = new HashMap<>();
+
+    /** The command line of each command whose help {@link #ourHelp} lays out, made once. */
+    private static final Map<String, CommandLine> OUR_COMMANDS = new HashMap<>();
+
+    private static synchronized CommandLine ourCommand(String command) {
+        return OUR_COMMANDS.computeIfAbsent(command, CommandLineHelpTest::command);
+    }
+
+    /** Tick1's help of {@code command} laid out at {@code width}, without colour, laid out once. */
+    private static synchronized String ourHelp(String command, int width) {
+        return OUR_HELPS.computeIfAbsent(command + " " + width, key -> usage(ourCommand(command), width));
     }
 }

@@ -13,8 +13,11 @@ import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
@@ -45,15 +48,12 @@ class GradeCohortStopTest {
      */
     @Test
     void aStopKeepsEveryStudentGradedWholeAndTheNextRunGradesOnlyTheRest() throws Exception {
-        Path zip = moodleZip(dir.resolve("download.zip"), twoCorrectThenOneSlow());
-        Path report = dir.resolve("report");
-        Process grade = stoppedWhileTheThirdRuns(zip, report, "TERM");
+        Stopped stop = stopped("TERM");
 
-        assertThat(storedResults(report.resolve(CohortCommand.STATE_FOLDER))).as("results kept: "
-                + Files.readString(dir.resolve("grade.log"))).isEqualTo(2);
-        CliRun again = CliRun.of(gradeArguments(zip, report, TIME_LIMIT));
+        assertThat(stop.results()).as("results kept: " + stop.said()).hasSize(2);
+        CliRun again = CliRun.of(gradeArguments(stop.zip(), stop.report(), TIME_LIMIT));
         assertThat(again.out()).as(again.transcript()).contains("(1 now, 2 from earlier runs)");
-        assertThat(grade.exitValue()).as("the stopped grade's exit status").isNotZero();
+        assertThat(stop.exitValue()).as("the stopped grade's exit status").isNotZero();
     }
 
     /**
@@ -66,24 +66,56 @@ class GradeCohortStopTest {
     void aStopSaysInOneLineHowManyResultsAreKeptAndLeavesNothingHalfWritten(String signal) throws Exception {
         assumeThat(!"INT".equals(signal) || !sigintIgnored()).as("SIGINT is not ignored here (the tests run in "
                 + "the foreground), so the grade's JVM can be stopped with it").isTrue();
-        Path report = dir.resolve("report");
 
-        stoppedWhileTheThirdRuns(moodleZip(dir.resolve("download.zip"), twoCorrectThenOneSlow()), report,
-                signal);
+        Stopped stop = stopped(signal);
 
-        String said = Files.readString(dir.resolve("grade.log"));
-        assertThat(said.lines().filter(line -> line.startsWith("tick1 grade: stopped")))
-                .as("what the stopped grade said:\n" + said)
+        assertThat(stop.said().lines().filter(line -> line.startsWith("tick1 grade: stopped")))
+                .as("what the stopped grade said:\n" + stop.said())
                 .containsExactly("tick1 grade: stopped: the results of 2 of 3 submissions are kept in "
-                        + report.resolve(CohortCommand.STATE_FOLDER) + "; run the same command again to grade the "
-                        + "other 1 and write the report");
-        assertThat(said).as("what the stopped grade said").doesNotContain("internal error", "Exception");
-        try (Stream<Path> left = Files.list(report.resolve(CohortCommand.STATE_FOLDER))) {
-            assertThat(left.map(path -> path.getFileName().toString())).as("half-written results")
-                    .noneMatch(name -> name.startsWith("."));
+                        + stop.report().resolve(CohortCommand.STATE_FOLDER) + "; run the same command again to "
+                        + "grade the other 1 and write the report");
+        assertThat(stop.said()).as("what the stopped grade said").doesNotContain("internal error", "Exception");
+        assertThat(stop.stateFolder()).as("half-written results").noneMatch(name -> name.startsWith("."));
+        assertThat(stop.leftInTemporaryFolder()).as("work folders and filter files").isEmpty();
+    }
+
+    /**
+     * The grade of two correct students and a slow one, stopped with a signal while the slow one's code ran, as
+     * it was when it ended: what it said, its exit status, and the names in its state folder and its temporary
+     * folder. The tests that read the same stop share it.
+     */
+    private record Stopped(Path zip, Path report, String said, int exitValue, List<String> stateFolder,
+            List<String> leftInTemporaryFolder) {
+
+        List<String> results() {
+            return stateFolder.stream().filter(name -> !name.startsWith(".")).toList();
         }
-        try (Stream<Path> left = Files.list(dir.resolve("tmp"))) {
-            assertThat(left).as("work folders and filter files").isEmpty();
+    }
+
+    @TempDir
+    static Path stops;
+    private static final Map<String, Stopped> STOPPED = new HashMap<>();
+
+    /** The grade stopped with {@code signal}, stopped once for all the tests that read it. */
+    private static synchronized Stopped stopped(String signal) throws Exception {
+        Stopped stop = STOPPED.get(signal);
+        if (stop == null) {
+            // The sandbox's user passes through the folders above each grade's own (gradeInAJvmOfItsOwn).
+            Files.setPosixFilePermissions(stops, PosixFilePermissions.fromString("rwx--x--x"));
+            Path folder = Files.createTempDirectory(stops, signal);
+            Path zip = moodleZip(folder.resolve("download.zip"), twoCorrectThenOneSlow());
+            Path report = folder.resolve("report");
+            Process grade = stoppedWhileTheThirdRuns(folder, zip, report, signal);
+            stop = new Stopped(zip, report, Files.readString(folder.resolve("grade.log")), grade.exitValue(),
+                    names(report.resolve(CohortCommand.STATE_FOLDER)), names(folder.resolve("tmp")));
+            STOPPED.put(signal, stop);
+        }
+        return stop;
+    }
+
+    private static List<String> names(Path folder) throws IOException {
+        try (Stream<Path> entries = Files.list(folder)) {
+            return entries.map(path -> path.getFileName().toString()).toList();
         }
     }
 
@@ -98,7 +130,7 @@ class GradeCohortStopTest {
         Path report = dir.resolve("report");
         Process killed = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, "--jobs", "2",
                 TIME_LIMIT[0], TIME_LIMIT[1]));
-        awaitTheSlowCode(killed, report.resolve(CohortCommand.STATE_FOLDER));
+        awaitTheSlowCode(dir, killed, report.resolve(CohortCommand.STATE_FOLDER));
         killed.destroyForcibly().waitFor();
         try (Stream<Path> left = Files.list(dir.resolve("tmp"))) {
             assertThat(left).as("what the killed grade left in its temporary folder").isNotEmpty();
@@ -129,26 +161,32 @@ class GradeCohortStopTest {
         }
     }
 
-    /** Two correct students, then one whose render waits 15 s. */
+    /**
+     * Two correct students, then one whose render waits 15 s, once in each JVM that runs it: time enough to stop
+     * the grade while its code runs, and a run after the stop that passes it soon.
+     */
     private static List<Student> twoCorrectThenOneSlow() {
         List<Student> students = new ArrayList<>();
         for (int i = 0; i < 2; i++) {
             students.add(new Student("Correct " + i, 100 + i, files(StudentSolution.correct()
                     .editRenderer("return image;", "return image; // " + i)), true));
         }
-        students.add(new Student("Slow", 102, files(StudentSolution.correct().editRenderer("return image;",
-                "try { Thread.sleep(15_000); } catch (InterruptedException e) { } return image;")), true));
+        students.add(new Student("Slow", 102, files(StudentSolution.correct()
+                .editRenderer("public class Renderer {", "public class Renderer {\n    private static boolean waited;")
+                .editRenderer("return image;", "if (!waited) { waited = true; try { Thread.sleep(15_000); } "
+                        + "catch (InterruptedException e) { } } return image;")), true));
         return students;
     }
 
     /**
-     * The grade of {@code zip}, one student at a time, in a JVM of its own, stopped with {@code signal}
-     * once the two correct students' results are stored and the slow one's code runs; ended.
+     * The grade of {@code zip}, one student at a time, in a JVM of its own whose folder is {@code dir}, stopped
+     * with {@code signal} once the two correct students' results are stored and the slow one's code runs; ended.
      */
-    private Process stoppedWhileTheThirdRuns(Path zip, Path report, String signal) throws Exception {
+    private static Process stoppedWhileTheThirdRuns(Path dir, Path zip, Path report, String signal)
+            throws Exception {
         Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, "--jobs", "1",
                 TIME_LIMIT[0], TIME_LIMIT[1]));
-        awaitTheSlowCode(grade, report.resolve(CohortCommand.STATE_FOLDER));
+        awaitTheSlowCode(dir, grade, report.resolve(CohortCommand.STATE_FOLDER));
         new ProcessBuilder("/bin/kill", "-" + signal, Long.toString(grade.pid())).start().waitFor();
         assertThat(grade.waitFor(120, TimeUnit.SECONDS)).as("the grade ended").isTrue();
         return grade;
@@ -158,7 +196,8 @@ class GradeCohortStopTest {
      * Waits (at most two minutes) for the two correct students' results to be stored and the
      * slow student's code to run.
      */
-    private void awaitTheSlowCode(Process grade, Path state) throws IOException, InterruptedException {
+    private static void awaitTheSlowCode(Path dir, Process grade, Path state) throws IOException,
+            InterruptedException {
         for (int i = 0; i < 1200 && grade.isAlive() && !(storedResults(state) == 2 && grade.descendants()
                 .anyMatch(p -> p.info().commandLine().orElse("").contains("StudentHarness render"))); i++) {
             Thread.sleep(100);

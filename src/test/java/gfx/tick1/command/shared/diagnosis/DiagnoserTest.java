@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.engine.image.PngInput;
 import gfx.tick1.engine.render.GoldenImages;
+import gfx.tick1.engine.render.ReferenceRenderer;
 import gfx.tick1.engine.scene.BundledScenes;
 import gfx.tick1.engine.scene.Scene;
 import gfx.tick1.engine.scene.SceneLoader;
@@ -19,6 +20,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * The diagnosis names the handout's own figures, read from {@code ../shared/handout-figures}
@@ -135,12 +137,28 @@ class DiagnoserTest {
         return GoldenImages.scenesUnder(Path.of("scenes")).stream();
     }
 
+    /**
+     * What the reference renderer draws of any scene is diagnosed correct. At 160 x 120, not the golden images'
+     * 640 x 480: the verdict says which entry's render the image is, at any size, and VariantRendererTest holds the
+     * correct entry to the reference renderer at 640 x 480.
+     */
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
-    void everyReferenceImageIsDiagnosedCorrect(Path scene) throws IOException {
+    void everySceneAsTheReferenceRendererDrawsItIsDiagnosedCorrect(Path scene) {
+        Scene loaded = new SceneLoader(scene, false).getScene();
+        assertDiagnosedCorrect(new ReferenceRenderer(160, 120).render(loaded), loaded);
+    }
+
+    /** The course's scenes' reference images, as a student who renders them right diagnoses them. */
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"scenes/tick1.xml", "scenes/basic_scene.xml"})
+    void theCoursesReferenceImagesAreDiagnosedCorrect(Path scene) throws IOException {
         Path reference = GoldenImages.referenceFor(Path.of("scenes"), Path.of("reference-images"), scene);
-        Diagnosis diagnosis = new Diagnoser()
-                .diagnose(PngInput.read(reference), new SceneLoader(scene, false).getScene());
+        assertDiagnosedCorrect(PngInput.read(reference), new SceneLoader(scene, false).getScene());
+    }
+
+    private static void assertDiagnosedCorrect(BufferedImage image, Scene scene) {
+        Diagnosis diagnosis = new Diagnoser().diagnose(image, scene);
         assertThat(diagnosis.closest().variant()).as(String.join("\n", diagnosis.report())).isEqualTo(Variant.CORRECT);
         assertThat(diagnosis.closest().exactShare()).isEqualTo(1);
         assertThat(diagnosis.verdict()).isEqualTo(Diagnosis.Verdict.CORRECT);

@@ -120,7 +120,13 @@ class VplEvaluateTest {
      */
     private Evaluation evaluate(String mode, StudentSolution solution, Map<String, String> more) throws IOException,
             InterruptedException {
-        Path home = Files.createDirectory(dir.resolve("p" + UID));
+        return evaluate(dir, mode, solution, more);
+    }
+
+    /** As {@link #evaluate(String, StudentSolution, Map)}, the home folder and the jail's script in {@code folder}. */
+    private static Evaluation evaluate(Path folder, String mode, StudentSolution solution, Map<String, String> more)
+            throws IOException, InterruptedException {
+        Path home = Files.createDirectory(folder.resolve("p" + UID));
         try (Stream<Path> files = Files.list(activity)) {
             for (Path file : files.filter(f -> !f.getFileName().toString().equals(VplCommand.README)).toList()) {
                 Files.copy(file, home.resolve(file.getFileName()), java.nio.file.StandardCopyOption.COPY_ATTRIBUTES);
@@ -135,7 +141,7 @@ class VplEvaluateTest {
         }
         Files.writeString(home.resolve("vpl_environment.sh"), environment(List.copyOf(submitted.keySet())));
         chown(home);
-        Path jail = dir.resolve("jail.sh");
+        Path jail = folder.resolve("jail.sh");
         try (InputStream in = VplEvaluateTest.class.getResourceAsStream("/vpl/jail.sh")) {
             Files.write(jail, in.readAllBytes());
         }
@@ -186,9 +192,21 @@ class VplEvaluateTest {
         assertThat(chown.waitFor()).as("chown").isZero();
     }
 
+    private static Evaluation correctInPlainJail;
+
+    /** The evaluation of the correct submission in the plain jail, made once: two tests read it. */
+    private static synchronized Evaluation correctInPlainJail() throws IOException, InterruptedException {
+        if (correctInPlainJail == null) {
+            Path folder = Files.createDirectory(shared.resolve("correct"),
+                    PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwxr-xr-x")));
+            correctInPlainJail = evaluate(folder, "plain", StudentSolution.correct(), Map.of());
+        }
+        return correctInPlainJail;
+    }
+
     @Test
     void aCorrectSubmissionGetsThePassGradeUnderAPassingTitle() throws IOException, InterruptedException {
-        Evaluation evaluation = evaluate("plain", StudentSolution.correct());
+        Evaluation evaluation = correctInPlainJail();
 
         assertThat(VplParser.proposedGrade(evaluation.execution())).as(evaluation.toString()).isEqualTo("7.5");
         assertThat(VplParser.titles(evaluation.comment())).as("the titles").containsExactly("Tick 1: passed");
@@ -196,7 +214,7 @@ class VplEvaluateTest {
 
     @Test
     void theHiddenScenesAreGoneFromTheHomeFolderWhenVplExecutionRuns() throws IOException, InterruptedException {
-        Evaluation evaluation = evaluate("plain", StudentSolution.correct());
+        Evaluation evaluation = correctInPlainJail();
 
         try (Stream<Path> files = Files.list(evaluation.home())) {
             assertThat(files.map(f -> f.getFileName().toString()).toList()).as("the home folder's files")
