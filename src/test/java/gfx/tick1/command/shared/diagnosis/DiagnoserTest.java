@@ -34,8 +34,8 @@ class DiagnoserTest {
 
     private static Path requireFigure(String file) {
         Path figure = FIGURES.resolve(file);
-        assumeTrue(Files.exists(figure), "skipped: " + figure.toAbsolutePath()
-                + " is not here; check out the shared folder beside the project to run it");
+        assumeTrue(Files.exists(figure), "skipped: the handout's figure " + figure.getFileName()
+                + " is not on this machine");
         return figure;
     }
 
