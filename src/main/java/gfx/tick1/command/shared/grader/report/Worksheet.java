@@ -52,11 +52,8 @@ public final class Worksheet {
             "Maximum Grade", "Grade can be changed", "Last modified (submission)", "Last modified (grade)",
             "Feedback comments");
 
-    private static final String IDENTIFIER = "Identifier";
-    private static final String GRADE = "Grade";
-    private static final String FEEDBACK = "Feedback comments";
-    private static final String FULL_NAME = "Full name";
-    private static final String MAXIMUM_GRADE = "Maximum Grade";
+    private static final String IDENTIFIER = "Identifier", GRADE = "Grade", FEEDBACK = "Feedback comments",
+            FULL_NAME = "Full name", MAXIMUM_GRADE = "Maximum Grade";
     /** How Moodle's identifier cell starts ("hiddenuser" in mod/assign's language strings). */
     private static final String PARTICIPANT = "Participant ";
     private static final String SUBMITTED = "Submitted for grading";
