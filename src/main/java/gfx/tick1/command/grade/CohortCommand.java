@@ -73,6 +73,7 @@ final class CohortCommand {
     private enum Ending { RUNNING, ENDED, STOPPED }
 
     int call() throws IOException, InterruptedException {
+        refuseReportInTheDownload();
         List<Submission> submissions;
         try {
             // The worksheet first: a bad one must stop the grade before anything is graded or written.
@@ -250,6 +251,34 @@ final class CohortCommand {
             }
         }
         return submissions.stream().filter(submission -> !own.contains(submission.folder())).toList();
+    }
+
+    /**
+     * Refuses a report folder that is the download, or inside a student's folder of it: the next grade would read
+     * the report's files as students'. One beside the students' folders is the report's own, and left out.
+     */
+    private void refuseReportInTheDownload() {
+        Path download = asOnDisk(cohortOptions.submissions());
+        Path report = asOnDisk(options.reportFolder());
+        if (report.startsWith(download) && !download.equals(report.getParent())) {
+            throw new CommandFailure(GradeCommand.EXIT_USAGE, "--report " + options.reportFolder() + " is "
+                    + (report.equals(download) ? "the download itself" : "inside a student's folder of the download")
+                    + ": the next grade would take the report's files for students'; give a folder outside "
+                    + cohortOptions.submissions());
+        }
+    }
+
+    /** {@code path} absolute, with the links of the part of it that exists resolved. */
+    private static Path asOnDisk(Path path) {
+        Path absolute = path.toAbsolutePath().normalize();
+        for (Path there = absolute; there != null; there = there.getParent()) {
+            try {
+                return there.toRealPath().resolve(there.relativize(absolute));
+            } catch (IOException e) {
+                // not there yet: try the folder that would hold it
+            }
+        }
+        return absolute;
     }
 
     /** The grades.csv an earlier run wrote in {@code report}, or null: its unchanged rows keep their grading time. */

@@ -186,6 +186,7 @@ public final class GradeCommand implements Callable<Integer> {
         ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
                 .ifPresent(shortfall -> err.println("tick1 grade: warning: " + shortfall.line(options.scenesFolder())));
         sandbox.enforcement().warnings().forEach(warning -> err.println("tick1 grade: warning: " + warning));
+        out.flush();   // a cohort's closing lines: the gate passes them on unflushed, and tick1 ends with System.exit
         err.flush();
         return status;
     }

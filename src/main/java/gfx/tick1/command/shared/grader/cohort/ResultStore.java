@@ -16,7 +16,9 @@ import java.io.Reader;
 import java.io.Writer;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
+import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
@@ -139,6 +141,8 @@ public final class ResultStore {
         Properties p = new Properties();
         try (Reader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             p.load(in);
+        } catch (CharacterCodingException | AccessDeniedException e) {
+            return null;   // damaged, or not readable: no result, and the submission is graded again
         }
         try {
             List<SceneResult> scenes = new ArrayList<>();

@@ -43,7 +43,8 @@ final class CohortPage {
 
     /** As {@link #html(List, List, List)}, with {@code sections} (HTML: the year at a glance, ...) after the chart. */
     static String html(List<StudentResult> results, List<String> grades, List<String> beside, String sections) {
-        long passed = results.stream().filter(StudentResult::passed).count();
+        long passed = results.stream().filter(result -> Standing.of(result) == Standing.PASSED).count();
+        long notGraded = results.stream().filter(result -> Standing.of(result) == Standing.NOT_GRADED).count();
         StringBuilder out = new StringBuilder(4096 + 1024 * results.size());
         out.append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n")
                 .append("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n")
@@ -51,8 +52,9 @@ final class CohortPage {
                 .append("</style>\n</head>\n<body data-status=\"loading\">\n<h1>Tick 1: the cohort at a glance</h1>\n")
                 .append("<p class=\"summary\"><strong id=\"passed-count\">").append(passed)
                 .append("</strong> of <strong id=\"total-count\">").append(results.size())
-                .append("</strong> passed; <strong id=\"failed-count\">").append(results.size() - passed)
-                .append("</strong> did not.</p>\n");
+                .append("</strong> passed; <strong id=\"failed-count\">").append(results.size() - passed - notGraded)
+                .append("</strong> failed; <strong id=\"not-graded-count\">").append(notGraded)
+                .append("</strong> not graded.</p>\n");
         if (!beside.isEmpty()) {
             out.append("<p class=\"files\">Files:");
             beside.forEach(file -> out.append(" <a href=\"").append(Html.relativeUrl(file)).append("\">")
@@ -81,11 +83,12 @@ final class CohortPage {
         Submission student = result.submission();
         ReasonText why = ReasonText.of(result.reason());
         String feedback = Html.relativeUrl(ReportFiles.FEEDBACK, student.folder(), FeedbackPage.HTML);
-        out.append("<tr class=\"").append(result.passed() ? "pass" : "fail").append("\">")
+        Standing standing = Standing.of(result);
+        out.append("<tr class=\"").append(standing.style()).append("\">")
                 .append("<td><a href=\"").append(feedback).append("\"><bdi>").append(Html.escape(student.fullName()))
                 .append("</bdi></a></td>")
                 .append("<td><bdi>").append(Html.escape(student.id())).append("</bdi></td>")
-                .append("<td class=\"result\">").append(result.passed() ? "pass" : "fail").append("</td>")
+                .append("<td class=\"result\">").append(standing.words()).append("</td>")
                 .append("<td data-sort=\"").append(share(result)).append("\">").append(result.scenesTotal() == 0
                         ? "none run" : result.scenesPassed() + " of " + result.scenesTotal()).append("</td>")
                 .append("<td data-sort=\"").append(Html.escape(grade)).append("\">").append(Html.escape(grade))

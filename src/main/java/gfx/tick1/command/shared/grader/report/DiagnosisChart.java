@@ -31,7 +31,7 @@ final class DiagnosisChart {
     /** How many failed submissions carry each diagnosis, most common first. */
     static Map<String, Integer> failuresByDiagnosis(List<StudentResult> results) {
         Map<String, Integer> counts = new TreeMap<>();
-        results.stream().filter(result -> !result.passed())
+        results.stream().filter(result -> Standing.of(result) == Standing.FAILED)
                 .forEach(result -> counts.merge(label(result), 1, Integer::sum));
         Map<String, Integer> ordered = new LinkedHashMap<>();
         counts.entrySet().stream()

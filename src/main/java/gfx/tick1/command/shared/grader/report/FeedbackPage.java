@@ -49,10 +49,16 @@ final class FeedbackPage {
         return scene.hidden() ? List.of() : scene.images();
     }
 
-    /** "passed", or "not passed: 1 of 2 scenes matched" (or the like when nothing could run). */
+    /**
+     * "passed", or "not passed: 1 of 2 scenes matched" (or the like when nothing could run), or "not
+     * graded" when tick1 could not grade it: no verdict on the code (the reason says why).
+     */
     static String verdict(StudentResult result) {
         if (result.passed()) {
             return "passed";
+        }
+        if (Standing.of(result) == Standing.NOT_GRADED) {
+            return "not graded: tick1 could not grade this submission, so it has no result yet";
         }
         return result.scenesTotal() == 0 ? "not passed: no scene could be run"
                 : "not passed: " + result.scenesPassed() + " of " + result.scenesTotal() + " scenes matched";
@@ -90,7 +96,7 @@ final class FeedbackPage {
                 .append(STYLE).append("</style>\n</head>\n<body>\n")
                 .append("<h1>Tick 1 feedback for <bdi>").append(who).append("</bdi></h1>\n")
                 .append("<p class=\"id\">Participant <bdi>").append(Html.escape(student.id())).append("</bdi></p>\n")
-                .append("<p class=\"verdict ").append(result.passed() ? "pass" : "fail").append("\">")
+                .append("<p class=\"verdict ").append(Standing.of(result).style()).append("\">")
                 .append(Html.escape(capitalised(verdict(result)))).append("</p>\n")
                 .append("<h2>Why</h2>\n<p class=\"reason\">")
                 .append(Html.escape(seeBelow(why.prose()))).append("</p>\n").append(why.quotedHtml());

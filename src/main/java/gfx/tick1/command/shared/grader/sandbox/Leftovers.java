@@ -19,8 +19,10 @@ import java.util.stream.Stream;
  * folders ({@code tick1-grade-PID-...}, and those of the behaviour check and of {@code tick1 vpl}'s check of the
  * scenes, all made by {@link #newWorkFolder}), seccomp filter files ({@code tick1-seccomp-PID-....bpf})
  * and control groups ({@code tick1-PID-N}). Each name carries the process id of the run that made
- * it; what belongs to a process that is gone is removed. A live process under that id is left
- * alone when it is a Java program (tick1 always is one), or when what it runs cannot be told.
+ * it; what belongs to a process that is gone, and is owned by this process's user, is removed
+ * (anyone may make a folder with such a name, to steer a removal run as root). A live process
+ * under that id is left alone when it is a Java program (tick1 always is one), or when what it
+ * runs cannot be told.
  */
 public final class Leftovers {
 
@@ -80,8 +82,9 @@ public final class Leftovers {
         List<String> points = new ArrayList<>(OutputDisk.mountPoints());
         points.sort(Comparator.comparing(String::length).reversed());   // the deepest first
         for (String point : points) {
-            Long owner = ownerOf(Path.of(point));
-            if (owner != null && gone(owner) && !OutputDisk.detach(point)) {
+            Path folder = workFolderOf(Path.of(point));
+            Long owner = folder == null ? null : owner(WORK_FOLDER, folder.getFileName().toString());
+            if (owner != null && gone(owner) && ThisUser.owns(folder) && !OutputDisk.detach(point)) {
                 left.add(point);
             }
         }
@@ -89,11 +92,11 @@ public final class Leftovers {
             String name = entry.getFileName().toString();
             Long folderOwner = owner(WORK_FOLDER, name);
             if (folderOwner != null && gone(folderOwner) && Files.isDirectory(entry, LinkOption.NOFOLLOW_LINKS)
-                    && WorkFolder.delete(entry) != null) {
+                    && ThisUser.owns(entry) && WorkFolder.delete(entry) != null) {
                 left.add(entry.toString());
             }
             Long fileOwner = owner(FILTER_FILE, name);
-            if (fileOwner != null && gone(fileOwner) && !deleted(entry)) {
+            if (fileOwner != null && gone(fileOwner) && ThisUser.owns(entry) && !deleted(entry)) {
                 left.add(entry.toString());
             }
         }
@@ -101,7 +104,7 @@ public final class Leftovers {
             for (Path group : list(parent)) {
                 Long owner = owner(CONTROL_GROUP, group.getFileName().toString());
                 if (owner != null && gone(owner) && Files.isDirectory(group, LinkOption.NOFOLLOW_LINKS)
-                        && !deleted(group)) {
+                        && ThisUser.owns(group) && !deleted(group)) {
                     left.add(group.toString());
                 }
             }
@@ -111,12 +114,11 @@ public final class Leftovers {
                 + (left.size() - SHOWN) + " more" : "") + " (remove them by hand: umount, rmdir, rm -r)";
     }
 
-    /** The process id a work folder on the way to {@code path} carries, or null. */
-    private static Long ownerOf(Path path) {
-        for (Path name : path) {
-            Long owner = owner(WORK_FOLDER, name.toString());
-            if (owner != null) {
-                return owner;
+    /** The work folder on the way to {@code path}, an absolute mount point, or null. */
+    private static Path workFolderOf(Path path) {
+        for (int i = 1; i <= path.getNameCount(); i++) {
+            if (owner(WORK_FOLDER, path.getName(i - 1).toString()) != null) {
+                return path.getRoot().resolve(path.subpath(0, i));
             }
         }
         return null;

@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -193,10 +194,15 @@ final class OutputDisk implements AutoCloseable {
      */
     static void detachAllUnder(Path folder) {
         String top;
+        Path absolute = folder.toAbsolutePath();
         try {
-            top = folder.toRealPath().toString();
+            // The folder itself is not resolved: a link put in its place must not lead to another run's mounts.
+            if (absolute.getParent() == null || !Files.isDirectory(absolute, LinkOption.NOFOLLOW_LINKS)) {
+                return;   // no folder, no mount on it
+            }
+            top = absolute.getParent().toRealPath().resolve(absolute.getFileName()).toString();
         } catch (IOException e) {
-            return;   // no folder, no mount on it
+            return;
         }
         List<String> below = new ArrayList<>();
         for (String point : mountPoints()) {

@@ -1,15 +1,18 @@
 package gfx.tick1.command.shared.grader.sandbox;
 
 import java.io.IOException;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.DirectoryStream;
-import java.nio.file.FileVisitResult;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.nio.file.SimpleFileVisitor;
+import java.nio.file.SecureDirectoryStream;
+import java.nio.file.attribute.BasicFileAttributeView;
 import java.nio.file.attribute.BasicFileAttributes;
+import java.nio.file.attribute.PosixFileAttributeView;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Pattern;
 
@@ -54,45 +57,61 @@ public final class WorkFolder {
         return "cannot delete the work folder " + folder + ": delete it by hand (it may hold hidden scenes)";
     }
 
-    /** Whether walking the tree deleted it all. */
+    /**
+     * Whether walking the tree deleted it all. Each folder is opened relative to the one that holds
+     * it, refusing a link (openat with O_NOFOLLOW), and each name is unlinked relative to its open
+     * folder, so a folder swapped for a link while the walk runs leads nowhere: nothing outside the
+     * tree is deleted, and no permission is changed through a link.
+     */
     private static boolean deleteByWalking(Path folder) {
-        try {
-            Files.walkFileTree(folder, new SimpleFileVisitor<>() {
-                @Override
-                public FileVisitResult preVisitDirectory(Path dir, BasicFileAttributes attributes) {
-                    // A folder the student made unreadable must still be listed to be emptied.
-                    try {
-                        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx------"));
-                    } catch (IOException | UnsupportedOperationException e) {
-                        // Not ours to change (root needs no permission): go on.
-                    }
-                    return FileVisitResult.CONTINUE;
-                }
-
-                @Override
-                public FileVisitResult visitFile(Path file, BasicFileAttributes attributes) throws IOException {
-                    Files.deleteIfExists(file);
-                    return FileVisitResult.CONTINUE;
-                }
-
-                @Override
-                public FileVisitResult visitFileFailed(Path file, IOException e) throws IOException {
-                    Files.deleteIfExists(file);
-                    return FileVisitResult.CONTINUE;
-                }
-
-                @Override
-                public FileVisitResult postVisitDirectory(Path dir, IOException e) throws IOException {
-                    Files.deleteIfExists(dir);
-                    return FileVisitResult.CONTINUE;
-                }
-            });
+        Path absolute = folder.toAbsolutePath();
+        if (absolute.getParent() == null) {
+            return false;
+        }
+        try (DirectoryStream<Path> parent = Files.newDirectoryStream(absolute.getParent())) {
+            if (!(parent instanceof SecureDirectoryStream<Path> secure)) {
+                return false;   // no openat here: rm, which walks by open folders too
+            }
+            deleteIn(secure, absolute.getFileName());
         } catch (NoSuchFileException e) {
             return true;   // already deleted
-        } catch (IOException e) {
+        } catch (IOException | RuntimeException e) {
             return false;
         }
         return !Files.exists(folder, LinkOption.NOFOLLOW_LINKS);
+    }
+
+    /** Deletes {@code name} in the open folder {@code parent}: a link or a file itself, a folder with all in it. */
+    private static void deleteIn(SecureDirectoryStream<Path> parent, Path name) throws IOException {
+        BasicFileAttributes attributes = parent.getFileAttributeView(name, BasicFileAttributeView.class,
+                LinkOption.NOFOLLOW_LINKS).readAttributes();
+        if (!attributes.isDirectory()) {
+            parent.deleteFile(name);   // a link swapped in since is unlinked itself
+            return;
+        }
+        List<Path> names = new ArrayList<>();
+        try (SecureDirectoryStream<Path> child = open(parent, name)) {
+            child.forEach(entry -> names.add(entry.getFileName()));
+            for (Path entry : names) {
+                deleteIn(child, entry);
+            }
+        }
+        parent.deleteDirectory(name);   // fails on a link swapped in since (ENOTDIR), deleting nothing
+    }
+
+    /**
+     * The folder {@code name} in {@code parent}, opened refusing a link. A folder the student made
+     * unreadable is first given back to its owner, through a descriptor opened refusing a link too.
+     */
+    private static SecureDirectoryStream<Path> open(SecureDirectoryStream<Path> parent, Path name)
+            throws IOException {
+        try {
+            return parent.newDirectoryStream(name, LinkOption.NOFOLLOW_LINKS);
+        } catch (AccessDeniedException e) {
+            parent.getFileAttributeView(name, PosixFileAttributeView.class, LinkOption.NOFOLLOW_LINKS)
+                    .setPermissions(PosixFilePermissions.fromString("rwx------"));
+            return parent.newDirectoryStream(name, LinkOption.NOFOLLOW_LINKS);
+        }
     }
 
     /**
@@ -105,7 +124,11 @@ public final class WorkFolder {
      */
     private static boolean deleteWithRm(Path folder) {
         String name = folder.toString();
-        Commands.run(List.of("/bin/chmod", "-R", "u+rwx", "--", name));   // what it cannot change, rm reports
+        if (!ThisUser.root()) {
+            // chmod changes what a link given to it, or swapped in under it, leads to; root needs no permission
+            // to delete, and any other user can change only its own files
+            Commands.run(List.of("/bin/chmod", "-R", "u+rwx", "--", name));   // what it cannot change, rm reports
+        }
         return Commands.run(List.of("/bin/rm", "-rf", "--one-file-system", "--", name))
                 && !Files.exists(folder, LinkOption.NOFOLLOW_LINKS);
     }
