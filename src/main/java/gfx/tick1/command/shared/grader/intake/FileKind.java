@@ -6,6 +6,7 @@ import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.ByteBuffer;
 import java.util.List;
@@ -14,14 +15,42 @@ import java.util.Optional;
 /**
  * What a file given as a download is, when its first bytes show plainly that it is not a zip, so
  * that the message says what was given ("a text file", "a CSV file") and what was wanted. Anything else goes to
- * the zip reader, which says what is wrong with it.
+ * the zip reader, which says what is wrong with it. A path that is neither a file nor a folder is named
+ * for what it is, too.
  */
 final class FileKind {
 
     /** How many bytes are looked at. */
     private static final int HEAD = 512;
+    /** The file type bits of a Unix mode (S_IFMT), and the types that are neither a file nor a folder. */
+    private static final int FILE_TYPE = 0170000;
+    private static final int NAMED_PIPE = 0010000;
+    private static final int CHARACTER_DEVICE = 0020000;
+    private static final int BLOCK_DEVICE = 0060000;
+    private static final int SOCKET = 0140000;
 
     private FileKind() {
+    }
+
+    /**
+     * What {@code path}, neither a file nor a folder, is: "no such file or folder", or "a named pipe, not ...",
+     * "a device, not ..." or "a socket, not ..." (its type, from its mode: Java has no words for them).
+     */
+    static String notAFileOrFolder(Path path) {
+        int mode;
+        try {
+            mode = (Integer) Files.getAttribute(path, "unix:mode");
+        } catch (IOException | RuntimeException e) {
+            return Files.exists(path, LinkOption.NOFOLLOW_LINKS) ? "neither a file nor a folder"
+                    : "no such file or folder";
+        }
+        String kind = switch (mode & FILE_TYPE) {
+            case NAMED_PIPE -> "a named pipe";
+            case CHARACTER_DEVICE, BLOCK_DEVICE -> "a device";
+            case SOCKET -> "a socket";
+            default -> "neither a file nor a folder";
+        };
+        return kind + ", not Moodle's \"Download all submissions\" zip or the folder it unpacks to";
     }
 
     /**

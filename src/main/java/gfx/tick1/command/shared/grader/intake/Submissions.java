@@ -52,13 +52,6 @@ public final class Submissions {
         this.limits = limits;
     }
 
-    /** The file type bits of a Unix mode (S_IFMT), and the types that are neither a file nor a folder. */
-    private static final int FILE_TYPE = 0170000;
-    private static final int NAMED_PIPE = 0010000;
-    private static final int CHARACTER_DEVICE = 0020000;
-    private static final int BLOCK_DEVICE = 0060000;
-    private static final int SOCKET = 0140000;
-
     /** Reads a cohort's download within the default limits. */
     public static List<Submission> read(Path path) throws IOException {
         return read(path, IntakeLimits.DEFAULT);
@@ -73,7 +66,7 @@ public final class Submissions {
         Submissions intake = new Submissions(path, limits);
         boolean folder = Files.isDirectory(path);
         if (!folder && !Files.isRegularFile(path)) {
-            throw new CohortInputException(path + ": " + notAFileOrFolder(path));
+            throw new CohortInputException(path + ": " + FileKind.notAFileOrFolder(path));
         }
         Optional<String> notZip = folder ? Optional.empty() : FileKind.unlessZip(path);
         if (notZip.isPresent()) {
@@ -90,27 +83,6 @@ public final class Submissions {
             throw new CohortInputException(path + ": cannot read the " + (folder ? "folder" : "download") + " ("
                     + reason(e) + ")");
         }
-    }
-
-    /**
-     * What {@code path}, neither a file nor a folder, is: "no such file or folder", or "a named pipe, not ...",
-     * "a device, not ..." or "a socket, not ..." (its type, from its mode: Java has no words for them).
-     */
-    private static String notAFileOrFolder(Path path) {
-        int mode;
-        try {
-            mode = (Integer) Files.getAttribute(path, "unix:mode");
-        } catch (IOException | RuntimeException e) {
-            return Files.exists(path, LinkOption.NOFOLLOW_LINKS) ? "neither a file nor a folder"
-                    : "no such file or folder";
-        }
-        String kind = switch (mode & FILE_TYPE) {
-            case NAMED_PIPE -> "a named pipe";
-            case CHARACTER_DEVICE, BLOCK_DEVICE -> "a device";
-            case SOCKET -> "a socket";
-            default -> "neither a file nor a folder";
-        };
-        return kind + ", not Moodle's \"Download all submissions\" zip or the folder it unpacks to";
     }
 
     private List<Submission> resolveAll(Map<String, StudentFolder> students) throws IOException {
