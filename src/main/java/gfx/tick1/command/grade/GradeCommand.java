@@ -137,7 +137,14 @@ public final class GradeCommand implements Callable<Integer> {
         PrintWriter out = gate.wrap(spec.commandLine().getOut());
         PrintWriter err = gate.wrap(stopErr);
         spec.commandLine().setOut(out).setErr(err);
-        return format == Format.vpl ? vplEvaluation(out, err) : call(out, err);
+        try {
+            return format == Format.vpl ? vplEvaluation(out, err) : call(out, err);
+        } finally {
+            // The gate passes text on unflushed, and tick1 ends with System.exit: whatever way the grade ends,
+            // what it printed is written out (after a stop, the gate is shut and this does nothing).
+            out.flush();
+            err.flush();
+        }
     }
 
     /**
@@ -186,8 +193,6 @@ public final class GradeCommand implements Callable<Integer> {
         ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
                 .ifPresent(shortfall -> err.println("tick1 grade: warning: " + shortfall.line(options.scenesFolder())));
         sandbox.enforcement().warnings().forEach(warning -> err.println("tick1 grade: warning: " + warning));
-        out.flush();   // a cohort's closing lines: the gate passes them on unflushed, and tick1 ends with System.exit
-        err.flush();
         return status;
     }
 
