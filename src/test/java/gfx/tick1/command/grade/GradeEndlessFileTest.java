@@ -4,11 +4,13 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
@@ -39,7 +41,9 @@ class GradeEndlessFileTest {
                 + "more than any Sphere.java or Renderer.java").noneMatch(line -> line.contains("out of memory"));
     }
 
+    /** A cohort is graded only in the sandbox, whose absence would be the one line instead. */
     @Test
+    @ExtendWith(SandboxNeeded.class)
     void aWorksheetThatNeverEndsIsRefusedInOneLineBeforeAnythingIsGraded() throws Exception {
         Path download = Files.createDirectory(dir.resolve("download"));
 

@@ -3,16 +3,20 @@ package gfx.tick1.command.grade;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
  * A report folder that is the download itself, or inside a student's folder of it, would be read
- * as students' files by the next grade: it is refused in one line, before anything is written.
+ * as students' files by the next grade: it is refused in one line, before anything is written. A cohort
+ * is graded only in the sandbox, whose absence would be the one line instead.
  */
+@ExtendWith(SandboxNeeded.class)
 class GradeReportPlaceTest {
 
     @TempDir
