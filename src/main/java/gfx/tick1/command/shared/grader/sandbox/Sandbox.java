@@ -122,13 +122,11 @@ public final class Sandbox {
             throw new Unavailable("prlimit is not installed", "install the util-linux package (apt-get install "
                     + "util-linux)");
         }
-        boolean root;
-        try {
-            root = Integer.valueOf(0).equals(Files.getAttribute(Path.of("/proc/self"), "unix:uid"))
-                    && Files.isExecutable(RunLimits.SETPRIV);
-        } catch (IOException | UnsupportedOperationException e) {
-            throw new Unavailable("cannot tell which user this is (" + e.getMessage() + ")");
+        int uid = ThisUser.uid();
+        if (uid < 0) {
+            throw new Unavailable("cannot tell which user this is (/proc/self has no owner to read)");
         }
+        boolean root = uid == 0 && Files.isExecutable(RunLimits.SETPRIV);
         Host host = Host.find(bwrap, root);
         Sandbox sandbox = new Sandbox(host, root ? RunUsers.first() : -1, 0);
         sandbox.selfTest();
