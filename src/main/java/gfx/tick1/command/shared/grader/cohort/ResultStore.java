@@ -14,6 +14,7 @@ import gfx.tick1.engine.io.OwnFolder;
 import java.io.IOException;
 import java.io.Reader;
 import java.io.Writer;
+import java.net.URISyntaxException;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
 import java.nio.charset.CharacterCodingException;
@@ -34,6 +35,7 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Properties;
 import java.util.UUID;
+import java.util.stream.Stream;
 
 /**
  * The cohort grade's memory: each finished result, stored the moment it is known, so that a grade
@@ -79,25 +81,26 @@ public final class ResultStore {
     }
 
     /**
-     * The key of a submission's result: SHA-256 of the store's format, this program's version and
-     * Java's, the options that change a grade, what the sandbox held the code to ({@code --no-sandbox}
-     * or not, and what this machine let it enforce: code can pass under weaker rules and fail under
-     * stronger ones), every grading scene's name and bytes, and the two files' names (they appear in
+     * The key of a submission's result: SHA-256 of the store's format, this program's version, build
+     * ({@link #build}) and Java's, the options that change a grade, what the sandbox held the code to
+     * ({@code --no-sandbox} or not, and what this machine let it enforce: code can pass under weaker rules
+     * and fail under stronger ones), every grading scene's name and bytes, and the two files' names (they appear in
      * messages) and bytes. Each part is preceded by its length, so that no two different inputs make
      * the same bytes.
      */
     static String key(Submission submission, Grading grading, Enforcement enforcement) throws IOException {
-        MessageDigest sha;
-        try {
-            sha = MessageDigest.getInstance("SHA-256");
-        } catch (NoSuchAlgorithmException e) {
-            throw new IllegalStateException("every Java has SHA-256", e);
-        }
+        return key(submission, grading, enforcement, ThisBuild.DIGEST);
+    }
+
+    /** {@link #key(Submission, Grading, Enforcement)}, with {@code build} the digest of tick1's code. */
+    static String key(Submission submission, Grading grading, Enforcement enforcement, String build)
+            throws IOException {
+        MessageDigest sha = sha256();
         // tick1's jar names its version in its manifest, for every package of the jar.
         String version = ResultStore.class.getPackage().getImplementationVersion();
         Grading.Limits limits = grading.limits();
         add(sha, FORMAT);
-        add(sha, "tick1 " + (version == null ? "(development build)" : version));
+        add(sha, "tick1 " + (version == null ? "(development build)" : version) + " build " + build);
         add(sha, "Java " + System.getProperty("java.version"));
         add(sha, limits.width() + "x" + limits.height() + " " + limits.timeLimit().toMillis() + " ms "
                 + limits.memoryMegabytes() + " MiB reference " + limits.referenceChoice());
@@ -114,6 +117,44 @@ public final class ResultStore {
             add(sha, file.content());
         }
         return HexFormat.of().formatHex(sha.digest());
+    }
+
+    /**
+     * The digest of tick1's code at {@code code}, its jar or the folder of its classes: a new build of one version
+     * changes it, and its results are graded again. Unreadable, it is a fresh one each run: nothing is reused.
+     */
+    static String build(Path code) {
+        try (Stream<Path> files = Files.walk(code)) {
+            MessageDigest sha = sha256();
+            for (Path file : files.filter(Files::isRegularFile).sorted().toList()) {
+                add(sha, code.relativize(file).toString());
+                add(sha, Files.readAllBytes(file));
+            }
+            return HexFormat.of().formatHex(sha.digest());
+        } catch (IOException | RuntimeException e) {
+            return "unread " + UUID.randomUUID();
+        }
+    }
+
+    /** The digest of the code of this tick1, read once, when the first key is made. */
+    private static final class ThisBuild {
+        static final String DIGEST = digest();
+
+        private static String digest() {
+            try {
+                return build(Path.of(ResultStore.class.getProtectionDomain().getCodeSource().getLocation().toURI()));
+            } catch (URISyntaxException | RuntimeException e) {
+                return "unread " + UUID.randomUUID();
+            }
+        }
+    }
+
+    private static MessageDigest sha256() {
+        try {
+            return MessageDigest.getInstance("SHA-256");
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java has SHA-256", e);
+        }
     }
 
     private static void add(MessageDigest sha, String text) {
@@ -169,7 +210,12 @@ public final class ResultStore {
 
     /** A new folder to write a result's images into before {@link #save} stores it. */
     Path newEntry() throws IOException {
-        return Files.createDirectory(folder.resolve(WRITING + Leftovers.mark() + UUID.randomUUID()));
+        return Files.createDirectory(writingName());
+    }
+
+    /** A new name for a folder being written, which carries this process's mark. */
+    private Path writingName() {
+        return folder.resolve(WRITING + Leftovers.mark() + UUID.randomUUID());
     }
 
     /**
@@ -221,8 +267,16 @@ public final class ResultStore {
             if (!Files.isDirectory(folderOf(key), LinkOption.NOFOLLOW_LINKS)) {
                 throw e;
             }
-            // The same files graded by another job meanwhile: that result stands.
-            WorkFolder.delete(entry);
+            if (load(key, result.submission()) != null) {
+                // The same files graded by another job meanwhile: that result stands.
+                WorkFolder.delete(entry);
+            } else {
+                // A damaged result, no result: renamed as being written (a stop leaves it to the next start), then
+                // deleted, so that this one takes its place.
+                Path damaged = Files.move(folderOf(key), writingName(), StandardCopyOption.ATOMIC_MOVE);
+                WorkFolder.delete(damaged);
+                Files.move(entry, folderOf(key), StandardCopyOption.ATOMIC_MOVE);
+            }
         }
         force(folder);
     }

@@ -33,4 +33,22 @@ class ResultStoreDamagedTest {
 
         assertThat(store.load("key", SUBMISSION)).as("a damaged stored result").isNull();
     }
+
+    @Test
+    void aDamagedStoredResultIsReplacedByTheNextResultSavedUnderItsKey() throws IOException {
+        ResultStore store = new ResultStore(state);
+        store.save("key", passed(3), store.newEntry());
+        Files.write(store.folderOf("key").resolve("result.properties"), new byte[] {(byte) 0xff, (byte) 0xfe, '\n'},
+                StandardOpenOption.APPEND);
+
+        store.save("key", passed(5), store.newEntry());
+
+        assertThat(store.load("key", SUBMISSION)).as("the result stored over a damaged one").isNotNull()
+                .extracting(StudentResult::time).isEqualTo(Duration.ofMillis(5));
+    }
+
+    private static StudentResult passed(long millis) {
+        return new StudentResult(SUBMISSION, new StudentResult.Summary(true, 2, 2, Category.Outcome.PASSED, "PASSED"),
+                List.of(), Duration.ofMillis(millis));
+    }
 }

@@ -8,6 +8,7 @@ import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.Enforcement;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import org.junit.jupiter.api.BeforeEach;
@@ -79,5 +80,18 @@ class ResultStoreKeyTest {
         assertThat(ResultStore.key(SUBMISSION, grading, new Enforcement(true, true, true, false, true)))
                 .as("the key of a result whose runs could reserve disk space unseen")
                 .isNotEqualTo(ResultStore.key(SUBMISSION, grading, EVERYTHING));
+    }
+
+    @Test
+    void aResultGradedByAnotherBuildOfTheSameVersionIsNotReused(@TempDir Path builds) throws IOException {
+        Path oneBuild = Files.createDirectories(builds.resolve("one").resolve("gfx"));
+        Path otherBuild = Files.createDirectories(builds.resolve("other").resolve("gfx"));
+        Files.write(oneBuild.resolve("Grader.class"), new byte[] {(byte) 0xca, (byte) 0xfe, 1});
+        Files.write(otherBuild.resolve("Grader.class"), new byte[] {(byte) 0xca, (byte) 0xfe, 2});
+
+        assertThat(ResultStore.key(SUBMISSION, grading, EVERYTHING, ResultStore.build(oneBuild.getParent())))
+                .as("the key of a result graded by another build of tick1's code, of the same version")
+                .isNotEqualTo(ResultStore.key(SUBMISSION, grading, EVERYTHING, ResultStore.build(otherBuild
+                        .getParent())));
     }
 }
