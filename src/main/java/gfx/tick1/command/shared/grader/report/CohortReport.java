@@ -5,8 +5,11 @@ import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.engine.io.IoErrors;
 import java.io.IOException;
+import java.nio.file.DirectoryNotEmptyException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -81,6 +84,7 @@ public final class CohortReport {
             }
             results.add(shown);
         }
+        removeOthers(reportFolder, given);
         ReportFiles.write(reportFolder.resolve(FeedbackZip.NAME), out -> FeedbackZip.write(reportFolder, written, out));
         List<String> beside = new ArrayList<>(List.of(FeedbackZip.NAME));
         if (Files.isRegularFile(reportFolder.resolve(ReportFiles.GRADES), LinkOption.NOFOLLOW_LINKS)) {
@@ -93,6 +97,37 @@ public final class CohortReport {
         }
         ReportFiles.write(reportFolder.resolve(INDEX), CohortPage.html(results, grades, beside, sections));
         return List.copyOf(unwritten);
+    }
+
+    /**
+     * Deletes the feedback folders of students not among {@code results} (no longer in the download): their files,
+     * then the folder; one holding a folder, which tick1 never writes there, is left as it is.
+     */
+    private static void removeOthers(Path reportFolder, List<StudentResult> results) throws IOException {
+        Set<String> folders = new HashSet<>();
+        results.forEach(result -> folders.add(result.submission().folder()));
+        try (DirectoryStream<Path> students = Files.newDirectoryStream(reportFolder.resolve(ReportFiles.FEEDBACK))) {
+            for (Path student : students) {
+                if (folders.contains(student.getFileName().toString())
+                        || !Files.isDirectory(student, LinkOption.NOFOLLOW_LINKS)) {
+                    continue;
+                }
+                try (DirectoryStream<Path> files = Files.newDirectoryStream(student)) {
+                    for (Path file : files) {
+                        if (!Files.isDirectory(file, LinkOption.NOFOLLOW_LINKS)) {
+                            Files.delete(file);
+                        }
+                    }
+                }
+                try {
+                    Files.delete(student);
+                } catch (DirectoryNotEmptyException e) {
+                    // a folder of someone else's in it: left
+                }
+            }
+        } catch (NoSuchFileException e) {
+            // no feedback folder: no student's feedback was written
+        }
     }
 
     private static void checkNames(List<StudentResult> results) {
