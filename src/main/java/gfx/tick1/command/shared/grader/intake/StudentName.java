@@ -1,5 +1,7 @@
 package gfx.tick1.command.shared.grader.intake;
 
+import java.util.List;
+import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -66,5 +68,22 @@ record StudentName(String id, String fullName, boolean moodles) {
     static String[] looseFileFolder(String fileName) {
         Matcher moodle = MOODLE_LOOSE_FILE.matcher(fileName);
         return moodle.matches() ? new String[] {moodle.group(1), moodle.group(4)} : null;
+    }
+
+    /**
+     * The top entry of a download that holds the download rather than being one student's: no top entry is named as
+     * Moodle names a student's, and this one's own entries are. {@code inside} gives each top entry's own entries'
+     * names; null when no top entry holds the download.
+     */
+    static String holdingTheDownload(Map<String, List<String>> inside) {
+        if (inside.keySet().stream().anyMatch(StudentName::moodleNamed)) {
+            return null;
+        }
+        return inside.entrySet().stream().filter(top -> top.getValue().stream().anyMatch(StudentName::moodleNamed))
+                .map(Map.Entry::getKey).findFirst().orElse(null);
+    }
+
+    private static boolean moodleNamed(String name) {
+        return ofFolder(name).moodles() || looseFileFolder(name) != null;
     }
 }

@@ -141,12 +141,15 @@ public final class Submissions {
             throw new CohortInputException(path + ": " + e.getMessage());
         }
         Map<String, StudentFolder> students = new TreeMap<>();
+        Map<String, List<String>> inside = new TreeMap<>();
         for (ZipArchive.Entry entry : zip.entries()) {
             int slash = entry.name().indexOf('/');
             String top = slash < 0 ? entry.name() : entry.name().substring(0, slash);
             if (passedOver(top)) {
                 continue;
             }
+            inside.computeIfAbsent(top, name -> new ArrayList<>()).add(entry.name().substring(slash + 1)
+                    .replaceFirst("/.*", ""));
             if (slash < 0 && !entry.directory()) {
                 StudentFolder student = looseFile(students, top);
                 if (student != null) {
@@ -158,6 +161,11 @@ public final class Submissions {
             if (slash >= 0 && !entry.directory()) {
                 student.add(entry.name().substring(slash + 1), outerReader(path, zip, entry));
             }
+        }
+        String holding = StudentName.holdingTheDownload(inside);
+        if (holding != null) {
+            throw new CohortInputException(path + ": the zip holds the download in its folder " + oneLine(holding)
+                    + ", not the students' folders; --submissions wants Moodle's zip itself, or that folder unpacked");
         }
         return students;
     }
@@ -183,10 +191,10 @@ public final class Submissions {
         } catch (IOException e) {
             throw new CohortInputException(root + ": cannot read the folder (" + reason(e) + ")");
         }
-        Path holding = heldDownload(tops);
+        String holding = StudentName.holdingTheDownload(inside(tops));
         if (holding != null) {
             throw new CohortInputException(root + ": the folder holds the download, not the students' folders; "
-                    + "--submissions wants the download itself: " + oneLine(holding.toString()));
+                    + "--submissions wants the download itself: " + oneLine(root.resolve(holding).toString()));
         }
         for (Path top : tops) {
             String name = top.getFileName().toString();
@@ -210,31 +218,18 @@ public final class Submissions {
         return students;
     }
 
-    /**
-     * The unpacked download among {@code tops}, the entries of the folder given, when the folder holds it rather
-     * than being it: no entry is named as Moodle names a student's, and one folder's own folders are. Null when not.
-     */
-    private static Path heldDownload(List<Path> tops) throws IOException {
-        if (tops.stream().anyMatch(top -> moodleNamed(top.getFileName().toString()))) {
-            return null;
-        }
+    /** The names in each of the folders among {@code tops}, by the folder's name (a link is no folder). */
+    private static Map<String, List<String>> inside(List<Path> tops) throws IOException {
+        Map<String, List<String>> inside = new TreeMap<>();
         for (Path top : tops) {
-            if (!Files.isDirectory(top, LinkOption.NOFOLLOW_LINKS)) {
-                continue;
-            }
-            try (DirectoryStream<Path> inside = Files.newDirectoryStream(top)) {
-                for (Path entry : inside) {
-                    if (moodleNamed(entry.getFileName().toString())) {
-                        return top;
-                    }
+            List<String> names = inside.computeIfAbsent(top.getFileName().toString(), name -> new ArrayList<>());
+            if (Files.isDirectory(top, LinkOption.NOFOLLOW_LINKS)) {
+                try (DirectoryStream<Path> entries = Files.newDirectoryStream(top)) {
+                    entries.forEach(entry -> names.add(entry.getFileName().toString()));
                 }
             }
         }
-        return null;
-    }
-
-    private static boolean moodleNamed(String name) {
-        return StudentName.ofFolder(name).moodles() || StudentName.looseFileFolder(name) != null;
+        return inside;
     }
 
     private void walk(Path folder, StudentFolder student) throws IOException {

@@ -211,6 +211,17 @@ class SubmissionsTest {
     }
 
     @Test
+    void aZipWhoseOneFolderHoldsTheDownloadIsRefusedNamingTheFolder() throws IOException {
+        Path rezipped = write("rezipped.zip", zip(entries("Tick 1-1234/Ann_7_assignsubmission_file/Sphere.java",
+                SPHERE, "Tick 1-1234/Ann_7_assignsubmission_file/Renderer.java", RENDERER)));
+
+        assertThatThrownBy(() -> Submissions.read(rezipped)).as("a zip holding the download in a folder")
+                .isInstanceOf(CohortInputException.class)
+                .hasMessage(rezipped + ": the zip holds the download in its folder Tick 1-1234, not the students' "
+                        + "folders; --submissions wants Moodle's zip itself, or that folder unpacked");
+    }
+
+    @Test
     void submissionsAreSortedByFolderName() throws IOException {
         List<Submission> cohort = readZip(entries("c/Sphere.java", SPHERE, "a/Sphere.java", SPHERE,
                 "b/Sphere.java", SPHERE));
