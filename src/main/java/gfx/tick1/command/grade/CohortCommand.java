@@ -50,7 +50,8 @@ final class CohortCommand {
 
     private final GradeOptions options;
     private final CohortOptions cohortOptions;
-    private final Sandbox sandbox;
+    /** The sandbox, made once the stop line is ready ({@link #call}). */
+    private Sandbox sandbox;
     private final PrintWriter out;
     private final PrintWriter err;
     /** The worksheet given, read and checked before anything is graded; null without --worksheet. */
@@ -60,11 +61,11 @@ final class CohortCommand {
     /** How many submissions the download holds, once read. */
     private volatile int submissionCount;
 
-    CohortCommand(GradeOptions options, CohortOptions cohortOptions, Sandbox sandbox, PrintWriter out,
-            PrintWriter err) {
+    /** The grader's own work folder, once made: a stop deletes it. */
+    private volatile Path work;
+    CohortCommand(GradeOptions options, CohortOptions cohortOptions, PrintWriter out, PrintWriter err) {
         this.options = options;
         this.cohortOptions = cohortOptions;
-        this.sandbox = sandbox;
         this.out = out;
         this.err = err;
     }
@@ -72,7 +73,30 @@ final class CohortCommand {
     /** Whether the grade ran to its end, or was stopped first (Ctrl-C, SIGTERM): whichever comes first holds. */
     private enum Ending { RUNNING, ENDED, STOPPED }
 
-    int call() throws IOException, InterruptedException {
+    /** Where the cohort's sandbox comes from: made when the grade asks for it. */
+    @FunctionalInterface
+    interface Sandboxes {
+        Sandbox make() throws IOException, InterruptedException;
+    }
+
+    /**
+     * Makes the sandbox, reads the download, grades and writes the report. From the start, a stop (Ctrl-C, SIGTERM)
+     * is said in one line by the shutdown hook ({@link #stop}): the JVM ends when its hooks do, whatever else runs.
+     */
+    int call(Sandboxes sandboxes) throws IOException, InterruptedException {
+        AtomicReference<CohortGrade> running = new AtomicReference<>();
+        AtomicReference<Ending> ending = new AtomicReference<>(Ending.RUNNING);
+        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> stop(running, ending));
+        try {
+            sandbox = sandboxes.make();
+            return call(running);
+        } finally {
+            ending.compareAndSet(Ending.RUNNING, Ending.ENDED);
+            cleanUp.now();
+        }
+    }
+
+    private int call(AtomicReference<CohortGrade> running) throws IOException, InterruptedException {
         refuseReportInTheDownload();
         List<Submission> submissions;
         try {
@@ -108,20 +132,8 @@ final class CohortCommand {
         if (leftover != null) {
             err.println("tick1 grade: " + leftover);
         }
-        Path work = Leftovers.newWorkFolder("grade");
-        AtomicReference<CohortGrade> running = new AtomicReference<>();
-        // At the end, or on Ctrl-C or SIGTERM: stop the students' processes and delete the work
-        // folder. Finished results are in the store already; the one being stored is renamed into
-        // place whole or not at all. Stopped, the JVM ends when its shutdown hooks do, whatever the
-        // grade's threads are doing: so the hook waits for them, and says itself that the grade stopped.
-        AtomicReference<Ending> ending = new AtomicReference<>(Ending.RUNNING);
-        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> stop(running, ending, work));
-        try {
-            return gradeAndReport(submissions, work, running);
-        } finally {
-            ending.compareAndSet(Ending.RUNNING, Ending.ENDED);
-            cleanUp.now();
-        }
+        work = Leftovers.newWorkFolder("grade");
+        return gradeAndReport(submissions, work, running);
     }
 
     /**
@@ -149,7 +161,7 @@ final class CohortCommand {
      * grade cut short began to store is then deleted) and says in one line that it stopped, and how many
      * results are kept.
      */
-    private void stop(AtomicReference<CohortGrade> running, AtomicReference<Ending> ending, Path work) {
+    private void stop(AtomicReference<CohortGrade> running, AtomicReference<Ending> ending) {
         boolean stopped = ending.compareAndSet(Ending.RUNNING, Ending.STOPPED);
         CohortGrade cohort = running.getAndSet(null);
         if (cohort != null) {
@@ -169,7 +181,9 @@ final class CohortCommand {
                     + (submissionCount - cohort.kept())) + " and write the report");
             err.flush();
         }
-        GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
+        if (work != null) {
+            GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
+        }
     }
 
     /** Prepares the grading and the store, grades every submission, and writes the report. */
@@ -228,9 +242,14 @@ final class CohortCommand {
         out.println(CohortEnding.of(results, done.stored()).line());
         out.println("Grades: " + report.resolve(ReportFiles.GRADES) + "; feedback: "
                 + report.resolve(ReportFiles.FEEDBACK_ZIP) + "; report: " + report.resolve("index.html"));
-        for (Ungraded ungraded : done.ungraded()) {
-            err.println("tick1 grade: " + printable(ungraded.folder()) + ": not graded: " + ungraded.why()
-                    + (ungraded.grader() ? "" : " " + report));
+        done.ungraded().stream().filter(Ungraded::grader).forEach(ungraded -> err.println("tick1 grade: "
+                + printable(ungraded.folder()) + ": not graded: " + ungraded.why()));
+        // The report folder's fault is one, whoever met it first: said once, with that one's cause.
+        List<Ungraded> unstored = done.ungraded().stream().filter(ungraded -> !ungraded.grader()).toList();
+        if (!unstored.isEmpty()) {
+            err.println("tick1 grade: " + report + ": cannot store results there (" + unstored.get(0).why() + "): "
+                    + Counted.of(unstored.size(), "submission") + " not graded; the same command grades them once it "
+                    + "can");
         }
         unwritten.forEach((folder, why) -> err.println("tick1 grade: " + printable(folder) + ": its feedback "
                 + "cannot be written in " + report + " (" + why + "): its grade is in grades.csv, but its feedback "

@@ -58,7 +58,7 @@ public final class GradeCommand implements Callable<Integer> {
     @ExitStatus("the command line is wrong, or a file given, the temporary folder or the sandbox is unusable")
     public static final int EXIT_USAGE = 2;
     @ExitStatus("a scene failed and its images could not be written to the report folder; with --submissions: the "
-            + "report could not be written, or a submission's images could not be stored")
+            + "report could not be written, or a submission's result could not be stored")
     public static final int EXIT_CANNOT_WRITE = 3;
     @ExitStatus("with --submissions: the report is written, but some submissions were not graded because the "
             + "grader ran short of its own disk or memory (standard error names them): free some, and the same "
@@ -188,8 +188,13 @@ public final class GradeCommand implements Callable<Integer> {
         TemporaryFolder.problem().ifPresent(problem -> {
             throw new CommandFailure(EXIT_USAGE, problem);
         });
-        Sandbox sandbox = sandbox(err);
-        int status = call(sandbox, out, err);
+        // A cohort's stop is said from the start: the sandbox is made once the cohort has its stop line ready.
+        Sandbox[] made = new Sandbox[1];
+        CohortCommand.Sandboxes sandboxes = () -> made[0] = hiding(sandbox(err));
+        int status = target.cohort != null ? new CohortCommand(options, target.cohort, out, err).call(sandboxes)
+                : new StudentGrade(options, target.student.sphere, target.student.renderer, vpl() ? gradeRange() : null,
+                        sandboxes.make(), gate, stopErr).call(out, err);
+        Sandbox sandbox = made[0];
         ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
                 .ifPresent(shortfall -> err.println("tick1 grade: warning: " + shortfall.line(options.scenesFolder())));
         sandbox.enforcement().warnings().forEach(warning -> err.println("tick1 grade: warning: " + warning));
@@ -220,20 +225,16 @@ public final class GradeCommand implements Callable<Integer> {
         }
     }
 
-    private int call(Sandbox confined, PrintWriter out, PrintWriter err) throws IOException, InterruptedException {
-        Sandbox sandbox = confined;
-        if (options.scenesFolder() != null) {
-            try {
-                sandbox = sandbox.hiding(organisersScenes());
-            } catch (Sandbox.CannotHide e) {
-                throw new CommandFailure(EXIT_USAGE, e.getMessage());
-            }
+    /** {@code sandbox}, hiding the --scenes folder when one is given. */
+    private Sandbox hiding(Sandbox sandbox) throws IOException {
+        if (options.scenesFolder() == null) {
+            return sandbox;
         }
-        if (target.cohort != null) {
-            return new CohortCommand(options, target.cohort, sandbox, out, err).call();
+        try {
+            return sandbox.hiding(organisersScenes());
+        } catch (Sandbox.CannotHide e) {
+            throw new CommandFailure(EXIT_USAGE, e.getMessage());
         }
-        return new StudentGrade(options, target.student.sphere, target.student.renderer,
-                vpl() ? gradeRange() : null, sandbox, gate, stopErr).call(out, err);
     }
 
     static void reportUndeleted(String problem, PrintWriter err) {

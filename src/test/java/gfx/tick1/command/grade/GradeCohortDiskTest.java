@@ -68,6 +68,22 @@ class GradeCohortDiskTest {
     }
 
     @Test
+    void aFailureOnAGraderDiskThatWasNearlyFullBeforeItsRunIsTheStudentsOwn() throws Exception {
+        // 10 MiB free from the start, less than the 16 MiB of a full disk: the runs of both students fit in it (the
+        // passing one passes), and the failing run, which filled nothing, fails on its own.
+        Path nearlyFull = temporaryFolder("nearly-full-tmp", "size=64m");
+        Files.write(nearlyFull.resolve("someone else's file"), new byte[54 << 20]);
+        StudentSolution correct = StudentSolution.correct();
+        Path zip = download(correct, correct.editRenderer("return image;",
+                "image.setRGB(0, 0, 0xFFFFFF); return image;"));
+
+        String run = grade(nearlyFull, zip, dir.resolve("report"));
+
+        assertThat(run).as("what the grade printed").contains("1 passed, 1 failed, 0 not graded")
+                .doesNotContain("not graded:");
+    }
+
+    @Test
     void aGraderTemporaryFolderOutOfFilesFailsNoCorrectSubmission() throws Exception {
         // Room for far more bytes than a run may write, and for a few dozen files and folders: enough for the
         // grader's own folders and the sources, not for every class file the compiler writes.

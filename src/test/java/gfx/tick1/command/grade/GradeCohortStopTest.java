@@ -80,6 +80,60 @@ class GradeCohortStopTest {
     }
 
     /**
+     * A correct student, a twin with the same files (graded once, for both), and a slow one, stopped while the slow
+     * one's code runs: the twin's result is kept with the one it shares, and the stop line counts both.
+     */
+    @Test
+    void aStopCountsTheTwinOfAStudentGradedWholeAsKept() throws Exception {
+        StudentSolution correct = StudentSolution.correct();
+        List<Student> students = new ArrayList<>(List.of(new Student("Correct 0", 100, files(correct), true),
+                new Student("Correct 1", 101, files(correct), true)));
+        students.add(twoCorrectThenOneSlow().get(2));
+        Path report = dir.resolve("report");
+        Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(moodleZip(dir.resolve("twins.zip"),
+                students), report, "--jobs", "1", TIME_LIMIT[0], TIME_LIMIT[1]));
+        awaitTheSlowCode(dir, grade, report.resolve(CohortCommand.STATE_FOLDER), 1);
+
+        grade.destroy();   // SIGTERM
+        assertThat(grade.waitFor(120, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+
+        String said = Files.readString(dir.resolve("grade.log"));
+        assertThat(said.lines().filter(line -> line.startsWith("tick1 grade: stopped"))).as(said).singleElement()
+                .asString().startsWith("tick1 grade: stopped: the results of 2 of 3 submissions are kept");
+    }
+
+    /**
+     * A grade stopped with SIGINT before any student's grade began (while the sandbox is being made: its bubblewrap
+     * here waits before it runs) says so in the one stop line, as a later stop does.
+     */
+    @Test
+    void aStopBeforeAnyStudentsGradeBeganSaysInOneLineThatItStopped() throws Exception {
+        assumeThat(!sigintIgnored()).as("SIGINT is not ignored here (the tests run in the foreground), so the grade's "
+                + "JVM can be stopped with it").isTrue();
+        // The sandbox's check runs bubblewrap as a sandbox user, who may write only in a folder open to all.
+        Path marks = Files.createDirectory(dir.resolve("marks"));
+        Files.setPosixFilePermissions(marks, PosixFilePermissions.fromString("rwxrwxrwx"));
+        Path began = marks.resolve("bubblewrap-began");
+        Path slowBubblewrap = Files.writeString(dir.resolve("slow-bwrap"), "#!/bin/sh\ntouch '" + began
+                + "'\nsleep 5\nexec /usr/bin/bwrap \"$@\"\n");
+        Files.setPosixFilePermissions(slowBubblewrap, PosixFilePermissions.fromString("rwxr-xr-x"));
+        Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, List.of("-Dtick1.grade.bwrap=" + slowBubblewrap),
+                gradeArguments(moodleZip(dir.resolve("download.zip"), twoCorrectThenOneSlow()), dir.resolve("report")));
+        for (int i = 0; i < 600 && grade.isAlive() && !Files.exists(began); i++) {
+            Thread.sleep(100);
+        }
+        List<ProcessHandle> waiting = grade.descendants().toList();
+
+        new ProcessBuilder("/bin/kill", "-INT", Long.toString(grade.pid())).start().waitFor();
+        assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+        waiting.forEach(ProcessHandle::destroy);
+
+        String said = Files.readString(dir.resolve("grade.log"));
+        assertThat(said.lines().filter(line -> line.startsWith("tick1 grade: stopped"))).as(said).singleElement()
+                .asString().contains("before any submission was graded");
+    }
+
+    /**
      * The grade of two correct students and a slow one, stopped with a signal while the slow one's code ran, as
      * it was when it ended: what it said, its exit status, and the names in its state folder and its temporary
      * folder. The tests that read the same stop share it.
@@ -130,7 +184,7 @@ class GradeCohortStopTest {
         Path report = dir.resolve("report");
         Process killed = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, "--jobs", "2",
                 TIME_LIMIT[0], TIME_LIMIT[1]));
-        awaitTheSlowCode(dir, killed, report.resolve(CohortCommand.STATE_FOLDER));
+        awaitTheSlowCode(dir, killed, report.resolve(CohortCommand.STATE_FOLDER), 2);
         killed.destroyForcibly().waitFor();
         try (Stream<Path> left = Files.list(dir.resolve("tmp"))) {
             assertThat(left).as("what the killed grade left in its temporary folder").isNotEmpty();
@@ -186,19 +240,19 @@ class GradeCohortStopTest {
             throws Exception {
         Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, "--jobs", "1",
                 TIME_LIMIT[0], TIME_LIMIT[1]));
-        awaitTheSlowCode(dir, grade, report.resolve(CohortCommand.STATE_FOLDER));
+        awaitTheSlowCode(dir, grade, report.resolve(CohortCommand.STATE_FOLDER), 2);
         new ProcessBuilder("/bin/kill", "-" + signal, Long.toString(grade.pid())).start().waitFor();
         assertThat(grade.waitFor(120, TimeUnit.SECONDS)).as("the grade ended").isTrue();
         return grade;
     }
 
     /**
-     * Waits (at most two minutes) for the two correct students' results to be stored and the
+     * Waits (at most two minutes) for {@code stored} results to be stored (the correct students') and the
      * slow student's code to run.
      */
-    private static void awaitTheSlowCode(Path dir, Process grade, Path state) throws IOException,
+    private static void awaitTheSlowCode(Path dir, Process grade, Path state, int stored) throws IOException,
             InterruptedException {
-        for (int i = 0; i < 1200 && grade.isAlive() && !(storedResults(state) == 2 && grade.descendants()
+        for (int i = 0; i < 1200 && grade.isAlive() && !(storedResults(state) == stored && grade.descendants()
                 .anyMatch(p -> p.info().commandLine().orElse("").contains("StudentHarness render"))); i++) {
             Thread.sleep(100);
         }

@@ -7,7 +7,7 @@ import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.ChildOutput;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
-import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.io.ProgressLine;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -266,12 +266,15 @@ public final class CohortGrade {
                 if (result != null) {
                     progress.done(result.passed());
                 }
-            } catch (GraderShort | OutOfMemoryError e) {
+            } catch (GraderShort | ReportUnwritable | OutOfMemoryError e) {
                 if (!stopping) {
-                    String why = e instanceof GraderShort ? e.getMessage() : "the grader ran out of memory (give it "
+                    String why = e instanceof IOException ? e.getMessage() : "the grader ran out of memory (give it "
                             + "more with JAVA_OPTS=-Xmx...) and grade again";
-                    ungraded.add(new Ungraded(submission.folder(), why, Ungraded.Cause.GRADER_SHORT));
-                    results[index] = StudentResult.notGraded(submission, why);
+                    Ungraded.Cause cause = e instanceof ReportUnwritable ? Ungraded.Cause.REPORT_FOLDER
+                            : Ungraded.Cause.GRADER_SHORT;
+                    ungraded.add(new Ungraded(submission.folder(), why, cause));
+                    results[index] = StudentResult.notGraded(submission, cause == Ungraded.Cause.REPORT_FOLDER
+                            ? "its result could not be stored in the report folder (" + why + ")" : why);
                     progress.done(false);
                 }
             } catch (IOException | RuntimeException | Error e) {
@@ -290,15 +293,17 @@ public final class CohortGrade {
         @Override
         public void storeResult(int index, SubmissionGrader.Graded graded, Path entry) throws IOException {
             Submission submission = submissions.get(index);
-            if (graded.imagesUnwritable()) {
-                ungraded.add(new Ungraded(submission.folder(), "its images could not be stored in",
-                        Ungraded.Cause.REPORT_FOLDER));
-                WorkFolder.delete(entry);
-                return;
-            }
             String key = ResultStore.key(submission, grading, sandbox.enforcement());
-            store.save(key, graded.result(), entry);
-            kept.incrementAndGet();
+            if (graded.imagesUnwritable()) {
+                throw new ReportUnwritable(ResultStore.refusal(entry));
+            }
+            try {
+                store.save(key, graded.result(), entry);
+            } catch (IOException e) {
+                throw new ReportUnwritable(IoErrors.reason(e));
+            }
+            // Its twins' result too: theirs is the same, stored under the same key.
+            kept.addAndGet(1 + Collections.frequency(sameAsEarlier.values(), key));
             results[index] = graded.result();
             images[index] = store.folderOf(key);
         }

@@ -6,6 +6,7 @@ import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import gfx.tick1.engine.io.IoErrors;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Writer;
@@ -75,26 +76,37 @@ final class CohortJob {
         if (grader == null) {
             setUp();
         }
-        Path submissionWork = Files.createDirectory(folder.resolve("submission-" + index));
-        Path entry = cohort.store.newEntry();
+        Path entry;
         try {
-            return stored(grader.grade(submission, submissionWork, entry, new PrintWriter(Writer.nullWriter()),
-                    cohort.err), index, entry, run);
+            entry = cohort.store.newEntry();
+        } catch (IOException e) {
+            throw new ReportUnwritable(IoErrors.reason(e));
+        }
+        Path submissionWork = null;
+        try {
+            // Full before the run, the disk was as full for the runs that passed on it: see GraderDisk.
+            boolean fullBefore = GraderDisk.shortOfSpace(folder) != null;
+            submissionWork = Files.createDirectory(folder.resolve("submission-" + index));
+            // What the grade says is for one student's own grade: a cohort's (its images not stored) says the cohort.
+            PrintWriter quiet = new PrintWriter(Writer.nullWriter());
+            SubmissionGrader.Graded graded = grader.grade(submission, submissionWork, entry, quiet, quiet);
+            String diskShort = graded.result().passed() || fullBefore ? null : GraderDisk.shortOfSpace(folder);
+            if (diskShort != null) {
+                throw new GraderShort(diskShort);
+            }
+            return stored(graded, index, entry, run);
         } finally {
             // Stored, the entry has been renamed to its key; otherwise (an error, a stop) it goes.
             WorkFolder.delete(entry);
-            WorkFolder.delete(submissionWork);
+            if (submissionWork != null) {
+                WorkFolder.delete(submissionWork);
+            }
         }
     }
 
     /** Stores a grade's result in {@code entry}; null, with nothing stored, when stop() cut it short. */
     private StudentResult stored(SubmissionGrader.Graded graded, int index, Path entry, Results run)
-            throws IOException, InterruptedException {
-        String diskShort = graded.result().passed() ? null : GraderDisk.shortOfSpace(folder);
-        if (diskShort != null) {
-            WorkFolder.delete(entry);
-            throw new GraderShort(diskShort);
-        }
+            throws IOException {
         // A grade cut short by stop() ended after stopping was set: it is never stored.
         if (cohort.stopped()) {
             WorkFolder.delete(entry);

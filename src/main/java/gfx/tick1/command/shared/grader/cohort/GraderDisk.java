@@ -14,11 +14,13 @@ import java.util.concurrent.TimeUnit;
  * or missing image would. Such a result is not stored; the submission is "not graded", and the
  * next run of the same command grades it again.
  *
- * <p>It is decided from what the run hit, just after it failed and before its files are deleted:
- * a disk that still has room for tick1's own part of a run ({@link #FULL_BYTES}, {@link #FULL_FILES})
- * was not full when the run wrote, so the failure is the student's, however much less room there
- * is than the output limit ({@link WorkFolder#RUN_SPACE}) allows a run to use. A run that filled
- * the disk leaves it full: that student is not graded, not the ones that came near it.
+ * <p>It is decided from what the run hit: the disk full just after it failed, before its files are
+ * deleted, and not full when it began. A disk that still has room for tick1's own part of a run
+ * ({@link #FULL_BYTES}, {@link #FULL_FILES}) was not full when the run wrote, so the failure is the
+ * student's, however much less room there is than the output limit ({@link WorkFolder#RUN_SPACE})
+ * allows a run to use. A disk already that full before the run began was as full for the runs that
+ * passed on it: the run filled nothing, and its failure is its own. A run that filled the disk leaves
+ * it full: that student is not graded, not the ones that came near it.
  *
  * <p>It is decided from the grader's disk alone, as the file system reports it after the failure,
  * never from the result's words: those are the student's to choose (an exception's message, a

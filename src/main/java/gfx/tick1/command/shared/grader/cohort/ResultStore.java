@@ -10,6 +10,7 @@ import gfx.tick1.command.shared.grader.model.Submission;
 import gfx.tick1.command.shared.grader.sandbox.Enforcement;
 import gfx.tick1.command.shared.grader.sandbox.Leftovers;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.io.OwnFolder;
 import java.io.IOException;
 import java.io.Reader;
@@ -211,6 +212,16 @@ public final class ResultStore {
     /** A new folder to write a result's images into before {@link #save} stores it. */
     Path newEntry() throws IOException {
         return Files.createDirectory(writingName());
+    }
+
+    /** Why {@code entry} takes no file now, in the file system's words (full, read-only, gone). */
+    static String refusal(Path entry) {
+        try {
+            Files.delete(Files.createTempFile(entry, ".probe-", ""));
+            return "its images could not be written there";
+        } catch (IOException e) {
+            return IoErrors.reason(e);
+        }
     }
 
     /** A new name for a folder being written, which carries this process's mark. */

@@ -12,7 +12,7 @@ public record Ungraded(String folder, String why, Cause cause) {
         GRADER_SHORT,
         /** An error of tick1's (a bug). */
         TICK1_ERROR,
-        /** Its images could not be stored in the report's folder. */
+        /** Its result could not be stored in the report's folder (full, read-only, gone). */
         REPORT_FOLDER
     }
 
