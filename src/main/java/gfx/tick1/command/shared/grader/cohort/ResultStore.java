@@ -250,9 +250,9 @@ public final class ResultStore {
             p.setProperty(at + "hidden", Boolean.toString(scene.hidden()));
             p.setProperty(at + "passed", Boolean.toString(scene.passed()));
             p.setProperty(at + "explanation", String.join("\n", scene.explanation()));
-            p.setProperty(at + "heatMap", orEmpty(scene.heatMap()));
-            p.setProperty(at + "yours", orEmpty(scene.yours()));
-            p.setProperty(at + "expected", orEmpty(scene.expected()));
+            p.setProperty(at + "heatMap", orEmpty(scene.files().heatMap()));
+            p.setProperty(at + "yours", orEmpty(scene.files().yours()));
+            p.setProperty(at + "expected", orEmpty(scene.files().expected()));
         }
         Findings found = result.findings();
         p.setProperty("findings.catalogued", found.catalogued() == null ? "" : found.catalogued().name());

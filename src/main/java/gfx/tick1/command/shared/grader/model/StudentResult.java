@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.grader.model;
 import java.time.Duration;
 import java.util.List;
 import java.util.Objects;
+import java.util.function.UnaryOperator;
 import java.util.stream.Stream;
 
 /**
@@ -105,26 +106,16 @@ Findings findings) {
 
             /** No image written. */
             public static final Images NONE = new Images(null, null, null);
-        }
 
-        /** The file name of the difference heat map, or null. */
-        public String heatMap() {
-            return files.heatMap();
-        }
+            /** These images with each name replaced by what {@code rename} makes of it. */
+            public Images map(UnaryOperator<String> rename) {
+                return new Images(rename.apply(heatMap), rename.apply(yours), rename.apply(expected));
+            }
 
-        /** The file name of the student's image, or null. */
-        public String yours() {
-            return files.yours();
-        }
-
-        /** The file name of the reference image, or null. */
-        public String expected() {
-            return files.expected();
-        }
-
-        /** The images named, in the order a page shows them: heat map, yours, expected; a null is left out. */
-        public List<String> images() {
-            return Stream.of(heatMap(), yours(), expected()).filter(Objects::nonNull).toList();
+            /** The images named, in the order a page shows them: heat map, yours, expected; a null is left out. */
+            public List<String> named() {
+                return Stream.of(heatMap, yours, expected).filter(Objects::nonNull).toList();
+            }
         }
     }
 }

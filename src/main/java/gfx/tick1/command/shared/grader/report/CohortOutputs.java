@@ -67,7 +67,7 @@ public final class CohortOutputs {
     private static void placeImages(StudentResult result, Path stored, Path folder) throws IOException {
         removeImagesNotNamed(folder, result);
         for (SceneResult scene : result.scenes()) {
-            for (String image : scene.images()) {
+            for (String image : scene.files().named()) {
                 if (stored != null) {
                     Path source = stored.resolve(image);
                     ReportFiles.write(folder.resolve(image), out -> Files.copy(source, out));
@@ -83,7 +83,7 @@ public final class CohortOutputs {
     private static void removeImagesNotNamed(Path folder, StudentResult result) throws IOException {
         Set<String> named = new HashSet<>();
         for (SceneResult scene : result.scenes()) {
-            named.addAll(scene.images());
+            named.addAll(scene.files().named());
         }
         try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "*.png")) {
             for (Path file : files) {

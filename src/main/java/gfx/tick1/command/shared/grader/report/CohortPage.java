@@ -104,10 +104,10 @@ final class CohortPage {
         int maps = 0;
         for (int i = 0; i < result.scenes().size(); i++) {
             SceneResult scene = result.scenes().get(i);
-            if (!scene.hidden() && scene.heatMap() != null) {
+            if (!scene.hidden() && scene.files().heatMap() != null) {
                 maps++;
                 thumbnails.append("<a href=\"").append(feedback).append("\"><img class=\"thumbnail\" src=\"")
-                        .append(Html.relativeUrl(ReportFiles.FEEDBACK, student.folder(), scene.heatMap()))
+                        .append(Html.relativeUrl(ReportFiles.FEEDBACK, student.folder(), scene.files().heatMap()))
                         .append("\" loading=\"lazy\" decoding=\"async\" width=\"160\" height=\"120\" ")
                         .append("alt=\"heat map of ")
                         .append(Html.escape(titles.get(i))).append("\"></a>");

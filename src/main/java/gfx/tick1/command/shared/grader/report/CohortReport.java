@@ -139,7 +139,7 @@ public final class CohortReport {
                         + (ReportFiles.isPlainName(folder) ? "two results share it" : "not one plain folder name"));
             }
             for (SceneResult scene : result.scenes()) {
-                for (String image : scene.images()) {
+                for (String image : scene.files().named()) {
                     if (!ReportFiles.isPlainName(image) || isFeedbackFile(image)) {
                         throw new IllegalArgumentException("image \"" + image + "\" of " + folder
                                 + ": not a plain file name of its own");
@@ -156,8 +156,7 @@ public final class CohortReport {
      */
     private static StudentResult withImagesOnDisk(Path folder, StudentResult result) {
         List<SceneResult> scenes = result.scenes().stream().map(scene -> new SceneResult(scene.name(), scene.hidden(),
-                scene.passed(), scene.explanation(), new SceneResult.Images(onDisk(folder, scene.heatMap()),
-                onDisk(folder, scene.yours()), onDisk(folder, scene.expected())))).toList();
+                scene.passed(), scene.explanation(), scene.files().map(image -> onDisk(folder, image)))).toList();
         return new StudentResult(result.submission(), new StudentResult.Summary(result.passed(), result.scenesPassed(),
                 result.scenesTotal(), result.diagnosis(), result.reason()), scenes, result.time(), result.findings());
     }

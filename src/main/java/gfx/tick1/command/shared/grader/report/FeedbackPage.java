@@ -46,7 +46,7 @@ final class FeedbackPage {
 
     /** The images of a scene that a student may see, as file names in the feedback folder. */
     static List<String> images(SceneResult scene) {
-        return scene.hidden() ? List.of() : scene.images();
+        return scene.hidden() ? List.of() : scene.files().named();
     }
 
     /**
@@ -124,11 +124,11 @@ final class FeedbackPage {
             List<String> images = images(scene);
             if (!images.isEmpty()) {
                 out.append("<div class=\"images\">\n");
-                figure(out, scene.heatMap(), "Heat map of the differences");
-                figure(out, scene.yours(), "Your image");
-                figure(out, scene.expected(), "Expected image");
+                figure(out, scene.files().heatMap(), "Heat map of the differences");
+                figure(out, scene.files().yours(), "Your image");
+                figure(out, scene.files().expected(), "Expected image");
                 out.append("</div>\n");
-                if (!legendShown && scene.heatMap() != null) {
+                if (!legendShown && scene.files().heatMap() != null) {
                     out.append(HeatMapKey.html());
                     legendShown = true;
                 }

@@ -200,7 +200,7 @@ class CohortReportTest {
             assertThat(image.group()).contains("loading=\"lazy\"");
         }
         long publicHeatMaps = results.stream().flatMap(result -> result.scenes().stream())
-                .filter(scene -> !scene.hidden() && scene.heatMap() != null).count();
+                .filter(scene -> !scene.hidden() && scene.files().heatMap() != null).count();
         assertThat(thumbnails).isEqualTo(publicHeatMaps).isPositive();
     }
 
@@ -268,9 +268,8 @@ class CohortReportTest {
             expected.add(folder + "/feedback.html");
             expected.add(folder + "/feedback.txt");
             for (SceneResult scene : result.scenes()) {
-                if (!scene.hidden() && scene.heatMap() != null) {
-                    expected.addAll(List.of(folder + "/" + scene.heatMap(), folder + "/" + scene.yours(),
-                            folder + "/" + scene.expected()));
+                if (!scene.hidden() && scene.files().heatMap() != null) {
+                    scene.files().named().forEach(image -> expected.add(folder + "/" + image));
                 }
             }
         }
