@@ -592,10 +592,16 @@ class GradeCohortTest {
      * sandbox's users can pass through.
      */
     static Process gradeInAJvmOfItsOwn(Path dir, String... args) throws IOException {
+        return gradeInAJvmOfItsOwn(dir, List.of(), args);
+    }
+
+    /** As {@link #gradeInAJvmOfItsOwn(Path, String...)}, in a JVM also given {@code jvmOptions}. */
+    static Process gradeInAJvmOfItsOwn(Path dir, List<String> jvmOptions, String... args) throws IOException {
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
         Path temporary = Files.isDirectory(dir.resolve("tmp")) ? dir.resolve("tmp") : Files.createDirectory(
                 dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx--x--x")));
         List<String> command = CliRun.java();
+        command.addAll(jvmOptions);
         command.addAll(List.of("-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
                 Tick1.class.getName()));
         command.addAll(List.of(args));
