@@ -1,6 +1,7 @@
 package gfx.tick1.command.diff;
 
 import gfx.tick1.command.shared.behaviour.BehaviourCheck;
+import gfx.tick1.command.shared.behaviour.DrawnScenes;
 import gfx.tick1.command.shared.behaviour.RunIn;
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
@@ -51,14 +52,16 @@ import picocli.CommandLine;
                     + "starter's) is shown as a unified diff (- ours, + yours). When something differs and the "
                     + "files compile, your intersectionWith and illuminate are first run in the sandbox on the inputs "
                     + "grade uses, and one line each says that it behaves as ours or where it does not; exit 0 when "
-                    + "they behave as ours and nothing else differs. Without the sandbox a line says behaviour could "
-                    + "not be checked, unless --no-sandbox runs your methods without it. A file is recognised by "
-                    + "its class. Colour on a terminal only (not with NO_COLOR set, nor TERM=dumb)."})
+                    + "they behave as ours and nothing else differs, or, given both files, what else differs leaves "
+                    + "tick1.xml and basic_scene.xml drawn as ours, pixel for pixel. Without the sandbox a line says "
+                    + "behaviour could not be checked, unless --no-sandbox runs your methods without it. A file is "
+                    + "recognised by its class. Colour on a terminal only (not with NO_COLOR set, nor TERM=dumb)."})
 public final class DiffCommand implements Callable<Integer> {
 
-    @ExitStatus("nothing differs in meaning, or only the methods that behave as ours on every input")
+    @ExitStatus("only methods that behave as ours differ, or members that leave the handout's scenes drawn as ours")
     public static final int EXIT_SAME = 0;
-    @ExitStatus("something else differs, a method does not behave as ours, or behaviour could not be checked")
+    @ExitStatus("a method does not behave as ours, another member differs and the scenes were not drawn as ours, or "
+            + "behaviour was not checked")
     public static final int EXIT_DIFFERENT = 1;
     @ExitStatus("a file cannot be read or parsed, or is not a Sphere or Renderer class")
     public static final int EXIT_CANNOT_COMPARE = 2;
@@ -146,17 +149,27 @@ public final class DiffCommand implements Callable<Integer> {
         if (report.isEmpty()) {
             return EXIT_SAME;
         }
-        Hints.Said said = hints(theirs, out, colours);
-        // Methods that behave as ours are no difference, however written; a changed render() or constructor is.
-        boolean same = said != null && said.behavesAsOurs() && onlyMethodsDiffer;
+        // Another member of ours that differs (render, trace, a constructor) is shown to change no image when the
+        // code, with its methods behaving as ours, draws the handout's scenes as ours does; with one file given, the
+        // other is the kit's, which draws no image of ours.
+        boolean draw = !onlyMethodsDiffer && classes.containsAll(StarterKit.STUDENT_CLASSES);
+        Hints.Said said = hints(theirs, out, colours, draw);
+        boolean behaves = said != null && said.behavesAsOurs();
+        DrawnScenes drawn = behaves ? said.drawn() : null;
+        // Methods that behave as ours are no difference, however written; nor is any other edit that leaves the
+        // images drawn as ours.
+        boolean same = behaves && (onlyMethodsDiffer || drawn != null && drawn.asOurs());
         if (said != null) {
             if (same) {
-                out.println(colours.green(NOTHING_TO_FIX));
+                out.println(colours.green(onlyMethodsDiffer ? NOTHING_TO_FIX : NOTHING_TO_FIX_DRAWN));
             }
             said.first().forEach(line -> out.println(colours.yellow(line)));
         }
+        if (drawn != null) {
+            drawn.differences().forEach(line -> out.println(colours.yellow(line)));
+        }
         if (same) {
-            out.println(colours.bold(FORM_ONLY));
+            out.println(colours.bold(onlyMethodsDiffer ? FORM_ONLY : DRAWN_THE_SAME));
         }
         report.forEach(out::println);
         if (said != null) {
@@ -170,6 +183,15 @@ public final class DiffCommand implements Callable<Integer> {
             + "and nothing else of ours differs in meaning.";
     /** The heading of the hunks of such code. */
     static final String FORM_ONLY = "Differences of form, which do not change what your code does:";
+    /**
+     * The first line where the methods behave as ours and other members of ours differ too, but the
+     * student's code drew the handout's scenes as ours does.
+     */
+    static final String NOTHING_TO_FIX_DRAWN = "Nothing to fix: your intersectionWith and illuminate behave as "
+            + "ours, and your code draws " + String.join(" and ", DrawnScenes.SCENES)
+            + " as ours does, pixel for pixel.";
+    /** The heading of the hunks of such code. */
+    static final String DRAWN_THE_SAME = "Differences that change neither what your methods return nor these images:";
 
     /**
      * The members whose meaning the behaviour comparison checks: the two methods it calls, and
@@ -179,10 +201,11 @@ public final class DiffCommand implements Callable<Integer> {
             "illuminate(Scene, Sphere, Vector3, Vector3)");
 
     /**
-     * What their methods did, for the lines before the diff (or why it could not be checked); null,
-     * with a line printed, when the files could not be given to the sandbox.
+     * What their methods did, for the lines before the diff (or why it could not be checked), and with
+     * {@code draw} how the code drew the handout's scenes; null, with a line printed, when the files
+     * could not be given to the sandbox.
      */
-    private Hints.Said hints(List<JavaMembers> theirs, PrintWriter out, Colours colours) {
+    private Hints.Said hints(List<JavaMembers> theirs, PrintWriter out, Colours colours, boolean draw) {
         Map<String, String> given = new LinkedHashMap<>(), starter = new LinkedHashMap<>();
         for (int i = 0; i < theirs.size(); i++) {
             try {
@@ -203,7 +226,7 @@ public final class DiffCommand implements Callable<Integer> {
             return null;
         }
         try {
-            Hints.Said said = Hints.of(given, starter, noSandbox ? RunIn.OWN_PROCESS : RunIn.SANDBOX);
+            Hints.Said said = Hints.of(given, starter, noSandbox ? RunIn.OWN_PROCESS : RunIn.SANDBOX, draw);
             if (noSandbox && said.ran()) {
                 PrintWriter err = spec.commandLine().getErr();
                 err.println("tick1 diff: note: --no-sandbox: your methods ran without a sandbox, in "

@@ -1,6 +1,7 @@
 package gfx.tick1.command.diff;
 
 import gfx.tick1.command.shared.behaviour.BehaviourCheck;
+import gfx.tick1.command.shared.behaviour.DrawnScenes;
 import gfx.tick1.command.shared.behaviour.RunIn;
 import java.util.ArrayList;
 import java.util.List;
@@ -18,8 +19,11 @@ import java.util.Map;
  */
 final class Hints {
 
-    /** The lines before the diff, the lines after it, whether the methods ran, and whether they behave as ours. */
-    record Said(List<String> first, List<String> after, boolean ran, boolean behavesAsOurs) {
+    /**
+     * The lines before the diff, the lines after it, whether the methods ran, whether they behave as ours, and the
+     * handout's scenes as the code drew them (null when not asked for, or the code did not run).
+     */
+    record Said(List<String> first, List<String> after, boolean ran, boolean behavesAsOurs, DrawnScenes drawn) {
     }
 
     private Hints() {
@@ -27,17 +31,19 @@ final class Hints {
 
     /**
      * What to say of {@code theirs} (class name to source), with {@code starter} for the classes not
-     * given, their methods run {@code where}.
+     * given, their methods run {@code where}; with {@code draw}, the code also draws the handout's scenes.
      */
-    static Said of(Map<String, String> theirs, Map<String, String> starter, RunIn where)
+    static Said of(Map<String, String> theirs, Map<String, String> starter, RunIn where, boolean draw)
             throws InterruptedException {
         String sphere = theirs.getOrDefault("Sphere", starter.get("Sphere"));
         String renderer = theirs.getOrDefault("Renderer", starter.get("Renderer"));
-        BehaviourCheck.Lines hints = BehaviourCheck.check(sphere, renderer, List.copyOf(theirs.keySet()), where);
+        BehaviourCheck.Lines hints = BehaviourCheck.check(sphere, renderer, List.copyOf(theirs.keySet()), where,
+                draw);
         List<String> first = new ArrayList<>(hints.behaviour());
         if (hints.whyNone() != null) {
             first.add(hints.whyNone());
         }
-        return new Said(first, hints.hints(), hints.whyNone() == null, hints.behavesAsOurs());
+        return new Said(first, hints.hints(), hints.whyNone() == null, hints.behavesAsOurs(),
+                hints.drawn());
     }
 }

@@ -1,29 +1,22 @@
 package gfx.tick1.engine.image;
 
+import gfx.tick1.engine.io.BoundedFile;
 import gfx.tick1.engine.io.IoErrors;
 import java.awt.image.BufferedImage;
-import java.io.BufferedInputStream;
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
-import java.io.InputStream;
-import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.Arrays;
 import javax.imageio.ImageIO;
 
 /** Reads an image file for comparison, turning every way it can fail into one readable line. */
 public final class PngInput {
 
+    /** The most bytes an image file may have: far more than a PNG of any render a course asks for. */
+    public static final long MAX_BYTES = 64L * 1024 * 1024;
+
     private PngInput() {
-    }
-
-    /** A file that is not a PNG, known by its first bytes: its message is already complete. */
-    private static final class NotAPng extends IOException {
-        private static final long serialVersionUID = 1L;
-
-        NotAPng(String message) {
-            super(message);
-        }
     }
 
     /**
@@ -35,19 +28,23 @@ public final class PngInput {
         if (Files.isDirectory(file)) {
             throw new IOException(file + ": is a directory, expected a PNG file");
         }
-        BufferedImage image;
-        try (InputStream in = new BufferedInputStream(Files.newInputStream(file))) {
-            in.mark(ImageFormat.SIGNATURE_LENGTH);
-            ImageFormat format = ImageFormat.of(in.readNBytes(ImageFormat.SIGNATURE_LENGTH)).orElse(null);
-            in.reset();
-            if (format != ImageFormat.PNG) {
-                throw new NotAPng(file + ": " + (format == null ? "not a PNG image" : format.notPng()));
-            }
-            image = ImageIO.read(in);
-        } catch (NotAPng e) {
-            throw e;
-        } catch (NoSuchFileException | AccessDeniedException e) {
+        byte[] bytes;
+        try {
+            // Read whole but bounded, as a scene is: the file may be a device or a pipe that never ends.
+            bytes = BoundedFile.read(file, MAX_BYTES);
+        } catch (BoundedFile.TooLarge e) {
+            throw new IOException(file + ": " + e.getMessage() + ", expected a PNG image");
+        } catch (IOException e) {
             throw new IOException(file + ": " + IoErrors.reason(e));
+        }
+        ImageFormat format = ImageFormat.of(Arrays.copyOf(bytes, Math.min(bytes.length,
+                ImageFormat.SIGNATURE_LENGTH))).orElse(null);
+        if (format != ImageFormat.PNG) {
+            throw new IOException(file + ": " + (format == null ? "not a PNG image" : format.notPng()));
+        }
+        BufferedImage image;
+        try {
+            image = ImageIO.read(new ByteArrayInputStream(bytes));
         } catch (IOException | RuntimeException e) {
             // ImageIO reports a damaged PNG as IIOException, and some as runtime exceptions.
             throw new IOException(file + ": not a readable PNG image (" + e.getMessage() + ")");

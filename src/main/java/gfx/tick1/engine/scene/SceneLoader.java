@@ -178,10 +178,14 @@ public final class SceneLoader {
      * The file as text, for finding positions in it; bytes that are not UTF-8 become U+FFFD (the
      * parser reports those itself). String's own decoder goes straight to its compact one-byte
      * form for ASCII text, where a CharsetDecoder would first fill a char array twice the file's
-     * size: for a 64 MiB file, 128 MiB of heap saved at the loader's peak.
+     * size: for a 64 MiB file, 128 MiB of heap saved at the loader's peak. A byte-order mark, which
+     * Windows editors put first, is left out, as the parser leaves it out of its columns.
      */
     private static String decodeLeniently(byte[] bytes) {
-        return new String(bytes, StandardCharsets.UTF_8);
+        boolean mark = bytes.length >= 3 && bytes[0] == (byte) 0xEF && bytes[1] == (byte) 0xBB
+                && bytes[2] == (byte) 0xBF;
+        return mark ? new String(bytes, 3, bytes.length - 3, StandardCharsets.UTF_8)
+                : new String(bytes, StandardCharsets.UTF_8);
     }
 
     /** Walks the document's elements in document order, checking each and adding it to the scene. */

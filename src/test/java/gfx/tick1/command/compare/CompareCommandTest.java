@@ -123,6 +123,92 @@ class CompareCommandTest {
         }
     }
 
+    /** A named pipe in the test's folder, made by mkfifo; the test is skipped where there is none. */
+    private Path fifo(String name) throws IOException, InterruptedException {
+        Path fifo = dir.resolve(name);
+        Process mkfifo;
+        try {
+            mkfifo = new ProcessBuilder("mkfifo", fifo.toString()).start();
+        } catch (IOException e) {
+            org.junit.jupiter.api.Assumptions.abort("needs mkfifo to make a named pipe");
+            throw e;
+        }
+        org.junit.jupiter.api.Assumptions.assumeTrue(mkfifo.waitFor() == 0, "mkfifo can make a named pipe here");
+        return fifo;
+    }
+
+    /**
+     * Writes {@code start} into {@code fifo}, then {@code more} (if any) over and over until the reader stops; counts
+     * the bytes written.
+     */
+    private static Thread feed(Path fifo, byte[] start, byte[] more, java.util.concurrent.atomic.AtomicLong written) {
+        Thread writer = new Thread(() -> {
+            try (java.io.OutputStream out = Files.newOutputStream(fifo)) {
+                out.write(start);
+                written.addAndGet(start.length);
+                while (more.length > 0) {
+                    out.write(more);
+                    written.addAndGet(more.length);
+                }
+            } catch (IOException e) {
+                // The reader closed the pipe: the end of the feed.
+            }
+        });
+        writer.setDaemon(true);
+        writer.start();
+        return writer;
+    }
+
+    @Test
+    void aPngReadThroughANamedPipeIsCompared() throws IOException, InterruptedException {
+        // Noise, so that the file is larger than a stream's buffer.
+        BufferedImage noise = new BufferedImage(64, 48, BufferedImage.TYPE_INT_RGB);
+        java.util.Random random = new java.util.Random(1);
+        for (int y = 0; y < noise.getHeight(); y++) {
+            for (int x = 0; x < noise.getWidth(); x++) {
+                noise.setRGB(x, y, random.nextInt(1 << 24));
+            }
+        }
+        Path good = dir.resolve("noise.png");
+        PngOutput.write(noise, good);
+        assertThat(Files.size(good)).as("the PNG's size").isGreaterThan(8192);
+        Path pipe = fifo("piped.png");
+        feed(pipe, Files.readAllBytes(good), new byte[0], new java.util.concurrent.atomic.AtomicLong());
+        CliRun run = CliRun.of("compare", good.toString(), pipe.toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(CompareCommand.EXIT_SAME);
+    }
+
+    /** A PNG chunk: its length, type, data and CRC. */
+    private static byte[] chunk(String type, byte[] data) {
+        java.nio.ByteBuffer chunk = java.nio.ByteBuffer.allocate(12 + data.length).putInt(data.length);
+        java.util.zip.CRC32 crc = new java.util.zip.CRC32();
+        byte[] name = type.getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+        crc.update(name);
+        crc.update(data);
+        return chunk.put(name).put(data).putInt((int) crc.getValue()).array();
+    }
+
+    @Test
+    void aPngThatNeverEndsIsReadNoFurtherThanTheBoundAndRefusedInOneLine() throws IOException, InterruptedException {
+        Path good = png("a.png", 8, 6, 0);
+        Path pipe = fifo("endless.png");
+        // A 640 x 480 PNG's signature and header, then image data chunks without end.
+        byte[] start = java.nio.ByteBuffer.allocate(8 + 25).put(new byte[] {(byte) 0x89, 'P', 'N', 'G', '\r', '\n',
+            0x1A, '\n'}).put(chunk("IHDR", java.nio.ByteBuffer.allocate(13).putInt(640).putInt(480)
+                .put(new byte[] {8, 2, 0, 0, 0}).array())).array();
+        java.util.concurrent.atomic.AtomicLong written = new java.util.concurrent.atomic.AtomicLong();
+        feed(pipe, start, chunk("IDAT", new byte[1 << 16]), written);
+
+        CliRun run = CliRun.of("compare", good.toString(), pipe.toString());
+
+        assertThat(run.status()).as(run.transcript()).isEqualTo(CompareCommand.EXIT_CANNOT_COMPARE);
+        assertThat(run.err()).as(run.transcript()).isEqualTo("tick1 compare: " + pipe + ": larger than "
+                + gfx.tick1.engine.io.BoundedFile.size(gfx.tick1.engine.image.PngInput.MAX_BYTES)
+                + ", expected a PNG image" + System.lineSeparator());
+        assertThat(written.get()).as("bytes written before the reader stopped")
+                .isLessThan(gfx.tick1.engine.image.PngInput.MAX_BYTES + 4 * (1 << 20));
+    }
+
     /** A JPEG of a render, as an image viewer's "save as" or a screenshot tool gives. */
     private Path jpeg(String name) throws IOException {
         BufferedImage image = new BufferedImage(8, 6, BufferedImage.TYPE_INT_RGB);

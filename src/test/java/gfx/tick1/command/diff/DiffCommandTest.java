@@ -30,6 +30,7 @@ class DiffCommandTest {
     private static final String ILLUMINATE = "illuminate(Scene, Sphere, Vector3, Vector3)";
     private static final String INTERSECTION = "intersectionWith(Ray)";
     private static final String RENDER = "render(Scene)";
+    private static final String TRACE = "trace(Scene, Ray)";
     private static final String RGB = "image.setRGB(x, y, linearRGB.toRGB());";
 
     @TempDir
@@ -465,6 +466,54 @@ class DiffCommandTest {
     private Path correct(String className) throws IOException {
         return write(className + ".java",
                 Files.readString(Path.of("src/test/resources/students/correct/" + className + ".java")));
+    }
+
+    /**
+     * The correct solution with render's progress line removed and P and N inlined in trace: starter members
+     * edited, the images the same.
+     */
+    private static CorrectStyles.Style starterMembersEdited() {
+        return new CorrectStyles.Style("starter members edited", CorrectStyles.resource("Sphere.java"),
+                CorrectStyles.resource("Renderer.java"), Set.of(RENDER, TRACE))
+                .renderer("            System.out.println(String.format(\"%.2f\", 100 * y / (float) (height - 1)) "
+                        + "+ \"% completed\");\n", "")
+                .renderer("Vector3 P = closestHit.getLocation();", "")
+                .renderer("Vector3 N = closestHit.getNormal();", "")
+                .renderer("return this.illuminate(scene, object, P, N);",
+                        "return illuminate(scene, object, closestHit.getLocation(), closestHit.getNormal());");
+    }
+
+    @Test
+    void starterMembersEditedWithoutChangingAnImageAreShownButExitZero() throws IOException, InterruptedException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
+        Path[] files = starterMembersEdited().writeTo(dir.resolve("edited"));
+        CliRun run = CliRun.of("diff", files[0].toString(), files[1].toString());
+        assertThat(membersShown(run)).as(run.transcript()).containsExactlyInAnyOrder(RENDER, TRACE);
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
+    }
+
+    @Test
+    void starterMembersEditedWithoutChangingAnImageAreToldThatTheImagesWereDrawnAsOurs()
+            throws IOException, InterruptedException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
+        Path[] files = starterMembersEdited().writeTo(dir.resolve("edited"));
+        CliRun run = CliRun.of("diff", files[0].toString(), files[1].toString());
+        java.util.List<String> lines = run.out().lines().toList();
+        assertThat(lines.get(0)).as(run.transcript()).isEqualTo(DiffCommand.NOTHING_TO_FIX_DRAWN);
+        assertThat(lines).as(run.transcript()).contains(DiffCommand.DRAWN_THE_SAME).doesNotContain(
+                DiffCommand.NOTHING_TO_FIX, DiffCommand.FORM_ONLY);
+    }
+
+    @Test
+    void aStarterMemberEditedSoThatAnImageChangesExitsOneAndNamesTheImage() throws IOException, InterruptedException {
+        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
+        Path[] files = starterMembersEdited().renderer(RGB, "image.setRGB(x, height - 1 - y, linearRGB.toRGB());")
+                .writeTo(dir.resolve("upside-down"));
+        CliRun run = CliRun.of("diff", files[0].toString(), files[1].toString());
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
+        assertThat(run.out().lines()).as(run.transcript()).doesNotContain(DiffCommand.NOTHING_TO_FIX_DRAWN)
+                .anyMatch(line -> line.startsWith("your code draws tick1.xml unlike ours: ")
+                        && line.contains(" pixels differ, within pixels "));
     }
 
     @Test

@@ -134,6 +134,24 @@ class GradeCohortStopTest {
     }
 
     /**
+     * Nothing the grade prints comes after the stopped line: here, with each run's output folder on the host's
+     * disk, the warning that says so, which a grade prints at its end.
+     */
+    @Test
+    void theStoppedLineIsTheLastLineTheGradePrints() throws Exception {
+        Path zip = moodleZip(dir.resolve("download.zip"), twoCorrectThenOneSlow());
+        Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, List.of("-Dtick1.grade.outputDisks=host"),
+                gradeArguments(zip, dir.resolve("report"), "--jobs", "1", TIME_LIMIT[0], TIME_LIMIT[1]));
+        awaitTheSlowCode(dir, grade, dir.resolve("report").resolve(CohortCommand.STATE_FOLDER), 2);
+        new ProcessBuilder("/bin/kill", "-TERM", Long.toString(grade.pid())).start().waitFor();
+        assertThat(grade.waitFor(120, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+
+        String said = Files.readString(dir.resolve("grade.log"));
+        assertThat(said.lines().filter(line -> !line.isBlank())).as("what the stopped grade said:%n%s", said)
+                .last().asString().startsWith("tick1 grade: stopped: ");
+    }
+
+    /**
      * The grade of two correct students and a slow one, stopped with a signal while the slow one's code ran, as
      * it was when it ended: what it said, its exit status, and the names in its state folder and its temporary
      * folder. The tests that read the same stop share it.

@@ -595,7 +595,7 @@ class GradeCohortTest {
         return gradeInAJvmOfItsOwn(dir, List.of(), args);
     }
 
-    /** {@link #gradeInAJvmOfItsOwn(Path, String...)}, with {@code jvmOptions} given to its JVM. */
+    /** As {@link #gradeInAJvmOfItsOwn(Path, String...)}, in a JVM also given {@code jvmOptions}. */
     static Process gradeInAJvmOfItsOwn(Path dir, List<String> jvmOptions, String... args) throws IOException {
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
         Path temporary = Files.isDirectory(dir.resolve("tmp")) ? dir.resolve("tmp") : Files.createDirectory(

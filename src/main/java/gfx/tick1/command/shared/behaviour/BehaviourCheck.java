@@ -7,6 +7,7 @@ import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.Counted;
+import gfx.tick1.engine.render.GoldenImages;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -27,12 +28,14 @@ public final class BehaviourCheck {
 
     /**
      * What the methods asked about did: one line each, first; then "note: ..." and "hint: ..."
-     * lines; or, when they could not be run, none and why.
+     * lines; or, when they could not be run, none and why. {@code drawn}: the handout's scenes as the
+     * code drew them, when asked for and the code ran; else null.
      */
-    public record Lines(List<String> behaviour, List<String> hints, String whyNone, boolean behavesAsOurs) {
+    public record Lines(List<String> behaviour, List<String> hints, String whyNone, boolean behavesAsOurs,
+            DrawnScenes drawn) {
 
         static Lines none(String why) {
-            return new Lines(List.of(), List.of(), why, false);
+            return new Lines(List.of(), List.of(), why, false, null);
         }
     }
 
@@ -52,9 +55,9 @@ public final class BehaviourCheck {
     /**
      * Calls the methods of {@code sphere} and {@code renderer} (sources of package gfx.tick1),
      * run {@code where}; hints only of the methods of the files named in {@code asked} ("Sphere",
-     * "Renderer").
+     * "Renderer"). With {@code draw}, the same run also draws {@link DrawnScenes#SCENES}.
      */
-    public static Lines check(String sphere, String renderer, List<String> asked, RunIn where)
+    public static Lines check(String sphere, String renderer, List<String> asked, RunIn where, boolean draw)
             throws InterruptedException {
         Sandbox sandbox;
         try {
@@ -64,7 +67,7 @@ public final class BehaviourCheck {
                     + "the sandbox, and " + e.getMessage() + (e.remedy() == null ? "" : ": " + e.remedy())
                     + "; if the code is yours, --no-sandbox runs them without one");
         }
-        Called called = call(sandbox, sphere, renderer, null);
+        Called called = call(sandbox, sphere, renderer, null, draw);
         if (called.log() == null) {
             return Lines.none(called.whyNone());
         }
@@ -72,11 +75,19 @@ public final class BehaviourCheck {
         if (!findings.ran()) {
             return Lines.none("behaviour could not be checked: your methods gave no answer");
         }
-        return hints(findings, asked);
+        Lines lines = hints(findings, asked);
+        return called.drawn() == null ? lines : new Lines(lines.behaviour(), lines.hints(), null,
+                lines.behavesAsOurs(), DrawnScenes.of(called.drawn()));
     }
 
-    /** The harness's log of the methods' answers, or (log null) why there is none, in words. */
-    record Called(String log, String whyNone) {
+    /**
+     * The harness's log of the methods' answers, or (log null) why there is none, in words; and what
+     * became of the scenes drawn, or null.
+     */
+    record Called(String log, String whyNone, List<StudentProcess.Outcome> drawn) {
+        Called(String log, String whyNone) {
+            this(log, whyNone, null);
+        }
     }
 
     /**
@@ -85,10 +96,16 @@ public final class BehaviourCheck {
      */
     static Called call(Sandbox sandbox, String sphere, String renderer, BehaviourInputs.Chosen chosen)
             throws InterruptedException {
+        return call(sandbox, sphere, renderer, chosen, false);
+    }
+
+    /** As above; with {@code draw}, the run also draws {@link DrawnScenes#SCENES} at the handout's size. */
+    private static Called call(Sandbox sandbox, String sphere, String renderer, BehaviourInputs.Chosen chosen,
+            boolean draw) throws InterruptedException {
         Path work = null;
         try {
             work = Leftovers.newWorkFolder("behaviour");
-            return call(sandbox, work, sphere, renderer, chosen);
+            return call(sandbox, work, sphere, renderer, chosen, draw);
         } catch (IOException e) {
             return new Called(null, "behaviour could not be checked: your methods could not be run ("
                     + e.getMessage() + ")");
@@ -100,7 +117,7 @@ public final class BehaviourCheck {
     }
 
     private static Called call(Sandbox sandbox, Path work, String sphere, String renderer,
-            BehaviourInputs.Chosen chosen) throws IOException, InterruptedException {
+            BehaviourInputs.Chosen chosen, boolean draw) throws IOException, InterruptedException {
         Path harness = Files.createDirectory(work.resolve("harness"));
         StudentProcess.writeHarness(harness);
         if (chosen != null) {
@@ -109,11 +126,16 @@ public final class BehaviourCheck {
         StudentProcess process = new StudentProcess(sandbox, harness, MEMORY_MEGABYTES);
         Path sources = StudentProcess.writeSources(work, sphere, renderer);
         Path scenes = Files.createDirectory(work.resolve("scenes"));
+        if (draw) {
+            DrawnScenes.write(scenes);
+        }
         sandbox.share(work);
         Path output = Files.createDirectory(work.resolve("output"));
         sandbox.shareWritable(output);
-        StudentProcess.CompiledAndRendered run = process.compileAndRender(sources,
-                new StudentProcess.Batch(scenes, List.of(), 1, 1, SceneBatch.PUBLIC), output, "Sphere.java",
+        StudentProcess.Batch batch = draw ? new StudentProcess.Batch(scenes, DrawnScenes.SCENES, GoldenImages.WIDTH,
+                GoldenImages.HEIGHT, SceneBatch.PUBLIC) : new StudentProcess.Batch(scenes, List.of(), 1, 1,
+                SceneBatch.PUBLIC);
+        StudentProcess.CompiledAndRendered run = process.compileAndRender(sources, batch, output, "Sphere.java",
                 "Renderer.java", TIME_LIMIT);
         if (!run.compiled().compiled()) {
             return new Called(null, "behaviour could not be checked: it comes from running your "
@@ -121,7 +143,7 @@ public final class BehaviourCheck {
                     + (run.compiled().failure() == null ? ""
                     : " (" + run.compiled().failure() + ")"));
         }
-        return new Called(run.rendered().probes(), null);
+        return new Called(run.rendered().probes(), null, draw ? run.rendered().outcomes() : null);
     }
 
     /** The lines of the methods of the files named in {@code asked}. */
@@ -145,6 +167,6 @@ public final class BehaviourCheck {
             }
             method.untested().forEach(note -> hints.add("note: " + note));
         }
-        return new Lines(behaviour, hints, null, ours);
+        return new Lines(behaviour, hints, null, ours, null);
     }
 }

@@ -17,12 +17,13 @@ import java.util.stream.Stream;
  * What tick1 runs killed before their clean-up (SIGKILL, a power cut) left on the machine: the
  * tmpfs mounted on their runs' and compilers' folders (source {@code tick1-output}), their work
  * folders ({@code tick1-grade-PID-...}, and those of the behaviour check and of {@code tick1 vpl}'s check of the
- * scenes, all made by {@link #newWorkFolder}), seccomp filter files ({@code tick1-seccomp-PID-....bpf})
+ * scenes, all made by {@link #newWorkFolder}, and the private folder of the VPL script {@code tick1 vpl} writes,
+ * {@code tick1-vpl-PID-...}, whose PID is the script's bash), seccomp filter files ({@code tick1-seccomp-PID-....bpf})
  * and control groups ({@code tick1-PID-N}). Each name carries the process id of the run that made
  * it; what belongs to a process that is gone, and is owned by this process's user, is removed
  * (anyone may make a folder with such a name, to steer a removal run as root). A live process
- * under that id is left alone when it is a Java program (tick1 always is one), or when what it
- * runs cannot be told.
+ * under that id is left alone when it is a Java program (tick1 always is one) or bash (the VPL
+ * script), or when what it runs cannot be told.
  */
 public final class Leftovers {
 
@@ -134,13 +135,14 @@ public final class Leftovers {
     }
 
     /**
-     * Whether the process {@code pid} is gone: not there, or running a program that is not Java
-     * (its id taken again). A live Java program, or one whose program cannot be told, may be tick1.
+     * Whether the process {@code pid} is gone: not there, or running a program that is neither Java
+     * nor bash (its id taken again). A live Java program, or one whose program cannot be told, may be
+     * tick1; a live bash may be the VPL script.
      */
     static boolean gone(long pid) {
         Optional<ProcessHandle> process = ProcessHandle.of(pid).filter(ProcessHandle::isAlive);
-        return process.isEmpty() || process.get().info().command()
-                .map(command -> !Path.of(command).getFileName().toString().startsWith("java")).orElse(false);
+        return process.isEmpty() || process.get().info().command().map(command -> Path.of(command).getFileName()
+                .toString()).map(program -> !program.startsWith("java") && !program.equals("bash")).orElse(false);
     }
 
     private static List<Path> list(Path folder) {

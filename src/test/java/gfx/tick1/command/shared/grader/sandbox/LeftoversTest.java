@@ -153,6 +153,50 @@ class LeftoversTest {
         assertThat(List.of(behaviour, vpl)).as("a live run's work folders").allMatch(Files::isDirectory);
     }
 
+    /** The line of the VPL script that makes its private folder, read from the script tick1 vpl writes. */
+    private static String vplScriptsFolderLine() throws IOException {
+        try (java.io.InputStream in = LeftoversTest.class.getResourceAsStream(
+                "/gfx/tick1/command/shared/grader/vpl/vpl_evaluate.sh.txt")) {
+            String line = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).lines()
+                    .filter(text -> text.contains("private=$(mktemp")).findFirst().orElseThrow();
+            return line.strip();
+        }
+    }
+
+    /** Starts bash running the script's line that makes its folder in {@code temporary}, then {@code then}. */
+    private Process vplScript(String then) throws IOException {
+        ProcessBuilder bash = new ProcessBuilder("bash", "-c", vplScriptsFolderLine() + "; echo \"$private\"; " + then);
+        bash.environment().put("TMPDIR", temporary.toString());
+        return bash.start();
+    }
+
+    @Test
+    void theFolderOfAVplEvaluationWhoseScriptIsGoneIsRemoved() throws Exception {
+        Process script = vplScript("exit 0");
+        Path folder = Path.of(new String(script.getInputStream().readAllBytes()).strip());
+        assertThat(script.waitFor(30, TimeUnit.SECONDS)).isTrue();
+        assertThat(folder).as("the script's folder").isDirectory();
+
+        assertThat(Leftovers.remove(temporary, null)).as("what could not be removed").isNull();
+
+        assertThat(folder).as("the folder of an evaluation whose script is gone").doesNotExist();
+    }
+
+    @Test
+    void theFolderOfAVplEvaluationWhoseScriptRunsIsLeftAlone() throws Exception {
+        Process script = vplScript("read -r _");
+        try {
+            Path folder = Path.of(new java.io.BufferedReader(new java.io.InputStreamReader(script.getInputStream()))
+                    .readLine());
+
+            assertThat(Leftovers.remove(temporary, null)).isNull();
+
+            assertThat(folder).as("the folder of an evaluation whose script runs").isDirectory();
+        } finally {
+            script.destroyForcibly().waitFor();
+        }
+    }
+
     /** The id of a process that has ended. */
     private static long goneProcess() throws IOException, InterruptedException {
         Process done = new ProcessBuilder("/bin/true").start();
