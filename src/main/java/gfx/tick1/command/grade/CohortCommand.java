@@ -1,6 +1,7 @@
 package gfx.tick1.command.grade;
 
 import gfx.tick1.command.shared.cli.CommandFailure;
+import gfx.tick1.command.shared.cli.OutputGate;
 import gfx.tick1.command.shared.grader.cohort.CohortGrade;
 import gfx.tick1.command.shared.grader.cohort.Ungraded;
 import gfx.tick1.command.shared.grader.cohort.ResultStore;
@@ -54,6 +55,7 @@ final class CohortCommand {
     private Sandbox sandbox;
     private final PrintWriter out;
     private final PrintWriter err;
+    private final OutputGate gate;
     /** The worksheet given, read and checked before anything is graded; null without --worksheet. */
     private Worksheet worksheet;
     /** The grade of a pass: --max-grade, else the worksheet's Maximum Grade, else 1. */
@@ -63,11 +65,13 @@ final class CohortCommand {
 
     /** The grader's own work folder, once made: a stop deletes it. */
     private volatile Path work;
-    CohortCommand(GradeOptions options, CohortOptions cohortOptions, PrintWriter out, PrintWriter err) {
+    CohortCommand(GradeOptions options, CohortOptions cohortOptions, PrintWriter out, PrintWriter err,
+            OutputGate gate) {
         this.options = options;
         this.cohortOptions = cohortOptions;
         this.out = out;
         this.err = err;
+        this.gate = gate;
     }
 
     /** Whether the grade ran to its end, or was stopped first (Ctrl-C, SIGTERM): whichever comes first holds. */
@@ -128,10 +132,7 @@ final class CohortCommand {
                         ", ", folders.subList(0, Math.min(3, folders.size())))) + (folders.size() > 3 ? ", ..." : "")
                 + "): each fails ungraded until one is left"));
         // What killed runs left (mounts, control groups, work folders that may hold hidden scenes) goes first.
-        String leftover = Leftovers.remove();
-        if (leftover != null) {
-            err.println("tick1 grade: " + leftover);
-        }
+        GradeCommand.reportUndeleted(Leftovers.remove(), err);
         work = Leftovers.newWorkFolder("grade");
         return gradeAndReport(submissions, work, running);
     }
@@ -174,15 +175,14 @@ final class CohortCommand {
         }
         if (stopped) {
             Path state = options.reportFolder().resolve(STATE_FOLDER);
-            err.println("tick1 grade: stopped: " + (cohort == null ? "before any submission was graded; the results "
-                    + "of earlier runs are kept in " + state + "; run the same command again to grade the rest"
+            gate.shutSaying("tick1 grade: stopped: " + (cohort == null ? "before any submission was graded; the "
+                    + "results of earlier runs are kept in " + state + "; run the same command again to grade the rest"
                     : "the results of " + cohort.kept() + " of " + Counted.of(submissionCount, "submission")
                     + " are kept in " + state + "; run the same command again to grade the other "
                     + (submissionCount - cohort.kept())) + " and write the report");
-            err.flush();
         }
         if (work != null) {
-            GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
+            GradeCommand.reportUndeleted(WorkFolder.delete(work), stopped ? gate.past() : err);
         }
     }
 

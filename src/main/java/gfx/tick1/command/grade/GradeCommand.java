@@ -121,9 +121,7 @@ public final class GradeCommand implements Callable<Integer> {
     private boolean noSandbox;
 
     /** Shut when a stop has been said: nothing the grade's threads print comes after that line. */
-    private final OutputGate gate = new OutputGate();
-    /** The standard error, past the gate: for the line that says the grade stopped, and what comes with it. */
-    private PrintWriter stopErr;
+    private OutputGate gate;
 
     @Override
     public Integer call() throws IOException, InterruptedException {
@@ -133,9 +131,9 @@ public final class GradeCommand implements Callable<Integer> {
         }
         StopSignal.exitOnSigterm(EXIT_STOPPED);
         // Every line of the grade passes the gate, the one-line errors that tick1's start-up prints included.
-        stopErr = spec.commandLine().getErr();
+        gate = new OutputGate(spec.commandLine().getErr());
         PrintWriter out = gate.wrap(spec.commandLine().getOut());
-        PrintWriter err = gate.wrap(stopErr);
+        PrintWriter err = gate.wrap(spec.commandLine().getErr());
         spec.commandLine().setOut(out).setErr(err);
         try {
             return format == Format.vpl ? vplEvaluation(out, err) : call(out, err);
@@ -191,9 +189,9 @@ public final class GradeCommand implements Callable<Integer> {
         // A cohort's stop is said from the start: the sandbox is made once the cohort has its stop line ready.
         Sandbox[] made = new Sandbox[1];
         CohortCommand.Sandboxes sandboxes = () -> made[0] = hiding(sandbox(err));
-        int status = target.cohort != null ? new CohortCommand(options, target.cohort, out, err).call(sandboxes)
+        int status = target.cohort != null ? new CohortCommand(options, target.cohort, out, err, gate).call(sandboxes)
                 : new StudentGrade(options, target.student.sphere, target.student.renderer, vpl() ? gradeRange() : null,
-                        sandboxes.make(), gate, stopErr).call(out, err);
+                        sandboxes.make(), gate).call(out, err);
         Sandbox sandbox = made[0];
         ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
                 .ifPresent(shortfall -> err.println("tick1 grade: warning: " + shortfall.line(options.scenesFolder())));

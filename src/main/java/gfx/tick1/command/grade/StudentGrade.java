@@ -39,18 +39,15 @@ final class StudentGrade {
     private final GradeRange vplRange;
     private final Sandbox sandbox;
     private final OutputGate gate;
-    /** The standard error past the gate: for the line that says the grade stopped, and what comes with it. */
-    private final PrintWriter stopErr;
 
     StudentGrade(GradeOptions options, Path sphere, Path renderer, GradeRange vplRange, Sandbox sandbox,
-            OutputGate gate, PrintWriter stopErr) {
+            OutputGate gate) {
         this.options = options;
         this.sphere = sphere;
         this.renderer = renderer;
         this.vplRange = vplRange;
         this.sandbox = sandbox;
         this.gate = gate;
-        this.stopErr = stopErr;
     }
 
     /** Grades, printing on {@code out} and {@code err} (the gate's); the exit status. */
@@ -65,12 +62,10 @@ final class StudentGrade {
         AtomicBoolean ended = new AtomicBoolean();
         OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
             if (ended.compareAndSet(false, true)) {
-                gate.shut();
-                stopErr.println("tick1 grade: " + STOPPED);
-                stopErr.flush();
+                gate.shutSaying("tick1 grade: " + STOPPED);
             }
             process.stop();
-            GradeCommand.reportUndeleted(WorkFolder.delete(work), stopErr);
+            GradeCommand.reportUndeleted(WorkFolder.delete(work), gate.past());
         });
         try {
             return grade(work, process, out, err);
