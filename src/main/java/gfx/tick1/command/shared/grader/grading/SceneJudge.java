@@ -62,10 +62,17 @@ final class SceneJudge {
         }
     }
 
+    /**
+     * The student's code, called on a wrong image's differing pixels once {@code hidden} has ended: its answers are
+     * quoted in the report, so it never runs beside a hidden scene.
+     */
+    record Code(PixelCounterexample.Code methods, HiddenRun hidden) {
+    }
+
     private final Grading grading;
     private final BehaviourFindings probes;
     /** The student's code, to call on a wrong image's differing pixels; null: not called. */
-    private final PixelCounterexample.Code code;
+    private final Code code;
     private final FeedbackImages images;
     private final PrintWriter out;
     /** Whether a scene judged before the one being judged now has the behaviour comparison's findings. */
@@ -76,8 +83,7 @@ final class SceneJudge {
      * the methods of {@code code} are called on a wrong image's differing pixels when no input
      * showed a difference ({@code code} null: never).
      */
-    SceneJudge(Grading grading, BehaviourFindings probes, PixelCounterexample.Code code, FeedbackImages images,
-            PrintWriter out) {
+    SceneJudge(Grading grading, BehaviourFindings probes, Code code, FeedbackImages images, PrintWriter out) {
         this.grading = grading;
         this.probes = probes;
         this.code = code;
@@ -275,7 +281,8 @@ final class SceneJudge {
     private PixelCounterexample.Found pixelCounterexample(CourseScene scene, BufferedImage reference,
             BufferedImage image) {
         try {
-            return PixelCounterexample.find(code, scene.scene(), scene.name(), reference, image);
+            code.hidden().awaitEnd();
+            return PixelCounterexample.find(code.methods(), scene.scene(), scene.name(), reference, image);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt(); // the grade is being stopped: the caller's next wait ends it
             return null;

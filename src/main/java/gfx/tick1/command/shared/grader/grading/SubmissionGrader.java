@@ -112,12 +112,12 @@ public final class SubmissionGrader {
         out.println("Compiled " + submission.sphere().path() + " and " + submission.renderer().path()
                 + " with the starter code.");
         SceneRuns.PublicRun run = runs.runPublic(started, work);
-        hiddenRun.publicEnded(runs, started, work, run.ran().took());
+        hiddenRun.publicEnded(() -> runs.runHidden(started, work, run.ran().took()));
         BehaviourFindings probes = run.probes().join();
-        List<Judged> publicScenes = new SceneJudge(grading, probes,
-                new PixelCounterexample.Code(sources.sphere(), sources.renderer(), sandbox), images, out)
+        List<Judged> publicScenes = new SceneJudge(grading, probes, new SceneJudge.Code(
+                new PixelCounterexample.Code(sources.sphere(), sources.renderer(), sandbox), hiddenRun), images, out)
                 .judgeBatch(SceneBatch.PUBLIC, run.ran(), List.of());
-        SceneRuns.Ran hidden = hiddenRun.ran(runs, started, work, run.ran().took());
+        SceneRuns.Ran hidden = hiddenRun.ran();
         List<Judged> judged = new ArrayList<>(publicScenes);
         judged.addAll(new SceneJudge(grading, probes, null, new FeedbackImages(null, out, out), out)
                 .judgeBatch(SceneBatch.HIDDEN, hidden, publicScenes));
