@@ -22,12 +22,6 @@ final class FileKind {
 
     /** How many bytes are looked at. */
     private static final int HEAD = 512;
-    /** The file type bits of a Unix mode (S_IFMT), and the types that are neither a file nor a folder. */
-    private static final int FILE_TYPE = 0170000;
-    private static final int NAMED_PIPE = 0010000;
-    private static final int CHARACTER_DEVICE = 0020000;
-    private static final int BLOCK_DEVICE = 0060000;
-    private static final int SOCKET = 0140000;
 
     private FileKind() {
     }
@@ -44,10 +38,12 @@ final class FileKind {
             return Files.exists(path, LinkOption.NOFOLLOW_LINKS) ? "neither a file nor a folder"
                     : "no such file or folder";
         }
-        String kind = switch (mode & FILE_TYPE) {
-            case NAMED_PIPE -> "a named pipe";
-            case CHARACTER_DEVICE, BLOCK_DEVICE -> "a device";
-            case SOCKET -> "a socket";
+        // The file type is the mode's bits S_IFMT (0170000), in octal as stat(2) gives them: S_IFIFO 0010000,
+        // S_IFCHR 0020000, S_IFBLK 0060000, S_IFSOCK 0140000.
+        String kind = switch (mode & 0170000) {
+            case 0010000 -> "a named pipe";
+            case 0020000, 0060000 -> "a device";
+            case 0140000 -> "a socket";
             default -> "neither a file nor a folder";
         };
         return kind + ", not Moodle's \"Download all submissions\" zip or the folder it unpacks to";
