@@ -16,6 +16,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.function.Function;
+import java.util.regex.Pattern;
 
 /**
  * The pages a cohort's grading leaves in its report folder:
@@ -32,6 +33,12 @@ public final class CohortReport {
 
     /** The report folder's page of the whole cohort. */
     public static final String INDEX = "index.html";
+
+    /** The names tick1 gives its pages and images (1-tick1-diff.png) in a student's feedback folder. */
+    private static final String NAMES = "(" + Pattern.quote(FeedbackPage.HTML) + "|" + Pattern.quote(FeedbackPage.TEXT)
+            + "|\\d+-.+-(diff|yours|expected)\\.png)";
+    /** Those names, and those of the temporary files they are written as ({@code .feedback.html.RANDOM.tmp}). */
+    private static final Pattern WRITTEN = Pattern.compile(NAMES + "|\\." + NAMES + "\\.\\d+\\.tmp");
 
     private CohortReport() {
     }
@@ -100,8 +107,9 @@ public final class CohortReport {
     }
 
     /**
-     * Deletes the feedback folders of students not among {@code results} (no longer in the download): their files,
-     * then the folder; one holding a folder, which tick1 never writes there, is left as it is.
+     * Deletes the feedback folders of students not among {@code results} (no longer in the download): the files
+     * tick1 writes there ({@link #WRITTEN}), then the folder if nothing else is left in it. What the course staff
+     * put there (a marker's notes, a folder of their own) is theirs, never deleted.
      */
     private static void removeOthers(Path reportFolder, List<StudentResult> results) throws IOException {
         Set<String> folders = new HashSet<>();
@@ -114,7 +122,8 @@ public final class CohortReport {
                 }
                 try (DirectoryStream<Path> files = Files.newDirectoryStream(student)) {
                     for (Path file : files) {
-                        if (!Files.isDirectory(file, LinkOption.NOFOLLOW_LINKS)) {
+                        if (WRITTEN.matcher(file.getFileName().toString()).matches()
+                                && !Files.isDirectory(file, LinkOption.NOFOLLOW_LINKS)) {
                             Files.delete(file);
                         }
                     }
@@ -122,7 +131,7 @@ public final class CohortReport {
                 try {
                     Files.delete(student);
                 } catch (DirectoryNotEmptyException e) {
-                    // a folder of someone else's in it: left
+                    // a file or folder of someone else's in it: left
                 }
             }
         } catch (NoSuchFileException e) {

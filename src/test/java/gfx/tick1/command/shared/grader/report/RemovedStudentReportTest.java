@@ -36,4 +36,30 @@ class RemovedStudentReportTest {
         assertThat(report.resolve("feedback").resolve(KEPT).resolve("feedback.txt")).as("the kept student's feedback")
                 .isRegularFile();
     }
+
+    @Test
+    void aFileTick1NeverWritesInARemovedStudentsFolderIsKeptWithTheFolder() throws IOException {
+        StudentResult kept = SmallCohort.notCompiled(KEPT, "1001", "Ann Smith");
+        CohortReport.write(report, List.of(kept, SmallCohort.notCompiled(REMOVED, "1003", "Bob Jones")),
+                SmallCohort::grade);
+        Path comments = Files.writeString(report.resolve("feedback").resolve(REMOVED).resolve("marker-comments.txt"),
+                "a marker's own words");
+
+        CohortReport.write(report, List.of(kept), SmallCohort::grade);
+
+        assertThat(comments).as("a marker's file in the removed student's feedback folder").hasContent(
+                "a marker's own words");
+        assertThat(report.resolve("feedback").resolve(REMOVED).resolve("feedback.txt"))
+                .as("tick1's feedback in the removed student's folder").doesNotExist();
+    }
+
+    @Test
+    void aFolderOfTheUsersOwnInTheFeedbackFolderKeepsItsFilesOnAFirstGrade() throws IOException {
+        Path notes = Files.createDirectories(report.resolve("feedback").resolve("My notes")).resolve("notes.txt");
+        Files.writeString(notes, "the user's notes");
+
+        CohortReport.write(report, List.of(SmallCohort.notCompiled(KEPT, "1001", "Ann Smith")), SmallCohort::grade);
+
+        assertThat(notes).as("the user's notes in a folder of the feedback folder").hasContent("the user's notes");
+    }
 }
