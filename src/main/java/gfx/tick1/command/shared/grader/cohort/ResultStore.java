@@ -21,6 +21,7 @@ import java.nio.channels.FileChannel;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
+import java.nio.file.DirectoryNotEmptyException;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
@@ -269,8 +270,15 @@ public final class ResultStore {
             }
         }
         force(entry);
-        if (Files.isSymbolicLink(folderOf(key))) {
-            Files.delete(folderOf(key));   // the link, not what it names: load never reads through it
+        if (Files.exists(folderOf(key), LinkOption.NOFOLLOW_LINKS)
+                && !Files.isDirectory(folderOf(key), LinkOption.NOFOLLOW_LINKS)) {
+            // A link or a file where a result's folder goes (load never reads through a link): itself, not what a
+            // link names, deleted; a folder another job stored there meanwhile is not deleted, and is met below.
+            try {
+                Files.deleteIfExists(folderOf(key));
+            } catch (DirectoryNotEmptyException e) {
+                // another job's result
+            }
         }
         try {
             Files.move(entry, folderOf(key), StandardCopyOption.ATOMIC_MOVE);

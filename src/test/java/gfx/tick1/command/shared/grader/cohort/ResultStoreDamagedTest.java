@@ -47,6 +47,17 @@ class ResultStoreDamagedTest {
                 .extracting(StudentResult::time).isEqualTo(Duration.ofMillis(5));
     }
 
+    @Test
+    void aStoredResultDamagedIntoAFileIsReplacedByTheNextResultSavedUnderItsKey() throws IOException {
+        ResultStore store = new ResultStore(state);
+        Files.writeString(store.folderOf("key"), "not a folder");
+
+        store.save("key", passed(5), store.newEntry());
+
+        assertThat(store.load("key", SUBMISSION)).as("the result stored over a file at its key").isNotNull()
+                .extracting(StudentResult::time).isEqualTo(Duration.ofMillis(5));
+    }
+
     private static StudentResult passed(long millis) {
         return new StudentResult(SUBMISSION, new StudentResult.Summary(true, 2, 2, Category.Outcome.PASSED, "PASSED"),
                 List.of(), Duration.ofMillis(millis));
