@@ -175,11 +175,8 @@ final class CohortCommand {
         }
         if (stopped) {
             Path state = options.reportFolder().resolve(STATE_FOLDER);
-            gate.shutSaying("tick1 grade: stopped: " + (cohort == null ? "before any submission was graded; the "
-                    + "results of earlier runs are kept in " + state + "; run the same command again to grade the rest"
-                    : "the results of " + cohort.kept() + " of " + Counted.of(submissionCount, "submission")
-                    + " are kept in " + state + "; run the same command again to grade the other "
-                    + (submissionCount - cohort.kept())) + " and write the report");
+            gate.shutSaying("tick1 grade: stopped: " + (cohort == null ? StopLine.beforeAnyGrade(state)
+                    : StopLine.partWay(state, cohort.kept(), submissionCount)));
         }
         if (work != null) {
             GradeCommand.reportUndeleted(WorkFolder.delete(work), stopped ? gate.past() : err);

@@ -73,7 +73,7 @@ class GradeCohortStopTest {
                 .as("what the stopped grade said:\n" + stop.said())
                 .containsExactly("tick1 grade: stopped: the results of 2 of 3 submissions are kept in "
                         + stop.report().resolve(CohortCommand.STATE_FOLDER) + "; run the same command again to "
-                        + "grade the other 1 and write the report");
+                        + "grade the rest and write the report");
         assertThat(stop.said()).as("what the stopped grade said").doesNotContain("internal error", "Exception");
         assertThat(stop.stateFolder()).as("half-written results").noneMatch(name -> name.startsWith("."));
         assertThat(stop.leftInTemporaryFolder()).as("work folders and filter files").isEmpty();
