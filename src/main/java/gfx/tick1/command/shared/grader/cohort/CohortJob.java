@@ -90,7 +90,8 @@ final class CohortJob {
             // What the grade says is for one student's own grade: a cohort's (its images not stored) says the cohort.
             PrintWriter quiet = new PrintWriter(Writer.nullWriter());
             SubmissionGrader.Graded graded = grader.grade(submission, submissionWork, entry, quiet, quiet);
-            String diskShort = graded.result().passed() || fullBefore ? null : GraderDisk.shortOfSpace(folder);
+            String diskShort = graded.result().passed() || fullBefore ? null
+                    : GraderDisk.shortOfSpaceBeyond(folder, submissionWork);
             if (diskShort != null) {
                 throw new GraderShort(diskShort);
             }

@@ -19,8 +19,10 @@ import java.util.concurrent.TimeUnit;
  * ({@link #FULL_BYTES}, {@link #FULL_FILES}) was not full when the run wrote, so the failure is the
  * student's, however much less room there is than the output limit ({@link WorkFolder#RUN_SPACE})
  * allows a run to use. A disk already that full before the run began was as full for the runs that
- * passed on it: the run filled nothing, and its failure is its own. A run that filled the disk leaves
- * it full: that student is not graded, not the ones that came near it.
+ * passed on it: the run filled nothing, and its failure is its own. A disk full only with the run's own
+ * files (its output folder, which it may fill faster than its output is counted) was filled by the run:
+ * its failure is its own too. Only a disk that stays full once the run's files are gone leaves that
+ * student not graded.
  *
  * <p>It is decided from the grader's disk alone, as the file system reports it after the failure,
  * never from the result's words: those are the student's to choose (an exception's message, a
@@ -56,6 +58,25 @@ final class GraderDisk {
      */
     static String shortOfSpace(Path work) throws InterruptedException {
         return shortOfSpace(work, STAT);
+    }
+
+    /**
+     * As {@link #shortOfSpace(Path)} just after a failed run, whose own files are in {@code run}: null too
+     * when the disk is full only with them, the run having filled it itself. When the disk is full, the run's
+     * folder is deleted (it would be after the grade in any case) and the disk asked again.
+     */
+    static String shortOfSpaceBeyond(Path work, Path run) throws InterruptedException {
+        return shortOfSpaceBeyond(work, run, STAT);
+    }
+
+    /** {@link #shortOfSpaceBeyond(Path, Path)}, with the stat at {@code stat}. */
+    static String shortOfSpaceBeyond(Path work, Path run, Path stat) throws InterruptedException {
+        String why = shortOfSpace(work, stat);
+        if (why == null) {
+            return null;
+        }
+        WorkFolder.delete(run);
+        return shortOfSpace(work, stat) == null ? null : why;
     }
 
     /** {@link #shortOfSpace(Path)}, with the stat at {@code stat}. */

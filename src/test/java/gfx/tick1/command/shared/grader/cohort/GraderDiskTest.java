@@ -83,6 +83,33 @@ class GraderDiskTest {
                 .as("why the disk may be at fault, with 12 inodes free").contains("room for only 12 more files");
     }
 
+    /** A stat that counts 12 inodes free while {@code run} exists, and plenty once it is gone. */
+    private Path statFullWhile(Path run) throws IOException {
+        Path script = dir.resolve("full-while-stat");
+        Files.writeString(script, "#!/bin/sh\nif [ -e '" + run + "' ]; then echo '12 1000000'; "
+                + "else echo '500000 1000000'; fi\n");
+        Files.setPosixFilePermissions(script, PosixFilePermissions.fromString("rwx------"));
+        return script;
+    }
+
+    @Test
+    void aDiskFullOnlyWithARunsOwnFilesIsTheRunsDoingNotTheGradersShortage() throws IOException, InterruptedException {
+        Path run = Files.createDirectory(work.resolve("submission-0"));
+        Files.createFile(run.resolve("f0-0"));
+
+        assertThat(GraderDisk.shortOfSpaceBeyond(work, run, statFullWhile(run)))
+                .as("why the disk may be at fault, when it is full only while the run's own files are there").isNull();
+    }
+
+    @Test
+    void aDiskStillFullWithoutARunsOwnFilesIsTheGradersShortage() throws IOException, InterruptedException {
+        Path run = Files.createDirectory(work.resolve("submission-0"));
+
+        assertThat(GraderDisk.shortOfSpaceBeyond(work, run, stat("full-stat", "12 1000000", 0)))
+                .as("why the disk may be at fault, when it stays full without the run's files")
+                .contains("room for only 12 more files");
+    }
+
     @Test
     void aFolderOnTheMachinesOwnStatIsRoomy() throws InterruptedException {
         assertThat(GraderDisk.shortOfSpace(work)).as("why the disk may be at fault, on this machine's disk").isNull();
