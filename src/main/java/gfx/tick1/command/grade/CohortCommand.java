@@ -21,7 +21,6 @@ import gfx.tick1.command.shared.grader.sandbox.Sandbox;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.IoErrors;
 import gfx.tick1.engine.io.Counted;
-import gfx.tick1.engine.io.OnExit;
 import gfx.tick1.engine.io.ProgressLine;
 import gfx.tick1.engine.scene.SceneException;
 import java.io.IOException;
@@ -56,6 +55,7 @@ final class CohortCommand {
     private final PrintWriter out;
     private final PrintWriter err;
     private final OutputGate gate;
+    private final GradeStop stop;
     /** The worksheet given, read and checked before anything is graded; null without --worksheet. */
     private Worksheet worksheet;
     /** The grade of a pass: --max-grade, else the worksheet's Maximum Grade, else 1. */
@@ -66,16 +66,14 @@ final class CohortCommand {
     /** The grader's own work folder, once made: a stop deletes it. */
     private volatile Path work;
     CohortCommand(GradeOptions options, CohortOptions cohortOptions, PrintWriter out, PrintWriter err,
-            OutputGate gate) {
+            GradeStop stop) {
         this.options = options;
         this.cohortOptions = cohortOptions;
         this.out = out;
         this.err = err;
-        this.gate = gate;
+        this.stop = stop;
+        this.gate = stop.gate();
     }
-
-    /** Whether the grade ran to its end, or was stopped first (Ctrl-C, SIGTERM): whichever comes first holds. */
-    private enum Ending { RUNNING, ENDED, STOPPED }
 
     /** Where the cohort's sandbox comes from: made when the grade asks for it. */
     @FunctionalInterface
@@ -84,19 +82,25 @@ final class CohortCommand {
     }
 
     /**
-     * Makes the sandbox, reads the download, grades and writes the report. From the start, a stop (Ctrl-C, SIGTERM)
-     * is said in one line by the shutdown hook ({@link #stop}): the JVM ends when its hooks do, whatever else runs.
+     * Makes the sandbox, reads the download, grades and writes the report. A stop (Ctrl-C, SIGTERM) stops the jobs,
+     * says how many results are kept and deletes the work folder: Java ends when its hooks do.
      */
     int call(Sandboxes sandboxes) throws IOException, InterruptedException {
         AtomicReference<CohortGrade> running = new AtomicReference<>();
-        AtomicReference<Ending> ending = new AtomicReference<>(Ending.RUNNING);
-        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> stop(running, ending));
+        stop.onStop(() -> {
+            CohortGrade cohort = stopJobs(running);
+            gate.shutSaying(CohortEnding.stopped(options.reportFolder().resolve(STATE_FOLDER),
+                    cohort == null ? 0 : cohort.kept(), cohort == null ? 0 : submissionCount));
+            deleteWork(gate.past());
+        });
         try {
             sandbox = sandboxes.make();
             return call(running);
         } finally {
-            ending.compareAndSet(Ending.RUNNING, Ending.ENDED);
-            cleanUp.now();
+            stop.end(() -> {
+                stopJobs(running);
+                deleteWork(err);
+            });
         }
     }
 
@@ -157,13 +161,10 @@ final class CohortCommand {
     }
 
     /**
-     * Stops the grade, if it runs, and deletes the work folder; for the shutdown hook and the end alike.
-     * When the grade has not ended first ({@code ending}), it waits for every job's grade to end (what a
-     * grade cut short began to store is then deleted) and says in one line that it stopped, and how many
-     * results are kept.
+     * Stops the grade, if it runs, and waits for every job's grade to end (what a grade cut short began to store is
+     * then deleted); the grade stopped, or null.
      */
-    private void stop(AtomicReference<CohortGrade> running, AtomicReference<Ending> ending) {
-        boolean stopped = ending.compareAndSet(Ending.RUNNING, Ending.STOPPED);
+    private static CohortGrade stopJobs(AtomicReference<CohortGrade> running) {
         CohortGrade cohort = running.getAndSet(null);
         if (cohort != null) {
             cohort.stop();
@@ -173,13 +174,13 @@ final class CohortCommand {
                 Thread.currentThread().interrupt();
             }
         }
-        if (stopped) {
-            Path state = options.reportFolder().resolve(STATE_FOLDER);
-            gate.shutSaying("tick1 grade: stopped: " + (cohort == null ? StopLine.beforeAnyGrade(state)
-                    : StopLine.partWay(state, cohort.kept(), submissionCount)));
-        }
+        return cohort;
+    }
+
+    /** Deletes the work folder, if made, saying on {@code to} what could not be deleted. */
+    private void deleteWork(PrintWriter to) {
         if (work != null) {
-            GradeCommand.reportUndeleted(WorkFolder.delete(work), stopped ? gate.past() : err);
+            GradeCommand.reportUndeleted(WorkFolder.delete(work), to);
         }
     }
 

@@ -122,6 +122,8 @@ public final class GradeCommand implements Callable<Integer> {
 
     /** Shut when a stop has been said: nothing the grade's threads print comes after that line. */
     private OutputGate gate;
+    /** The grade's stop, which says that it stopped and undoes what the grade began. */
+    private GradeStop stop;
 
     @Override
     public Integer call() throws IOException, InterruptedException {
@@ -129,15 +131,20 @@ public final class GradeCommand implements Callable<Integer> {
         if (usage != null) {
             throw new ParameterException(spec.commandLine(), usage);
         }
-        StopSignal.exitOnSigterm(EXIT_STOPPED);
         // Every line of the grade passes the gate, the one-line errors that tick1's start-up prints included.
         gate = new OutputGate(spec.commandLine().getErr());
         PrintWriter out = gate.wrap(spec.commandLine().getOut());
         PrintWriter err = gate.wrap(spec.commandLine().getErr());
         spec.commandLine().setOut(out).setErr(err);
+        // A stop is said from the start (SIGTERM's status is set once it can be); a cohort says how many results
+        // it kept, once it has any.
+        stop = GradeStop.saying(gate, target.cohort != null ? CohortEnding.stopped(options.reportFolder()
+                .resolve(CohortCommand.STATE_FOLDER), 0, 0) : StudentGrade.STOPPED_LINE);
+        StopSignal.exitOnSigterm(EXIT_STOPPED);
         try {
             return format == Format.vpl ? vplEvaluation(out, err) : call(out, err);
         } finally {
+            stop.end(() -> { });
             // The gate passes text on unflushed, and tick1 ends with System.exit: whatever way the grade ends,
             // what it printed is written out (after a stop, the gate is shut and this does nothing).
             out.flush();
@@ -189,9 +196,9 @@ public final class GradeCommand implements Callable<Integer> {
         // A cohort's stop is said from the start: the sandbox is made once the cohort has its stop line ready.
         Sandbox[] made = new Sandbox[1];
         CohortCommand.Sandboxes sandboxes = () -> made[0] = hiding(sandbox(err));
-        int status = target.cohort != null ? new CohortCommand(options, target.cohort, out, err, gate).call(sandboxes)
+        int status = target.cohort != null ? new CohortCommand(options, target.cohort, out, err, stop).call(sandboxes)
                 : new StudentGrade(options, target.student.sphere, target.student.renderer, vpl() ? gradeRange() : null,
-                        sandboxes.make(), gate).call(out, err);
+                        sandboxes.make(), stop).call(out, err);
         Sandbox sandbox = made[0];
         ScenesShortfall.of(vpl() ? null : options.scenesFolder(), options.limits().width(), options.limits().height())
                 .ifPresent(shortfall -> err.println("tick1 grade: warning: " + shortfall.line(options.scenesFolder())));

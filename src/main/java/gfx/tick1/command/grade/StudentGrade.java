@@ -12,25 +12,25 @@ import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.command.shared.grader.vpl.GradeRange;
 import gfx.tick1.command.shared.grader.vpl.VplReport;
 import gfx.tick1.engine.io.IoErrors;
-import gfx.tick1.engine.io.OnExit;
 import gfx.tick1.engine.scene.SceneException;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
  * {@code tick1 grade --sphere --renderer}: one student's grade, in a work folder of its own, in tick1's format or
  * in VPL's, and its stop (Ctrl-C, SIGTERM): the student's process stopped, the work folder deleted, and one line
  * that says there is no verdict, after which the grade's outputs are shut. {@link GradeCommand} parses the command
- * line and hands it the options as values, the sandbox made and the outputs' gate.
+ * line and hands it the options as values, the sandbox made and the stop, with the outputs' gate.
  */
 final class StudentGrade {
 
     /** What a grade stopped by Ctrl-C or SIGTERM says. */
     private static final String STOPPED = "the grade was stopped (Ctrl-C or SIGTERM); no verdict";
+    /** The line that says so. */
+    static final String STOPPED_LINE = "tick1 grade: " + STOPPED;
 
     private final GradeOptions options;
     private final Path sphere;
@@ -39,15 +39,17 @@ final class StudentGrade {
     private final GradeRange vplRange;
     private final Sandbox sandbox;
     private final OutputGate gate;
+    private final GradeStop stop;
 
     StudentGrade(GradeOptions options, Path sphere, Path renderer, GradeRange vplRange, Sandbox sandbox,
-            OutputGate gate) {
+            GradeStop stop) {
         this.options = options;
         this.sphere = sphere;
         this.renderer = renderer;
         this.vplRange = vplRange;
         this.sandbox = sandbox;
-        this.gate = gate;
+        this.gate = stop.gate();
+        this.stop = stop;
     }
 
     /** Grades, printing on {@code out} and {@code err} (the gate's); the exit status. */
@@ -56,28 +58,23 @@ final class StudentGrade {
         GradeCommand.reportUndeleted(Leftovers.remove(), err);
         Path work = Leftovers.newWorkFolder("grade");
         StudentProcess process = new StudentProcess(sandbox, work.resolve("harness"), options.memoryMegabytes());
-        // At the end, or on Ctrl-C or SIGTERM: stop the student's process and delete the work folder,
-        // scenes and all. Stopped, the JVM ends when its shutdown hooks do, whatever the grade's thread
-        // is doing, so the hook says so itself: whichever of the two sees the stop first says it, once.
-        AtomicBoolean ended = new AtomicBoolean();
-        OnExit cleanUp = OnExit.run("tick1-grade-clean-up", () -> {
-            if (ended.compareAndSet(false, true)) {
-                gate.shutSaying("tick1 grade: " + STOPPED);
-            }
+        // On Ctrl-C or SIGTERM: say so, stop the student's process and delete the work folder, scenes and all.
+        stop.onStop(() -> {
+            gate.shutSaying(STOPPED_LINE);
             process.stop();
             GradeCommand.reportUndeleted(WorkFolder.delete(work), gate.past());
         });
         try {
             return grade(work, process, out, err);
         } catch (InterruptedException e) {
-            // Ctrl-C or SIGTERM stopped the student's process: the grade's end, not a fault of tick1's.
-            if (ended.compareAndSet(false, true)) {
-                throw new CommandFailure(GradeCommand.EXIT_STOPPED, STOPPED);
-            }
-            return GradeCommand.EXIT_STOPPED;
+            // Ctrl-C or SIGTERM stopped the student's process: the grade's end, not a fault of tick1's (said
+            // by the stop, whose gate drops this).
+            throw new CommandFailure(GradeCommand.EXIT_STOPPED, STOPPED);
         } finally {
-            ended.set(true);
-            cleanUp.now();
+            stop.end(() -> {
+                process.stop();
+                GradeCommand.reportUndeleted(WorkFolder.delete(work), err);
+            });
         }
     }
 

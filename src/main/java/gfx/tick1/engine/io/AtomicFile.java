@@ -14,8 +14,9 @@ import java.nio.file.attribute.PosixFilePermissions;
  * Writes a file whole or not at all: to a hidden temporary file beside the target, renamed over the target only once
  * complete. A rename within one folder is atomic on POSIX file systems, so readers see the old file or the new one.
  * If the write fails (a full disk, say) the temporary file is deleted and the exception passed on; if the JVM is
- * stopped meanwhile a shutdown hook deletes it. Only a hard kill can leave one behind: a hidden
- * {@code .NAME.RANDOM.tmp}, never the target itself. A link at the target is replaced by the file (the rename
+ * stopped meanwhile a shutdown hook deletes it, and a write begun once the JVM is stopping is refused
+ * ({@link OnExit#run}). Only a hard kill can leave one behind: a hidden {@code .NAME.RANDOM.tmp}, never the target
+ * itself. A link at the target is replaced by the file (the rename
  * replaces it), never written through.
  */
 public final class AtomicFile {

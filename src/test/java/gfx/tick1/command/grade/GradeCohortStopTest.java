@@ -110,18 +110,10 @@ class GradeCohortStopTest {
     void aStopBeforeAnyStudentsGradeBeganSaysInOneLineThatItStopped() throws Exception {
         assumeThat(!sigintIgnored()).as("SIGINT is not ignored here (the tests run in the foreground), so the grade's "
                 + "JVM can be stopped with it").isTrue();
-        // The sandbox's check runs bubblewrap as a sandbox user, who may write only in a folder open to all.
-        Path marks = Files.createDirectory(dir.resolve("marks"));
-        Files.setPosixFilePermissions(marks, PosixFilePermissions.fromString("rwxrwxrwx"));
-        Path began = marks.resolve("bubblewrap-began");
-        Path slowBubblewrap = Files.writeString(dir.resolve("slow-bwrap"), "#!/bin/sh\ntouch '" + began
-                + "'\nsleep 5\nexec /usr/bin/bwrap \"$@\"\n");
-        Files.setPosixFilePermissions(slowBubblewrap, PosixFilePermissions.fromString("rwxr-xr-x"));
-        Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, List.of("-Dtick1.grade.bwrap=" + slowBubblewrap),
+        SlowBubblewrap bubblewrap = SlowBubblewrap.in(dir);
+        Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, List.of(bubblewrap.jvmOption()),
                 gradeArguments(moodleZip(dir.resolve("download.zip"), twoCorrectThenOneSlow()), dir.resolve("report")));
-        for (int i = 0; i < 600 && grade.isAlive() && !Files.exists(began); i++) {
-            Thread.sleep(100);
-        }
+        bubblewrap.awaitBegun(grade);
         List<ProcessHandle> waiting = grade.descendants().toList();
 
         new ProcessBuilder("/bin/kill", "-INT", Long.toString(grade.pid())).start().waitFor();

@@ -46,6 +46,29 @@ class GradeStopTest {
                 .isEqualTo(GradeCommand.EXIT_STOPPED);
     }
 
+    /**
+     * A grade stopped with SIGTERM before the student's code runs (while the sandbox is being made: its bubblewrap
+     * here waits before it runs) says so in the one stop line, as a later stop does.
+     */
+    @Test
+    void aGradeStoppedBeforeItsSandboxIsMadeSaysSoAsItsLastLine() throws Exception {
+        SlowBubblewrap bubblewrap = SlowBubblewrap.in(dir);
+        Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
+        Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, List.of(bubblewrap.jvmOption()),
+                "grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--width", "16",
+                "--height", "12");
+        bubblewrap.awaitBegun(grade);
+        List<ProcessHandle> waiting = grade.descendants().toList();
+
+        new ProcessBuilder("/bin/kill", "-TERM", Long.toString(grade.pid())).start().waitFor();
+        assertThat(grade.waitFor(60, TimeUnit.SECONDS)).as("the grade ended").isTrue();
+        waiting.forEach(ProcessHandle::destroy);
+
+        List<String> said = Files.readAllLines(dir.resolve("grade.log"));
+        assertThat(said).as("what the stopped grade said").last()
+                .isEqualTo("tick1 grade: the grade was stopped (Ctrl-C or SIGTERM); no verdict");
+    }
+
     /** Waits (at most two minutes) for the student's render to run. */
     private void awaitTheStudentsCode(Process grade) throws IOException, InterruptedException {
         for (int i = 0; i < 1200 && grade.isAlive() && grade.descendants()

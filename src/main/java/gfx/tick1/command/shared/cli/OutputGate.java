@@ -57,10 +57,13 @@ public final class OutputGate {
 
     /**
      * Shuts the gate and prints {@code line} past it: nothing printed through the gate comes after that line. What
-     * passed before is flushed first.
+     * passed before is flushed first. Once shut, the gate says nothing more.
      */
     public void shutSaying(String line) {
         synchronized (lock) {
+            if (shut) {
+                return;
+            }
             shut = true;
             targets.forEach(PrintWriter::flush);
         }
