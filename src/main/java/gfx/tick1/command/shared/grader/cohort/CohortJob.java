@@ -84,14 +84,12 @@ final class CohortJob {
         }
         Path submissionWork = null;
         try {
-            // Full before the run, the disk was as full for the runs that passed on it: see GraderDisk.
-            boolean fullBefore = GraderDisk.shortOfSpace(folder) != null;
             submissionWork = Files.createDirectory(folder.resolve("submission-" + index));
             // What the grade says is for one student's own grade: a cohort's (its images not stored) says the cohort.
             PrintWriter quiet = new PrintWriter(Writer.nullWriter());
             SubmissionGrader.Graded graded = grader.grade(submission, submissionWork, entry, quiet, quiet);
-            String diskShort = graded.result().passed() || fullBefore ? null
-                    : GraderDisk.shortOfSpaceBeyond(folder, submissionWork);
+            // A failure on a disk full without the run's own files may be the disk's: see GraderDisk.
+            String diskShort = graded.result().passed() ? null : GraderDisk.shortOfSpaceBeyond(folder, submissionWork);
             if (diskShort != null) {
                 throw new GraderShort(diskShort);
             }

@@ -14,15 +14,14 @@ import java.util.concurrent.TimeUnit;
  * or missing image would. Such a result is not stored; the submission is "not graded", and the
  * next run of the same command grades it again.
  *
- * <p>It is decided from what the run hit: the disk full just after it failed, before its files are
- * deleted, and not full when it began. A disk that still has room for tick1's own part of a run
- * ({@link #FULL_BYTES}, {@link #FULL_FILES}) was not full when the run wrote, so the failure is the
- * student's, however much less room there is than the output limit ({@link WorkFolder#RUN_SPACE})
- * allows a run to use. A disk already that full before the run began was as full for the runs that
- * passed on it: the run filled nothing, and its failure is its own. A disk full only with the run's own
- * files (its output folder, which it may fill faster than its output is counted) was filled by the run:
- * its failure is its own too. Only a disk that stays full once the run's files are gone leaves that
- * student not graded.
+ * <p>It is decided from what the run hit: the disk just after it failed. A disk that still has room for
+ * tick1's own part of a run ({@link #FULL_BYTES}, {@link #FULL_FILES}) was not full when the run wrote, so the
+ * failure is the student's, however much less room there is than the output limit
+ * ({@link WorkFolder#RUN_SPACE}) allows a run to use. A disk full only with the run's own files (its output
+ * folder, which it may fill faster than its output is counted) was filled by the run: its failure is its own.
+ * A disk that stays full once the run's files are gone leaves that student not graded, even when it was that
+ * full before the run began: another job may have filled it and hold it full, and a correct run fails on it as
+ * a wrong one does.
  *
  * <p>It is decided from the grader's disk alone, as the file system reports it after the failure,
  * never from the result's words: those are the student's to choose (an exception's message, a
