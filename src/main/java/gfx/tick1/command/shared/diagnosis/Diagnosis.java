@@ -180,12 +180,16 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
     public List<String> report(boolean reread, Set<Variant> ruledOut) {
         List<String> lines = new ArrayList<>();
         Verdict verdict = verdict();
-        if (verdict != Verdict.UNSURE) {
-            lines.add("closest: " + title(closest().variant()) + " (" + shares(closest()) + ")");
+        // An image one level off the correct render has no entry to call the closest: the correct image, which
+        // it is not, is nearest; and an image that is not the correct render is never ranked beside it.
+        if (verdict == Verdict.CORRECT || verdict == Verdict.EXPLAINED) {
+            List<Candidate> ranked = verdict == Verdict.CORRECT ? candidates
+                    : candidates.stream().filter(c -> !c.variant().isCorrect()).toList();
+            lines.add("closest: " + title(ranked.get(0).variant()) + " (" + shares(ranked.get(0)) + ")");
             lines.add("top three:");
-            List<Candidate> top = top(3);
+            List<Candidate> top = ranked.subList(0, Math.min(3, ranked.size()));
             for (int i = 0; i < top.size(); i++) {
-                lines.add(line(i, top.get(i)));
+                lines.add(line(ranked, i, top.get(i)));
             }
             lines.add(onWhichPixels());
         }
@@ -213,10 +217,6 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
     /** "of tick1.xml", or nothing when the scene has no name. */
     private String ofTheScene() {
         return scene == null ? "" : " of " + scene;
-    }
-
-    private String line(int index, Candidate candidate) {
-        return line(candidates, index, candidate);
     }
 
     /** The line of {@code candidate}, ranked {@code index} among {@code ranked}. */

@@ -200,6 +200,23 @@ class DiagnoserTest {
                         + "level in a channel", "possible cause: the same formulas computed in float");
     }
 
+    /**
+     * An image whose pixels differ from the correct render is never ranked next to it: the correct image is
+     * neither its closest entry nor in its top three, whether the image is a level off it or a mistake's.
+     */
+    @ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.EnumSource(value = Variant.class, names = {"CORRECT", "UNCLAMPED_N_DOT_L"})
+    void anImageThatIsNotTheCorrectRenderNeverListsTheCorrectImage(Variant drawn) {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        BufferedImage image = new VariantRenderer(160, 120).render(scene, drawn);
+        if (drawn.isCorrect()) {
+            image.setRGB(80, 60, image.getRGB(80, 60) + 1); // blue one level up, the sphere's centre
+        }
+        String report = String.join("\n", new Diagnoser(0, 1).diagnose(image, scene, BundledScenes.TICK1).report());
+        assertThat(report).as("the report").doesNotContain("closest: the correct image", ". the correct image",
+                "= the correct image");
+    }
+
     /** The handout's figures all show tick1.xml: on another scene no entry is named with one. */
     @ParameterizedTest(name = "{0}")
     @CsvSource({"tick1.xml, true", "basic_scene.xml, false"})
