@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.behaviour;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
+import java.util.List;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Set;
@@ -188,6 +189,23 @@ class BehaviourCatalogueTest {
         assertThat(findings.untested()).as("the untested notes").singleElement().asString()
                 .startsWith("a mistake not tested by the course's scenes: for a ray that grazes a sphere")
                 .doesNotContain("leave it open");
+    }
+
+    /**
+     * For tick1 diff, a method with a mistake only an untested edge shows does not behave as ours: its note
+     * comes first, beside the method's line, not after the diff, and nothing says there is nothing to fix.
+     */
+    @Test
+    void anUntestedMistakeIsToldFirstAndTheMethodDoesNotBehaveAsOurs(@TempDir Path folder) throws Exception {
+        BehaviourFindings findings = CalledSolution.correct().sphere("double s = s1 > 0 ? s1 : s2;",
+                "double s = discriminant == 0 ? -b / a : s1 > 0 ? s1 : s2;").findings(folder);
+
+        BehaviourCheck.Lines lines = BehaviourCheck.hints(findings, List.of("Sphere", "Renderer"));
+
+        assertThat(lines.behavesAsOurs()).as("whether the methods behave as ours").isFalse();
+        assertThat(lines.behaviour()).as("the lines before the diff").hasSize(3)
+                .satisfies(first -> assertThat(first.get(1)).startsWith("note: " + BehaviourJudge.UNTESTED));
+        assertThat(lines.hints()).as("the lines after the diff").noneMatch(line -> line.startsWith("note: "));
     }
 
     /**
