@@ -163,7 +163,7 @@ public final class BehaviourCheck {
                 BehaviourFindings.Finding finding = findings.tested().stream()
                         .filter(f -> f.method().equals(method.method())).findFirst().orElseThrow();
                 behaviour.add(finding.fact());
-                hints.add("hint: reread handout " + finding.section() + ".");
+                hints.add("hint: reread " + Variant.where(finding.section()) + ".");
             }
             // A mistake only an untested edge shows is still one: told beside its method's line, before the diff.
             method.untested().forEach(note -> behaviour.add("note: " + note));

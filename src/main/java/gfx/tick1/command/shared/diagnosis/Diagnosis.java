@@ -159,7 +159,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
             case LEVEL_OFF_CORRECT -> Optional.of(
                     "handout section 5 (compute each term in double, in the order the handout writes it).");
             case EXPLAINED -> explaining().size() == 1
-                    ? Optional.of("handout " + explaining().get(0).variant().reread() + ".") : Optional.empty();
+                    ? Optional.of(explaining().get(0).variant().rereadWhere() + ".") : Optional.empty();
             default -> Optional.empty();
         };
     }
@@ -275,7 +275,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
                 + "scene cannot tell them apart.");
         for (Candidate candidate : explaining.stream().filter(c -> !ruledOut.contains(c.variant())).toList()) {
             lines.add("if it is " + title(candidate.variant()) + ": " + candidate.variant().explanation()
-                    + "; reread handout " + candidate.variant().reread() + ".");
+                    + "; reread " + candidate.variant().rereadWhere() + ".");
         }
     }
 
@@ -318,8 +318,8 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         }
         for (Candidate candidate : shown) {
             if (!candidate.variant().isCorrect()) {
-                lines.add("if it is " + title(candidate.variant()) + ": reread handout "
-                        + candidate.variant().reread() + ".");
+                lines.add("if it is " + title(candidate.variant()) + ": reread " + candidate.variant().rereadWhere()
+                        + ".");
             }
         }
     }

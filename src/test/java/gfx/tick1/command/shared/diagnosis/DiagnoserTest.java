@@ -217,6 +217,18 @@ class DiagnoserTest {
                 "= the correct image");
     }
 
+    /** What to reread for a mistake of the starter code's part is named as such, never as a section of the handout. */
+    @Test
+    void aRereadLineForTheStarterCodeDoesNotCallItTheHandout() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        Diagnosis diagnosis = new Diagnoser().diagnose(new VariantRenderer(160, 120).render(scene,
+                Variant.ROUNDED_BYTES), scene, BundledScenes.TICK1);
+        String report = String.join("\n", diagnosis.report(true));
+
+        assertThat(report).as("the report").contains("reread: the starter code's Renderer.render")
+                .doesNotContain("handout the ");
+    }
+
     /** The handout's figures all show tick1.xml: on another scene no entry is named with one. */
     @ParameterizedTest(name = "{0}")
     @CsvSource({"tick1.xml, true", "basic_scene.xml, false"})
