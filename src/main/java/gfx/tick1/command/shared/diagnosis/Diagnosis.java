@@ -285,8 +285,10 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
      */
     private void unsure(List<String> lines, Set<Variant> ruledOut) {
         Candidate best = closest();
-        List<Candidate> pool = candidates.stream().filter(c -> !c.variant().isCorrect()
+        List<Candidate> possible = candidates.stream().filter(c -> !c.variant().isCorrect()
                 && !ruledOut.contains(c.variant())).toList();
+        // An entry that gets no pixel right is no lead.
+        List<Candidate> pool = possible.stream().filter(c -> c.exactShare() > 0).toList();
         lines.add("verdict: unsure: no entry of the catalogue explains this image exactly; it is not the correct "
                 + "image, and it may show a mistake the catalogue does not know, or two at once.");
         if (isWeak()) {
@@ -301,7 +303,9 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         List<Candidate> level = pool.isEmpty() ? pool : tiedWith(pool.get(0), pool);
         List<Candidate> shown = (level.size() > 1 ? level : pool).subList(0,
                 Math.min(MOST_CANDIDATES, level.size() > 1 ? level.size() : pool.size()));
-        lines.add(pool.isEmpty() ? "candidates: none; your methods' answers rule out every entry that draws a sphere"
+        lines.add(pool.isEmpty() ? possible.isEmpty()
+                ? "candidates: none; your methods' answers rule out every entry that draws a sphere"
+                : "candidates: none; no entry your methods' answers leave possible gets a sphere pixel right"
                 : level.size() > 1
                 ? "candidates, in a near tie (within " + percent(NEAR_TIE) + " of the sphere pixels):"
                 : "candidates, closest first:");

@@ -209,6 +209,31 @@ class BehaviourCatalogueTest {
     }
 
     /**
+     * An illuminate whose answers are neither ours nor ours with red and blue exchanged rules out, as the whole
+     * of an image, every mistake of render alone: each of them draws with our illuminate's answers.
+     */
+    @Test
+    void anIlluminateThatIsNotOursLeavesNoMistakeOfRenderAloneToExplainTheImage(@TempDir Path folder)
+            throws Exception {
+        MethodBehaviour illuminate = CalledSolution.correct().renderer(RETURN_SUM,
+                "return ambient.add(diffuse).add(specular).scale(0.5);").findings(folder).behaviour().illuminate();
+
+        assertThat(illuminate.notAlone()).as("the mistakes of render that cannot be the whole image")
+                .containsExactlyInAnyOrder(Variant.RED_BLUE_SWAPPED, Variant.ROUNDED_BYTES, Variant.UPSIDE_DOWN);
+    }
+
+    /** An illuminate that exchanges red and blue itself leaves "red and blue swapped" a possible image. */
+    @Test
+    void anIlluminateThatSwapsRedAndBlueLeavesThatMistakePossible(@TempDir Path folder) throws Exception {
+        MethodBehaviour illuminate = CalledSolution.correct().renderer(RETURN_SUM,
+                "Vector3 sum = ambient.add(diffuse).add(specular); return new Vector3(sum.z, sum.y, sum.x);")
+                .findings(folder).behaviour().illuminate();
+
+        assertThat(illuminate.notAlone()).as("the mistakes of render that cannot be the whole image")
+                .doesNotContain(Variant.RED_BLUE_SWAPPED).contains(Variant.UPSIDE_DOWN);
+    }
+
+    /**
      * A slip the catalogue has no model of (one channel of the specular term takes another's
      * light) is shown by its simplest counterexample, in which only that channel differs, and
      * said to be unrecognised: never named as something it is not.

@@ -229,6 +229,21 @@ class DiagnoserTest {
                 .doesNotContain("handout the ");
     }
 
+    /** An unsure image's candidates each get some sphere pixel exactly right: one with none is no lead. */
+    @Test
+    void noCandidateOfAnUnsureImageHasNoPixelExact() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        BufferedImage image = new VariantRenderer(160, 120).render(scene, Variant.CORRECT);
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                image.setRGB(x, y, image.getRGB(x, y) ^ 0x808080); // every channel far from every entry's
+            }
+        }
+        String report = String.join("\n", new Diagnoser().diagnose(image, scene, BundledScenes.TICK1).report());
+
+        assertThat(report).as("the report").contains("verdict: unsure").doesNotContain(" 0.000% of pixels exact");
+    }
+
     /** The handout's figures all show tick1.xml: on another scene no entry is named with one. */
     @ParameterizedTest(name = "{0}")
     @CsvSource({"tick1.xml, true", "basic_scene.xml, false"})
