@@ -178,6 +178,14 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
      * otherwise than their models.
      */
     public List<String> report(boolean reread, Set<Variant> ruledOut) {
+        return report(reread, ruledOut, false);
+    }
+
+    /**
+     * The diagnosis for a person, as {@link #report(boolean, Set)} gives it; with {@code rendered}, the image
+     * is one tick1 had the code render from this scene itself, so it is never said to show another scene.
+     */
+    public List<String> report(boolean reread, Set<Variant> ruledOut, boolean rendered) {
         List<String> lines = new ArrayList<>();
         Verdict verdict = verdict();
         // An image one level off the correct render has no entry to call the closest: the correct image, which
@@ -198,7 +206,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
             case CORRECT -> correct(lines, explaining.get(0));
             case LEVEL_OFF_CORRECT -> levelOff(lines, levelOffCorrect(), reread);
             case EXPLAINED -> explained(lines, explaining, reread, ruledOut);
-            case UNSURE -> unsure(lines, ruledOut);
+            case UNSURE -> unsure(lines, ruledOut, rendered);
             default -> throw new IllegalStateException();
         }
         return lines;
@@ -283,7 +291,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
      * No entry explains the image: say so, and show the closest few as candidates, never as the
      * answer; never the correct image, which the image is not, nor an entry of {@code ruledOut}.
      */
-    private void unsure(List<String> lines, Set<Variant> ruledOut) {
+    private void unsure(List<String> lines, Set<Variant> ruledOut, boolean rendered) {
         Candidate best = closest();
         List<Candidate> possible = candidates.stream().filter(c -> !c.variant().isCorrect()
                 && !ruledOut.contains(c.variant())).toList();
@@ -291,7 +299,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         List<Candidate> pool = possible.stream().filter(c -> c.exactShare() > 0).toList();
         lines.add("verdict: unsure: no entry of the catalogue explains this image exactly; it is not the correct "
                 + "image, and it may show a mistake the catalogue does not know, or two at once.");
-        if (isWeak()) {
+        if (isWeak() && !rendered) {
             lines.add("  (a weak match: the image may show another scene or a mistake not in the catalogue)");
         }
         if (best.variant().isCorrect()) {

@@ -229,19 +229,38 @@ class DiagnoserTest {
                 .doesNotContain("handout the ");
     }
 
+    /** The correct render with every channel of every pixel moved half the range: far from every entry's. */
+    private static BufferedImage farFromEveryEntry(Scene scene) {
+        BufferedImage image = new VariantRenderer(160, 120).render(scene, Variant.CORRECT);
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                image.setRGB(x, y, image.getRGB(x, y) ^ 0x808080);
+            }
+        }
+        return image;
+    }
+
     /** An unsure image's candidates each get some sphere pixel exactly right: one with none is no lead. */
     @Test
     void noCandidateOfAnUnsureImageHasNoPixelExact() {
         Scene scene = BundledScenes.load(BundledScenes.TICK1);
-        BufferedImage image = new VariantRenderer(160, 120).render(scene, Variant.CORRECT);
-        for (int y = 0; y < image.getHeight(); y++) {
-            for (int x = 0; x < image.getWidth(); x++) {
-                image.setRGB(x, y, image.getRGB(x, y) ^ 0x808080); // every channel far from every entry's
-            }
-        }
+        BufferedImage image = farFromEveryEntry(scene);
         String report = String.join("\n", new Diagnoser().diagnose(image, scene, BundledScenes.TICK1).report());
 
         assertThat(report).as("the report").contains("verdict: unsure").doesNotContain(" 0.000% of pixels exact");
+    }
+
+    /** Where tick1 had the code render the scene itself (a grade), a weak match never suggests another scene. */
+    @Test
+    void aWeakMatchOfASceneTick1RenderedItselfDoesNotSuggestAnotherScene() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        BufferedImage image = farFromEveryEntry(scene);
+        Diagnosis diagnosis = new Diagnoser().diagnose(image, scene, BundledScenes.TICK1);
+
+        assertThat(String.join("\n", diagnosis.report(true, Set.of()))).as("the report of an image given")
+                .contains("another scene");
+        assertThat(String.join("\n", diagnosis.report(true, Set.of(), true))).as("the report of a scene rendered")
+                .doesNotContain("another scene");
     }
 
     /** The handout's figures all show tick1.xml: on another scene no entry is named with one. */

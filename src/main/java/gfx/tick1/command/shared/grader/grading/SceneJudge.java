@@ -250,7 +250,8 @@ final class SceneJudge {
         if (diagnosis.verdict() == Diagnosis.Verdict.UNSURE) {
             Stream.of(Variant.values()).filter(v -> !probes.behaviour().allowsAlone(v)).forEach(notCandidates::add);
         }
-        lines.addAll(diagnosis.report(imageSaysReread, notCandidates));
+        // The code rendered the scene it was given: its image shows no other scene.
+        lines.addAll(diagnosis.report(imageSaysReread, notCandidates, true));
         List<String> reread = new ArrayList<>(imageSaysReread ? diagnosis.toReread().stream().toList() : List.of());
         boolean shows = !probesShown && (behaviourSays || !probes.untested().isEmpty());
         Findings found = shows ? found(probes) : Findings.NONE;
