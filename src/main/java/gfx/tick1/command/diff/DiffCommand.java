@@ -60,7 +60,8 @@ public final class DiffCommand implements Callable<Integer> {
 
     @ExitStatus("only methods that behave as ours differ, or members that leave the handout's scenes drawn as ours")
     public static final int EXIT_SAME = 0;
-    @ExitStatus("a method does not behave as ours, another member differs and the scenes were not drawn as ours, or "
+    @ExitStatus("a method does not behave as ours (even on an untested edge), another "
+            + "member differs and the scenes were not drawn as ours, or "
             + "behaviour was not checked")
     public static final int EXIT_DIFFERENT = 1;
     @ExitStatus("a file cannot be read or parsed, or is not a Sphere or Renderer class")

@@ -12,10 +12,10 @@ import java.util.Map;
  * with the starter kit and their {@code intersectionWith} and {@code illuminate} are called in
  * the sandbox on the inputs {@code grade} uses (a file not given is the starter kit's, and its
  * method is not reported). For each given file's method, one line first: "behaves as ours on N
- * inputs", or what differs; after the diff, the notes on what the course's scenes cannot show and
- * the hints of what to reread. When the methods cannot run (no sandbox, the files do not
- * compile), one line says that behaviour could not be checked. With {@code --no-sandbox} they run
- * without the sandbox.
+ * inputs", or what differs, and a note on each mistake the course's scenes cannot show (the method
+ * then does not behave as ours); after the diff, the hints of what to reread. When the methods
+ * cannot run (no sandbox, the files do not compile), one line says that behaviour could not be
+ * checked. With {@code --no-sandbox} they run without the sandbox.
  */
 final class Hints {
 

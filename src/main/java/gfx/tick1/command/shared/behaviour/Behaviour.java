@@ -16,6 +16,15 @@ public record Behaviour(boolean ran, MethodBehaviour intersectionWith, MethodBeh
         return !ran || !intersectionWith.ruledOut().contains(mistake) && !illuminate.ruledOut().contains(mistake);
     }
 
+    /**
+     * Whether the answers leave {@code entry} possible as the whole of an image: {@link #allows} it, and, for a
+     * mistake of render, neither method's answers are visibly what that mistake, drawn with ours, cannot give.
+     */
+    public boolean allowsAlone(Variant entry) {
+        return allows(entry) && (!ran || !intersectionWith.notAlone().contains(entry)
+                && !illuminate.notAlone().contains(entry));
+    }
+
     /** Whether both methods behave as ours on every tested input. */
     public boolean behavesAsOurs() {
         return ran && intersectionWith.behavesAsOurs() && illuminate.behavesAsOurs();

@@ -20,16 +20,16 @@ import java.util.List;
  * The behaviour of a Sphere.java and a Renderer.java on their own, for {@code tick1 diff}: compiled
  * with the starter kit and run in the sandbox, as {@code grade} runs them, with no scene, on the
  * behaviour's inputs. For each method asked about, one line: that it behaves as ours, or the finding
- * ({@link BehaviourFindings}); then the notes on what the course's scenes cannot show, and the hints
- * of what to reread. Where the methods cannot run (no sandbox, the files do not compile), there
+ * ({@link BehaviourFindings}) and the notes on mistakes the course's scenes cannot show; then the
+ * hints of what to reread. Where the methods cannot run (no sandbox, the files do not compile), there
  * is nothing but one line that says why.
  */
 public final class BehaviourCheck {
 
     /**
-     * What the methods asked about did: one line each, first; then "note: ..." and "hint: ..."
-     * lines; or, when they could not be run, none and why. {@code drawn}: the handout's scenes as the
-     * code drew them, when asked for and the code ran; else null.
+     * What the methods asked about did: one line each, each followed by its "note: ..." lines,
+     * first; then "hint: ..." lines; or, when they could not be run, none and why. {@code drawn}: the
+     * handout's scenes as the code drew them, when asked for and the code ran; else null.
      */
     public record Lines(List<String> behaviour, List<String> hints, String whyNone, boolean behavesAsOurs,
             DrawnScenes drawn) {
@@ -163,9 +163,11 @@ public final class BehaviourCheck {
                 BehaviourFindings.Finding finding = findings.tested().stream()
                         .filter(f -> f.method().equals(method.method())).findFirst().orElseThrow();
                 behaviour.add(finding.fact());
-                hints.add("hint: reread handout " + finding.section() + ".");
+                hints.add("hint: reread " + Variant.where(finding.section()) + ".");
             }
-            method.untested().forEach(note -> hints.add("note: " + note));
+            // A mistake only an untested edge shows is still one: told beside its method's line, before the diff.
+            method.untested().forEach(note -> behaviour.add("note: " + note));
+            ours &= method.untested().isEmpty();
         }
         return new Lines(behaviour, hints, null, ours, null);
     }

@@ -117,7 +117,7 @@ public final class BehaviourFindings {
 
     /** The sections to reread as a failure's explanation names them: "handout section 4, ...". */
     public List<String> toReread() {
-        return sections().stream().map(section -> "handout " + section).toList();
+        return sections().stream().map(Variant::where).toList();
     }
 
     /**
@@ -126,8 +126,8 @@ public final class BehaviourFindings {
      */
     public List<String> notes() {
         List<String> notes = new ArrayList<>();
-        tested.forEach(f -> notes.add(f.fact() + " (tick1.xml and the hidden scene do not show this; handout "
-                + f.section() + ")"));
+        tested.forEach(f -> notes.add(f.fact() + " (tick1.xml and the hidden scene do not show this; "
+                + Variant.where(f.section()) + ")"));
         notes.addAll(untested());
         return notes;
     }

@@ -79,11 +79,20 @@ final class BehaviourJudge {
 
         /** "for INPUT, yours is X; ours is Y". */
         String counterexample();
+
+        /**
+         * Whether the answer may be one the code gives when its image is that of {@code render}, a mistake
+         * of render drawn with our answers: unless a model of the answers says otherwise, it may.
+         */
+        default boolean couldBeDrawnWith(Variant render) {
+            return true;
+        }
     }
 
     static Behaviour judge(Answers answers) {
         if (!answers.any()) {
-            MethodBehaviour none = new MethodBehaviour("", 0, MethodBehaviour.Difference.NONE, List.of(), List.of());
+            MethodBehaviour none = new MethodBehaviour("", 0, MethodBehaviour.Difference.NONE, List.of(), List.of(),
+                    List.of());
             return new Behaviour(false, none, none);
         }
         List<RayCase> rays = new ArrayList<>();
@@ -101,7 +110,8 @@ final class BehaviourJudge {
         MethodBehaviour intersection = judge("intersectionWith", rays, Variant.Method.INTERSECTION_WITH,
                 AnswerFacts.ofHits(rays));
         intersection = new MethodBehaviour(intersection.method(), intersection.inputs(), intersection.difference(),
-                untested(answers, rays, intersection.difference().mistake()), intersection.ruledOut());
+                untested(answers, rays, intersection.difference().mistake()), intersection.ruledOut(),
+                intersection.notAlone());
         MethodBehaviour illumination = judge("illuminate", shadings, Variant.Method.ILLUMINATE,
                 AnswerFacts.ofColours(shadings));
         return new Behaviour(true, intersection, illumination);
@@ -114,8 +124,11 @@ final class BehaviourJudge {
         List<Variant> ruledOut = mistakes(which).stream()
                 .filter(v -> !everyAnswer(cases, c -> c.answerIs(EnumSet.of(v)))).toList();
         if (differing.isEmpty()) {
-            return new MethodBehaviour(method, cases.size(), MethodBehaviour.Difference.NONE, List.of(), ruledOut);
+            return new MethodBehaviour(method, cases.size(), MethodBehaviour.Difference.NONE, List.of(), ruledOut,
+                    List.of());
         }
+        List<Variant> notAlone = Stream.of(Variant.values()).filter(v -> v.method() == Variant.Method.RENDER
+                && differing.stream().map(cases::get).anyMatch(c -> c.visible() && !c.couldBeDrawnWith(v))).toList();
         // The differing inputs first: a model that is not the student's fails on one of them at once.
         List<Case> order = new ArrayList<>();
         differing.forEach(i -> order.add(cases.get(i)));
@@ -127,7 +140,7 @@ final class BehaviourJudge {
                 .orElseGet(() -> differing.stream().map(cases::get).min(simplestFirst).orElseThrow().counterexample()
                         + " (" + BELOW_ONE_LEVEL + ")");
         return new MethodBehaviour(method, cases.size(), new MethodBehaviour.Difference(differing,
-                reproducing(order, which), counterexample, properties), List.of(), ruledOut);
+                reproducing(order, which), counterexample, properties), List.of(), ruledOut, notAlone);
     }
 
     /** The catalogue's mistakes of the method {@code which}: the entries with a model of it, but ours. */
@@ -307,6 +320,27 @@ final class BehaviourJudge {
             double[] rgb = colour.rgb();
             return Vector3.toByte(rgb[0]) != Vector3.toByte(ours.x) || Vector3.toByte(rgb[1]) != Vector3.toByte(ours.y)
                     || Vector3.toByte(rgb[2]) != Vector3.toByte(ours.z) || Double.isNaN(rgb[0] + rgb[1] + rgb[2]);
+        }
+
+        /**
+         * Our colour, exchanged red for blue where the image's red and blue are (the exchange may be made here),
+         * or within a level of ours where the image is rounded (a rounding here gives that): no other.
+         */
+        @Override
+        public boolean couldBeDrawnWith(Variant render) {
+            if (!(answer instanceof Colour colour)) {
+                return false;
+            }
+            Vector3 ours = model(OURS);
+            double[] rgb = colour.rgb();
+            return switch (render) {
+                case RED_BLUE_SWAPPED -> closeClamped(rgb[0], ours.z) && closeClamped(rgb[1], ours.y)
+                        && closeClamped(rgb[2], ours.x);
+                case ROUNDED_BYTES -> Math.abs(Vector3.toByte(rgb[0]) - Vector3.toByte(ours.x)) <= 1
+                        && Math.abs(Vector3.toByte(rgb[1]) - Vector3.toByte(ours.y)) <= 1
+                        && Math.abs(Vector3.toByte(rgb[2]) - Vector3.toByte(ours.z)) <= 1;
+                default -> false;
+            };
         }
 
         @Override

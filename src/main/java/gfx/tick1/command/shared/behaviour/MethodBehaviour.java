@@ -14,9 +14,12 @@ import java.util.List;
  *                   {@link BehaviourJudge#UNTESTED}
  * @param ruledOut   the catalogue's mistakes of this method whose models answer otherwise than it on a
  *                   tested input: none of them is what it does
+ * @param notAlone   the catalogue's mistakes of render, drawn with our answers of this method, that cannot be
+ *                   the whole of an image: on an input where its answer is visibly not ours, it is not one
+ *                   such a mistake made here either
  */
 public record MethodBehaviour(String method, int inputs, Difference difference, List<String> untested,
-        List<Variant> ruledOut) {
+        List<Variant> ruledOut, List<Variant> notAlone) {
 
     /**
      * Where and how a method's answers differ from ours.

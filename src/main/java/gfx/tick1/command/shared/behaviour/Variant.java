@@ -192,6 +192,16 @@ public enum Variant {
         return reread;
     }
 
+    /** Where to look, as the words after "reread": "handout section 4, ...", or the starter code's member. */
+    public String rereadWhere() {
+        return where(reread);
+    }
+
+    /** {@code place} after "reread": a section is the handout's; the starter code is named as it is. */
+    public static String where(String place) {
+        return place.startsWith("section") ? "handout " + place : place;
+    }
+
     /** The entries {@code diagnose} can tell apart by their images. */
     public static EnumSet<Variant> seenInImages() {
         EnumSet<Variant> seen = EnumSet.noneOf(Variant.class);

@@ -159,7 +159,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
             case LEVEL_OFF_CORRECT -> Optional.of(
                     "handout section 5 (compute each term in double, in the order the handout writes it).");
             case EXPLAINED -> explaining().size() == 1
-                    ? Optional.of("handout " + explaining().get(0).variant().reread() + ".") : Optional.empty();
+                    ? Optional.of(explaining().get(0).variant().rereadWhere() + ".") : Optional.empty();
             default -> Optional.empty();
         };
     }
@@ -178,14 +178,26 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
      * otherwise than their models.
      */
     public List<String> report(boolean reread, Set<Variant> ruledOut) {
+        return report(reread, ruledOut, false);
+    }
+
+    /**
+     * The diagnosis for a person, as {@link #report(boolean, Set)} gives it; with {@code rendered}, the image
+     * is one tick1 had the code render from this scene itself, so it is never said to show another scene.
+     */
+    public List<String> report(boolean reread, Set<Variant> ruledOut, boolean rendered) {
         List<String> lines = new ArrayList<>();
         Verdict verdict = verdict();
-        if (verdict != Verdict.UNSURE) {
-            lines.add("closest: " + title(closest().variant()) + " (" + shares(closest()) + ")");
+        // An image one level off the correct render has no entry to call the closest: the correct image, which
+        // it is not, is nearest; and an image that is not the correct render is never ranked beside it.
+        if (verdict == Verdict.CORRECT || verdict == Verdict.EXPLAINED) {
+            List<Candidate> ranked = verdict == Verdict.CORRECT ? candidates
+                    : candidates.stream().filter(c -> !c.variant().isCorrect()).toList();
+            lines.add("closest: " + title(ranked.get(0).variant()) + " (" + shares(ranked.get(0)) + ")");
             lines.add("top three:");
-            List<Candidate> top = top(3);
+            List<Candidate> top = ranked.subList(0, Math.min(3, ranked.size()));
             for (int i = 0; i < top.size(); i++) {
-                lines.add(line(i, top.get(i)));
+                lines.add(line(ranked, i, top.get(i)));
             }
             lines.add(onWhichPixels());
         }
@@ -194,7 +206,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
             case CORRECT -> correct(lines, explaining.get(0));
             case LEVEL_OFF_CORRECT -> levelOff(lines, levelOffCorrect(), reread);
             case EXPLAINED -> explained(lines, explaining, reread, ruledOut);
-            case UNSURE -> unsure(lines, ruledOut);
+            case UNSURE -> unsure(lines, ruledOut, rendered);
             default -> throw new IllegalStateException();
         }
         return lines;
@@ -213,10 +225,6 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
     /** "of tick1.xml", or nothing when the scene has no name. */
     private String ofTheScene() {
         return scene == null ? "" : " of " + scene;
-    }
-
-    private String line(int index, Candidate candidate) {
-        return line(candidates, index, candidate);
     }
 
     /** The line of {@code candidate}, ranked {@code index} among {@code ranked}. */
@@ -275,7 +283,7 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
                 + "scene cannot tell them apart.");
         for (Candidate candidate : explaining.stream().filter(c -> !ruledOut.contains(c.variant())).toList()) {
             lines.add("if it is " + title(candidate.variant()) + ": " + candidate.variant().explanation()
-                    + "; reread handout " + candidate.variant().reread() + ".");
+                    + "; reread " + candidate.variant().rereadWhere() + ".");
         }
     }
 
@@ -283,13 +291,15 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
      * No entry explains the image: say so, and show the closest few as candidates, never as the
      * answer; never the correct image, which the image is not, nor an entry of {@code ruledOut}.
      */
-    private void unsure(List<String> lines, Set<Variant> ruledOut) {
+    private void unsure(List<String> lines, Set<Variant> ruledOut, boolean rendered) {
         Candidate best = closest();
-        List<Candidate> pool = candidates.stream().filter(c -> !c.variant().isCorrect()
+        List<Candidate> possible = candidates.stream().filter(c -> !c.variant().isCorrect()
                 && !ruledOut.contains(c.variant())).toList();
+        // An entry that gets no pixel right is no lead.
+        List<Candidate> pool = possible.stream().filter(c -> c.exactShare() > 0).toList();
         lines.add("verdict: unsure: no entry of the catalogue explains this image exactly; it is not the correct "
                 + "image, and it may show a mistake the catalogue does not know, or two at once.");
-        if (isWeak()) {
+        if (isWeak() && !rendered) {
             lines.add("  (a weak match: the image may show another scene or a mistake not in the catalogue)");
         }
         if (best.variant().isCorrect()) {
@@ -301,7 +311,9 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         List<Candidate> level = pool.isEmpty() ? pool : tiedWith(pool.get(0), pool);
         List<Candidate> shown = (level.size() > 1 ? level : pool).subList(0,
                 Math.min(MOST_CANDIDATES, level.size() > 1 ? level.size() : pool.size()));
-        lines.add(pool.isEmpty() ? "candidates: none; your methods' answers rule out every entry that draws a sphere"
+        lines.add(pool.isEmpty() ? possible.isEmpty()
+                ? "candidates: none; your methods' answers rule out every entry that draws a sphere"
+                : "candidates: none; no entry your methods' answers leave possible gets a sphere pixel right"
                 : level.size() > 1
                 ? "candidates, in a near tie (within " + percent(NEAR_TIE) + " of the sphere pixels):"
                 : "candidates, closest first:");
@@ -318,8 +330,8 @@ public record Diagnosis(List<Candidate> candidates, int tolerance, List<Variant>
         }
         for (Candidate candidate : shown) {
             if (!candidate.variant().isCorrect()) {
-                lines.add("if it is " + title(candidate.variant()) + ": reread handout "
-                        + candidate.variant().reread() + ".");
+                lines.add("if it is " + title(candidate.variant()) + ": reread " + candidate.variant().rereadWhere()
+                        + ".");
             }
         }
     }

@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.behaviour;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
+import java.util.List;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Set;
@@ -188,6 +189,48 @@ class BehaviourCatalogueTest {
         assertThat(findings.untested()).as("the untested notes").singleElement().asString()
                 .startsWith("a mistake not tested by the course's scenes: for a ray that grazes a sphere")
                 .doesNotContain("leave it open");
+    }
+
+    /**
+     * For tick1 diff, a method with a mistake only an untested edge shows does not behave as ours: its note
+     * comes first, beside the method's line, not after the diff, and nothing says there is nothing to fix.
+     */
+    @Test
+    void anUntestedMistakeIsToldFirstAndTheMethodDoesNotBehaveAsOurs(@TempDir Path folder) throws Exception {
+        BehaviourFindings findings = CalledSolution.correct().sphere("double s = s1 > 0 ? s1 : s2;",
+                "double s = discriminant == 0 ? -b / a : s1 > 0 ? s1 : s2;").findings(folder);
+
+        BehaviourCheck.Lines lines = BehaviourCheck.hints(findings, List.of("Sphere", "Renderer"));
+
+        assertThat(lines.behavesAsOurs()).as("whether the methods behave as ours").isFalse();
+        assertThat(lines.behaviour()).as("the lines before the diff").hasSize(3)
+                .satisfies(first -> assertThat(first.get(1)).startsWith("note: " + BehaviourJudge.UNTESTED));
+        assertThat(lines.hints()).as("the lines after the diff").noneMatch(line -> line.startsWith("note: "));
+    }
+
+    /**
+     * An illuminate whose answers are neither ours nor ours with red and blue exchanged rules out, as the whole
+     * of an image, every mistake of render alone: each of them draws with our illuminate's answers.
+     */
+    @Test
+    void anIlluminateThatIsNotOursLeavesNoMistakeOfRenderAloneToExplainTheImage(@TempDir Path folder)
+            throws Exception {
+        MethodBehaviour illuminate = CalledSolution.correct().renderer(RETURN_SUM,
+                "return ambient.add(diffuse).add(specular).scale(0.5);").findings(folder).behaviour().illuminate();
+
+        assertThat(illuminate.notAlone()).as("the mistakes of render that cannot be the whole image")
+                .containsExactlyInAnyOrder(Variant.RED_BLUE_SWAPPED, Variant.ROUNDED_BYTES, Variant.UPSIDE_DOWN);
+    }
+
+    /** An illuminate that exchanges red and blue itself leaves "red and blue swapped" a possible image. */
+    @Test
+    void anIlluminateThatSwapsRedAndBlueLeavesThatMistakePossible(@TempDir Path folder) throws Exception {
+        MethodBehaviour illuminate = CalledSolution.correct().renderer(RETURN_SUM,
+                "Vector3 sum = ambient.add(diffuse).add(specular); return new Vector3(sum.z, sum.y, sum.x);")
+                .findings(folder).behaviour().illuminate();
+
+        assertThat(illuminate.notAlone()).as("the mistakes of render that cannot be the whole image")
+                .doesNotContain(Variant.RED_BLUE_SWAPPED).contains(Variant.UPSIDE_DOWN);
     }
 
     /**

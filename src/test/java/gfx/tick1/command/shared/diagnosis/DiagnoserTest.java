@@ -200,6 +200,69 @@ class DiagnoserTest {
                         + "level in a channel", "possible cause: the same formulas computed in float");
     }
 
+    /**
+     * An image whose pixels differ from the correct render is never ranked next to it: the correct image is
+     * neither its closest entry nor in its top three, whether the image is a level off it or a mistake's.
+     */
+    @ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.EnumSource(value = Variant.class, names = {"CORRECT", "UNCLAMPED_N_DOT_L"})
+    void anImageThatIsNotTheCorrectRenderNeverListsTheCorrectImage(Variant drawn) {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        BufferedImage image = new VariantRenderer(160, 120).render(scene, drawn);
+        if (drawn.isCorrect()) {
+            image.setRGB(80, 60, image.getRGB(80, 60) + 1); // blue one level up, the sphere's centre
+        }
+        String report = String.join("\n", new Diagnoser(0, 1).diagnose(image, scene, BundledScenes.TICK1).report());
+        assertThat(report).as("the report").doesNotContain("closest: the correct image", ". the correct image",
+                "= the correct image");
+    }
+
+    /** What to reread for a mistake of the starter code's part is named as such, never as a section of the handout. */
+    @Test
+    void aRereadLineForTheStarterCodeDoesNotCallItTheHandout() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        Diagnosis diagnosis = new Diagnoser().diagnose(new VariantRenderer(160, 120).render(scene,
+                Variant.ROUNDED_BYTES), scene, BundledScenes.TICK1);
+        String report = String.join("\n", diagnosis.report(true));
+
+        assertThat(report).as("the report").contains("reread: the starter code's Renderer.render")
+                .doesNotContain("handout the ");
+    }
+
+    /** The correct render with every channel of every pixel moved half the range: far from every entry's. */
+    private static BufferedImage farFromEveryEntry(Scene scene) {
+        BufferedImage image = new VariantRenderer(160, 120).render(scene, Variant.CORRECT);
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                image.setRGB(x, y, image.getRGB(x, y) ^ 0x808080);
+            }
+        }
+        return image;
+    }
+
+    /** An unsure image's candidates each get some sphere pixel exactly right: one with none is no lead. */
+    @Test
+    void noCandidateOfAnUnsureImageHasNoPixelExact() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        BufferedImage image = farFromEveryEntry(scene);
+        String report = String.join("\n", new Diagnoser().diagnose(image, scene, BundledScenes.TICK1).report());
+
+        assertThat(report).as("the report").contains("verdict: unsure").doesNotContain(" 0.000% of pixels exact");
+    }
+
+    /** Where tick1 had the code render the scene itself (a grade), a weak match never suggests another scene. */
+    @Test
+    void aWeakMatchOfASceneTick1RenderedItselfDoesNotSuggestAnotherScene() {
+        Scene scene = BundledScenes.load(BundledScenes.TICK1);
+        BufferedImage image = farFromEveryEntry(scene);
+        Diagnosis diagnosis = new Diagnoser().diagnose(image, scene, BundledScenes.TICK1);
+
+        assertThat(String.join("\n", diagnosis.report(true, Set.of()))).as("the report of an image given")
+                .contains("another scene");
+        assertThat(String.join("\n", diagnosis.report(true, Set.of(), true))).as("the report of a scene rendered")
+                .doesNotContain("another scene");
+    }
+
     /** The handout's figures all show tick1.xml: on another scene no entry is named with one. */
     @ParameterizedTest(name = "{0}")
     @CsvSource({"tick1.xml, true", "basic_scene.xml, false"})

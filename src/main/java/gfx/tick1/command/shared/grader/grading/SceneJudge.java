@@ -244,7 +244,14 @@ final class SceneJudge {
         boolean behaviourSays = probes.anyFailed();
         // What to reread comes from the tested findings; the image's own entry only when it matches exactly.
         boolean imageSaysReread = exact && !behaviourSays;
-        lines.addAll(diagnosis.report(imageSaysReread, ruledOut));
+        // No candidate of an unsure image is one the answers leave possible only as part of it.
+        Set<Variant> notCandidates = EnumSet.noneOf(Variant.class);
+        notCandidates.addAll(ruledOut);
+        if (diagnosis.verdict() == Diagnosis.Verdict.UNSURE) {
+            Stream.of(Variant.values()).filter(v -> !probes.behaviour().allowsAlone(v)).forEach(notCandidates::add);
+        }
+        // The code rendered the scene it was given: its image shows no other scene.
+        lines.addAll(diagnosis.report(imageSaysReread, notCandidates, true));
         List<String> reread = new ArrayList<>(imageSaysReread ? diagnosis.toReread().stream().toList() : List.of());
         boolean shows = !probesShown && (behaviourSays || !probes.untested().isEmpty());
         Findings found = shows ? found(probes) : Findings.NONE;

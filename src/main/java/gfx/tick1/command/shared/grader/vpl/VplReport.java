@@ -34,6 +34,8 @@ public final class VplReport {
 
     static final String BEGIN = "<|--", END = "--|>", GRADE = "Grade :=>>";
     static final String PASSED = "Tick 1: passed", FAILED = "Tick 1: failed";
+    /** The title of a pass's notes: what its methods do that the course's scenes do not show. */
+    static final String NOTES = "Notes: none of them changes the grade";
     /** The title of a report that proposes no grade. */
     public static final String NOT_SET_UP = "Tick 1: the tester is not set up";
 
@@ -77,17 +79,20 @@ public final class VplReport {
         return colon < 0 ? reason.length() : colon + 2;
     }
 
-    /** A section for each scene that failed: "tick1.xml: failed" or "hidden scene 2: failed", and why. */
+    /**
+     * A section for each scene that failed: "tick1.xml: failed" or "hidden scene 2: failed", and why; and
+     * for a pass's notes (kept in its first scene's explanation), one section of them all.
+     */
     private static List<String> scenes(List<SceneResult> scenes) {
         List<String> lines = new ArrayList<>();
         int hidden = 0;
         for (SceneResult scene : scenes) {
             String name = scene.hidden() ? "hidden scene " + ++hidden : scene.name();
-            if (scene.passed() || scene.explanation().isEmpty()) {
+            if (scene.explanation().isEmpty()) {
                 continue;
             }
-            lines.add(VplText.title(name + ": failed"));
-            if (scene.hidden()) {
+            lines.add(VplText.title(scene.passed() ? NOTES : name + ": failed"));
+            if (scene.hidden() && !scene.passed()) {
                 lines.addAll(VplText.quoted(HiddenVerdict.statedBy(scene.explanation()).words(), MOST_LINES));
             } else {
                 // A line of an explanation is one finding: each is quoted whole, whatever the others' length.

@@ -222,4 +222,18 @@ class VplReportTest {
                 .isEqualTo(LongFindings.HEAD + " " + LongFindings.sentence(LongFindings.INTERSECTION)
                         + " (more below)");
     }
+
+    @Test
+    void everyNoteOfAPassReachesTheStudent() {
+        String note = "a mistake not tested by the course's scenes: " + LongFindings.INTERSECTION;
+        String other = "your illuminate differs from ours on 2 of 1010 inputs; " + LongFindings.ILLUMINATE;
+        String comment = VplParser.proposedComment(received(VplReport.of(result(true, "passed",
+                "Congratulations! Your code passed the tester. Note: " + note + "; " + other + ".",
+                new SceneResult("tick1.xml", false, true, List.of("note: " + note, "note: " + other),
+                        SceneResult.Images.NONE)), List.of(), TEN)));
+
+        assertThat(unwrapped(comment)).as("the comment, unwrapped").contains(note, other)
+                .doesNotContain("not shown");
+        assertThat(VplParser.titles(comment)).as("the titles").first().isEqualTo("Tick 1: passed");
+    }
 }
