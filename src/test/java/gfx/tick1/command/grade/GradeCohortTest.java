@@ -330,7 +330,7 @@ class GradeCohortTest {
         for (Variant mistake : Mistakes.RENDER_ONLY) {
             List<String> feedback = feedback(mistakesName(mistake));
             assertThat(feedback).as(String.join("\n", feedback))
-                    .containsSubsequence("What to reread", "  - Handout " + mistake.reread() + ".",
+                    .containsSubsequence("What to reread", "  - " + capitalised(Variant.where(mistake.reread())) + ".",
                             "tick1.xml: failed");
         }
     }
@@ -343,6 +343,11 @@ class GradeCohortTest {
         assertThat(feedback.resolve("1-tick1-diff.png")).exists();
         assertThat(feedback).isDirectoryNotContaining("glob:**/2-hidden*");
         assertThat(shared.resolve("report").resolve("index.html")).exists();
+    }
+
+    /** {@code words} with a capital first letter, as a list item of the feedback starts. */
+    private static String capitalised(String words) {
+        return Character.toUpperCase(words.charAt(0)) + words.substring(1);
     }
 
     static Stream<Variant> mistakes() {
@@ -377,10 +382,11 @@ class GradeCohortTest {
         // What to reread: the sections of the tested findings, or, for a mistake of render's that the answers of
         // intersectionWith and illuminate cannot show, the entry the image matches exactly.
         List<String> probes = feedback.stream().filter(line -> line.startsWith("  behaviour: ")).toList();
-        List<String> reread = feedback.stream().filter(line -> line.startsWith("  reread: handout ")).toList();
+        List<String> reread = feedback.stream().filter(line -> line.startsWith("  reread: ")).toList();
         if (Mistakes.RENDER_ONLY.contains(mistake)) {
             assertThat(probes).as(text).isEmpty();
-            assertThat(reread).as(text).anyMatch(line -> line.startsWith("  reread: handout " + mistake.reread()));
+            String place = Variant.where(mistake.reread());
+            assertThat(reread).as(text).anyMatch(line -> line.startsWith("  reread: " + place));
         } else {
             assertThat(probes).as(text).isNotEmpty();
             assertThat(probes).as(text).first().asString().contains("\"" + mistake.title() + "\"");
