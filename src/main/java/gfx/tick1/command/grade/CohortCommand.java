@@ -89,7 +89,7 @@ final class CohortCommand {
         AtomicReference<CohortGrade> running = new AtomicReference<>();
         stop.onStop(() -> {
             CohortGrade cohort = stopJobs(running);
-            gate.shutSaying(CohortEnding.stopped(options.reportFolder().resolve(STATE_FOLDER),
+            gate.shutSaying(StopLine.of(options.reportFolder().resolve(STATE_FOLDER),
                     cohort == null ? 0 : cohort.kept(), cohort == null ? 0 : submissionCount));
             deleteWork(gate.past());
         });

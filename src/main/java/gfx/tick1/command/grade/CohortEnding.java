@@ -4,7 +4,6 @@ import gfx.tick1.command.shared.cli.ExitStatuses;
 import gfx.tick1.command.shared.grader.cohort.Ungraded;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.engine.io.Counted;
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
 
@@ -35,15 +34,6 @@ record CohortEnding(long total, long stored, long problems, long passed, long no
                 + stored + " from earlier runs" + (problems > 0 ? ", " + problems + " not run: a problem with their "
                 + "files" : "") + "): " + passed + " passed, " + (total - passed - notGraded) + " failed, " + notGraded
                 + " not graded.";
-    }
-
-    /**
-     * The line that says a cohort's grade stopped, keeping the results of {@code kept} of {@code count} submissions
-     * in {@code state}; {@code count} is 0 before any submission's grade began.
-     */
-    static String stopped(Path state, int kept, int count) {
-        return "tick1 grade: stopped: " + (count == 0 ? StopLine.beforeAnyGrade(state)
-                : StopLine.partWay(state, kept, count));
     }
 
     /**

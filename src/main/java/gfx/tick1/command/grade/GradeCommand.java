@@ -138,7 +138,7 @@ public final class GradeCommand implements Callable<Integer> {
         spec.commandLine().setOut(out).setErr(err);
         // A stop is said from the start (SIGTERM's status is set once it can be); a cohort says how many results
         // it kept, once it has any.
-        stop = GradeStop.saying(gate, target.cohort != null ? CohortEnding.stopped(options.reportFolder()
+        stop = GradeStop.saying(gate, target.cohort != null ? StopLine.of(options.reportFolder()
                 .resolve(CohortCommand.STATE_FOLDER), 0, 0) : StudentGrade.STOPPED_LINE);
         StopSignal.exitOnSigterm(EXIT_STOPPED);
         try {

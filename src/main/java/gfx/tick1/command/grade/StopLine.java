@@ -13,6 +13,14 @@ final class StopLine {
     private StopLine() {
     }
 
+    /**
+     * The whole line of a cohort's grade stopped with the results of {@code kept} of {@code count} submissions in
+     * {@code state}; {@code count} is 0 before any submission's grade began.
+     */
+    static String of(Path state, int kept, int count) {
+        return "tick1 grade: stopped: " + (count == 0 ? beforeAnyGrade(state) : partWay(state, kept, count));
+    }
+
     /** The line for a grade stopped before it began to grade, with earlier runs' results, if any, in {@code state}. */
     static String beforeAnyGrade(Path state) {
         return "before any submission was graded; " + (holdsAny(state) ? "the results of earlier runs are kept in "
