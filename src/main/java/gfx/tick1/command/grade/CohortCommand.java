@@ -212,11 +212,14 @@ final class CohortCommand {
             // Stopped part way (the shutdown hook says so): the report of the last whole run stays as it was.
             return GradeCommand.EXIT_STOPPED;
         }
-        return report(done);
+        return report(done, store);
     }
 
-    /** Writes grades.csv, the feedback folders and index.html from every result, and says what was done. */
-    private int report(CohortGrade.Done done) throws InterruptedException {
+    /**
+     * Writes grades.csv, the feedback folders and index.html from every result, and says what was done; the
+     * look-alike check keeps the code it parses in {@code store}.
+     */
+    private int report(CohortGrade.Done done, ResultStore store) throws InterruptedException {
         Path report = options.reportFolder();
         List<StudentResult> results = CohortOutputs.forReport(done.results());
         // A student whose feedback cannot be written is theirs alone: once, with the first reason.
@@ -229,7 +232,7 @@ final class CohortCommand {
                     .map(Submissions::namedByMoodle).toList(), report);
             CohortReport.write(report, results,
                     result -> Worksheet.grade(cohortOptions.marking().grade(result, maxGrade)),
-                    cohortOptions.lookalikes() ? Lookalikes.find(results) : null)
+                    cohortOptions.lookalikes() ? Lookalikes.find(results, store.parsedCodes()) : null)
                     .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
         } catch (CohortInputException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());

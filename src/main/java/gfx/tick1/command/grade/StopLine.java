@@ -1,5 +1,6 @@
 package gfx.tick1.command.grade;
 
+import gfx.tick1.command.shared.grader.cohort.ResultStore;
 import gfx.tick1.engine.io.Counted;
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -37,10 +38,10 @@ final class StopLine {
                 + "; run the same command again to grade the rest and write the report";
     }
 
-    /** Whether {@code folder} is a folder with anything in it. */
+    /** Whether {@code folder} is a folder with anything in it besides the code the look-alike check parsed. */
     private static boolean holdsAny(Path folder) {
         try (Stream<Path> entries = Files.list(folder)) {
-            return entries.findAny().isPresent();
+            return entries.anyMatch(entry -> !entry.getFileName().toString().equals(ResultStore.PARSED));
         } catch (IOException | UncheckedIOException e) {
             return false;
         }

@@ -8,6 +8,7 @@ import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.grade.GradeCohortTest.Student;
+import gfx.tick1.command.shared.grader.cohort.ResultStore;
 import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
@@ -275,7 +276,8 @@ class GradeCohortStopTest {
             return 0;
         }
         try (Stream<Path> entries = Files.list(state)) {
-            return entries.filter(p -> !p.getFileName().toString().startsWith(".")).count();
+            return entries.filter(p -> !p.getFileName().toString().startsWith(".")
+                    && !p.getFileName().toString().equals(ResultStore.PARSED)).count();
         }
     }
 

@@ -2,6 +2,7 @@ package gfx.tick1.command.grade;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gfx.tick1.command.shared.grader.cohort.ResultStore;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -26,6 +27,14 @@ class StopLineTest {
 
         assertThat(StopLine.beforeAnyGrade(state.getParent())).as("the stop line with earlier results")
                 .contains("the results of earlier runs are kept in " + state.getParent());
+    }
+
+    @Test
+    void aStopBeforeAnyGradeCallsNoParsedCodeEarlierResults() throws IOException {
+        Path state = Files.createDirectories(report.resolve("state").resolve(ResultStore.PARSED)).getParent();
+
+        assertThat(StopLine.beforeAnyGrade(state)).as("the stop line with only parsed code kept")
+                .doesNotContain("earlier runs");
     }
 
     @Test

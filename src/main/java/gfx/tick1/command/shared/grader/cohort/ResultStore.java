@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.cohort;
 
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.grading.Grading;
+import gfx.tick1.command.shared.grader.lookalike.ParsedCodes;
 import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
@@ -64,6 +65,9 @@ public final class ResultStore {
      * sentence a finding).
      */
     private static final String FORMAT = "tick1 grade result 4";
+
+    /** The folder in the store where the look-alike check keeps the code it parsed ({@link StoredCode}). */
+    public static final String PARSED = "parsed";
 
     private final Path folder;
 
@@ -166,6 +170,18 @@ public final class ResultStore {
     private static void add(MessageDigest sha, byte[] bytes) {
         sha.update(ByteBuffer.allocate(Long.BYTES).putLong(bytes.length).array());
         sha.update(bytes);
+    }
+
+    /**
+     * Where the look-alike check keeps the code it parsed, in this store; none is kept when its folder cannot be
+     * made (a full or read-only report folder), and every file is parsed.
+     */
+    public ParsedCodes parsedCodes() {
+        try {
+            return new StoredCode(folder.resolve(PARSED), ThisBuild.DIGEST);
+        } catch (IOException e) {
+            return ParsedCodes.NONE;
+        }
     }
 
     /** The folder of the stored result with {@code key}: its images are there. */

@@ -2,13 +2,19 @@ package gfx.tick1.command.shared.grader.lookalike;
 
 import gfx.tick1.command.shared.javacode.JavaMembers;
 import gfx.tick1.command.shared.javacode.ReferenceMembers;
+import java.nio.ByteBuffer;
+import java.nio.charset.StandardCharsets;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Supplier;
 
 /**
  * Reads students' Sphere.java and Renderer.java into {@link ComparedCode}: each file parsed as
@@ -30,25 +36,92 @@ final class CodeReader {
     static final int MOST_CHARACTERS = 200_000;
 
     private static final String LOCAL = "#";
+    /** Changes when what a parse keeps changes, so that code kept by an older reader is parsed again. */
+    private static final String FORMAT = "tick1 parsed code 1";
 
     private final int minimum;
+    private final ParsedCodes parsed;
     /** Each token's text (a local's as {@link #LOCAL}) to its number, shared by every code this reader reads. */
     private final Map<String, Integer> vocabulary = new ConcurrentHashMap<>();
     private final AtomicInteger words = new AtomicInteger();
-    private final Map<String, JavaMembers> reference = Map.of("Sphere", ReferenceMembers.ours("Sphere"),
-            "Renderer", ReferenceMembers.ours("Renderer"));
-    private final Map<String, Set<String>> starterMembers;
+    /** tick1's and the starter's files parsed, when a file must be parsed: JavaParser is not loaded before. */
+    private Tick1Code tick1;
     private final ComparedCode starter;
     private final ComparedCode referenceCode;
 
-    /** A reader whose codes are prepared for tiles of at least {@code minimum} tokens. */
+    /** tick1's own Sphere and Renderer parsed, and the members of the starter's, which a student's read sets aside. */
+    private record Tick1Code(Map<String, JavaMembers> reference, JavaMembers sphere, JavaMembers renderer,
+            Map<String, Set<String>> starterMembers) {
+
+        static Tick1Code parse() {
+            Map<String, JavaMembers> reference = Map.of("Sphere", ReferenceMembers.ours("Sphere"),
+                    "Renderer", ReferenceMembers.ours("Renderer"));
+            JavaMembers sphere = ReferenceMembers.starter("Sphere", reference.get("Sphere"));
+            JavaMembers renderer = ReferenceMembers.starter("Renderer", reference.get("Renderer"));
+            return new Tick1Code(reference, sphere, renderer, Map.of("Sphere", sphere.members().keySet(),
+                    "Renderer", renderer.members().keySet()));
+        }
+    }
+
+    /** A reader whose codes are prepared for tiles of at least {@code minimum} tokens, parsing every file. */
     CodeReader(int minimum) {
+        this(minimum, ParsedCodes.NONE);
+    }
+
+    /**
+     * A reader whose codes are prepared for tiles of at least {@code minimum} tokens, which takes code parsed
+     * before from {@code parsed}, and keeps there what it parses.
+     */
+    CodeReader(int minimum, ParsedCodes parsed) {
         this.minimum = minimum;
-        JavaMembers sphere = ReferenceMembers.starter("Sphere", reference.get("Sphere"));
-        JavaMembers renderer = ReferenceMembers.starter("Renderer", reference.get("Renderer"));
-        starterMembers = Map.of("Sphere", sphere.members().keySet(), "Renderer", renderer.members().keySet());
-        starter = read(List.of(sphere, renderer), List.of(), null);
-        referenceCode = read(List.of(reference.get("Sphere"), reference.get("Renderer")), List.of(), starter);
+        this.parsed = parsed;
+        starter = tokens(kept(digest("starter", null, null), () -> {
+            Tick1Code code = tick1();
+            return select(List.of(code.sphere(), code.renderer()), List.of());
+        }), null);
+        referenceCode = tokens(kept(digest("reference", null, null), () -> {
+            Tick1Code code = tick1();
+            return select(List.of(code.reference().get("Sphere"), code.reference().get("Renderer")), List.of());
+        }), starter);
+    }
+
+    private synchronized Tick1Code tick1() {
+        if (tick1 == null) {
+            tick1 = Tick1Code.parse();
+        }
+        return tick1;
+    }
+
+    /** The code kept under {@code digest}, else {@code parse}'s, then kept. */
+    private ParsedCode kept(String digest, Supplier<ParsedCode> parse) {
+        ParsedCode code = parsed.get(digest);
+        if (code == null) {
+            code = parse.get();
+            parsed.put(digest, code);
+        }
+        return code;
+    }
+
+    /**
+     * The digest of what is parsed: SHA-256 of this reader's format, the {@code kind} of code ("student", or tick1's
+     * own "starter" and "reference", whose files are part of tick1) and the two files' text (null: not submitted),
+     * each preceded by its length, so that no two different inputs make the same bytes. It does not cover tick1's
+     * own code: a {@link ParsedCodes} that outlives a build of tick1 keeps each build's apart.
+     */
+    static String digest(String kind, String sphere, String renderer) {
+        MessageDigest sha;
+        try {
+            sha = MessageDigest.getInstance("SHA-256");
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java has SHA-256", e);
+        }
+        for (String part : new String[] {FORMAT, kind, sphere == null ? "-" : "+" + sphere,
+                renderer == null ? "-" : "+" + renderer}) {
+            byte[] bytes = part.getBytes(StandardCharsets.UTF_8);
+            sha.update(ByteBuffer.allocate(Long.BYTES).putLong(bytes.length).array());
+            sha.update(bytes);
+        }
+        return HexFormat.of().formatHex(sha.digest());
     }
 
     /** tick1's own Sphere and Renderer, read as a student's are. */
@@ -63,11 +136,13 @@ final class CodeReader {
 
     /** A student's two files (either may be null: not submitted), read for comparing. */
     ComparedCode read(String sphere, String renderer) {
-        List<JavaMembers> parsed = new ArrayList<>();
-        List<String> notes = new ArrayList<>();
-        parse("Sphere", sphere, parsed, notes);
-        parse("Renderer", renderer, parsed, notes);
-        return read(parsed, notes, starter);
+        return tokens(kept(digest("student", sphere, renderer), () -> {
+            List<JavaMembers> files = new ArrayList<>();
+            List<String> notes = new ArrayList<>();
+            parse("Sphere", sphere, files, notes);
+            parse("Renderer", renderer, files, notes);
+            return select(files, notes);
+        }), starter);
     }
 
     private void parse(String className, String source, List<JavaMembers> parsed, List<String> notes) {
@@ -79,8 +154,8 @@ final class CodeReader {
         } else {
             try {
                 String own = className.equals("Sphere") ? INTERSECTION : ILLUMINATE;
-                Set<String> given = starterMembers.get(className);
-                JavaMembers members = JavaMembers.parse(file, source, reference.get(className),
+                Set<String> given = tick1().starterMembers().get(className);
+                JavaMembers members = JavaMembers.parse(file, source, tick1().reference().get(className),
                         signature -> signature.equals(own) || !given.contains(signature));
                 parsed.add(new JavaMembers(className, members.members()));
             } catch (JavaMembers.ParseException e) {
@@ -94,46 +169,59 @@ final class CodeReader {
         }
     }
 
-    /** The members compared of each file, tokenised, with the base's tokens set aside ({@code base} null: none). */
-    private ComparedCode read(List<JavaMembers> files, List<String> notes, ComparedCode base) {
+    /** The members compared of each file: the tick's own method, and those the starter does not have. */
+    private ParsedCode select(List<JavaMembers> files, List<String> notes) {
+        Map<String, Set<String>> starterMembers = tick1().starterMembers();
         List<ComparedCode.Member> members = new ArrayList<>();
-        List<String> allNotes = new ArrayList<>(notes);
+        for (JavaMembers file : files) {
+            String own = file.className().equals("Sphere") ? INTERSECTION : ILLUMINATE;
+            for (Map.Entry<String, JavaMembers.Member> entry : file.members().entrySet()) {
+                String signature = entry.getKey();
+                if (signature.equals(own) || !starterMembers.get(file.className()).contains(signature)) {
+                    members.add(new ComparedCode.Member(file.className() + ".java", signature,
+                            entry.getValue().key()));
+                }
+            }
+        }
+        return new ParsedCode(members, notes);
+    }
+
+    /** The code's members tokenised, at most {@link #MOST_TOKENS}, the base's set aside ({@code base} null: none). */
+    private ComparedCode tokens(ParsedCode code, ComparedCode base) {
+        List<ComparedCode.Member> members = new ArrayList<>();
+        List<String> allNotes = new ArrayList<>(code.notes());
         int[] tokens = new int[64];
         int[] memberOf = new int[64];
         int[] starts = new int[64];
         int[] ends = new int[64];
         int count = 0;
         boolean full = false;
-        for (JavaMembers file : files) {
-            String own = file.className().equals("Sphere") ? INTERSECTION : ILLUMINATE;
-            for (Map.Entry<String, JavaMembers.Member> entry : file.members().entrySet()) {
-                String signature = entry.getKey();
-                if (full || !signature.equals(own) && starterMembers.get(file.className()).contains(signature)) {
-                    continue;
+        for (ComparedCode.Member member : code.members()) {
+            if (full) {
+                break;
+            }
+            String text = member.text();
+            int[] spans = JavaTokens.spans(text);
+            members.add(member);
+            for (int s = 0; s < spans.length; s += 2) {
+                if (count == MOST_TOKENS) {
+                    full = true;
+                    allNotes.add("only the first " + MOST_TOKENS + " tokens are compared");
+                    break;
                 }
-                String text = entry.getValue().key();
-                int[] spans = JavaTokens.spans(text);
-                members.add(new ComparedCode.Member(file.className() + ".java", signature, text));
-                for (int s = 0; s < spans.length && !full; s += 2) {
-                    if (count == MOST_TOKENS) {
-                        full = true;
-                        allNotes.add("only the first " + MOST_TOKENS + " tokens are compared");
-                        break;
-                    }
-                    if (count == tokens.length) {
-                        tokens = Arrays.copyOf(tokens, count * 2);
-                        memberOf = Arrays.copyOf(memberOf, count * 2);
-                        starts = Arrays.copyOf(starts, count * 2);
-                        ends = Arrays.copyOf(ends, count * 2);
-                    }
-                    String token = text.substring(spans[s], spans[s + 1]);
-                    tokens[count] = vocabulary.computeIfAbsent(token.startsWith(LOCAL) ? LOCAL : token,
-                            key -> words.getAndIncrement());
-                    memberOf[count] = members.size() - 1;
-                    starts[count] = spans[s];
-                    ends[count] = spans[s + 1];
-                    count++;
+                if (count == tokens.length) {
+                    tokens = Arrays.copyOf(tokens, count * 2);
+                    memberOf = Arrays.copyOf(memberOf, count * 2);
+                    starts = Arrays.copyOf(starts, count * 2);
+                    ends = Arrays.copyOf(ends, count * 2);
                 }
+                String token = text.substring(spans[s], spans[s + 1]);
+                tokens[count] = vocabulary.computeIfAbsent(token.startsWith(LOCAL) ? LOCAL : token,
+                        key -> words.getAndIncrement());
+                memberOf[count] = members.size() - 1;
+                starts[count] = spans[s];
+                ends[count] = spans[s + 1];
+                count++;
             }
         }
         ComparedCode.Tokens read = new ComparedCode.Tokens(Arrays.copyOf(tokens, count),

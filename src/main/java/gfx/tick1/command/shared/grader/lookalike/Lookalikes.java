@@ -52,7 +52,15 @@ public final class Lookalikes {
      * like the reference, and pairs with the same rare wrong answers; at most {@link #MOST_PAIRS}.
      */
     public static List<Lookalike> find(List<StudentResult> results) throws InterruptedException {
-        CodeReader reader = new CodeReader(MINIMUM_MATCH);
+        return find(results, ParsedCodes.NONE);
+    }
+
+    /**
+     * As {@link #find(List)}, taking each file parsed before from {@code parsed}, and keeping there those parsed now:
+     * the look-alikes are the same.
+     */
+    public static List<Lookalike> find(List<StudentResult> results, ParsedCodes parsed) throws InterruptedException {
+        CodeReader reader = new CodeReader(MINIMUM_MATCH, parsed);
         List<StudentResult> compared = results.stream().filter(r -> r.submission().problem() == null).toList();
         List<ComparedCode> codes = read(reader, compared);
         List<Lookalike> found = Collections.synchronizedList(new ArrayList<>());
