@@ -2,6 +2,7 @@ package gfx.tick1.command.shared.grader.lookalike;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Comparator;
 import java.util.List;
 
 /**
@@ -121,6 +122,9 @@ final class GreedyStringTiling {
                     matches.add(new Tile(i, j, length));
                 }
             }
+            // Candidates come in the order of their runs' hashes, which depend on how the tokens were numbered (the
+            // order files were read in): of two equal runs that overlap, the one that starts first is the tile.
+            matches.sort(Comparator.comparingInt(Tile::a).thenComparingInt(Tile::b));
             for (Tile match : matches) {
                 if (unmarked(markedA, match.a(), match.length()) && unmarked(markedB, match.b(), match.length())) {
                     Arrays.fill(markedA, match.a(), match.a() + match.length(), true);

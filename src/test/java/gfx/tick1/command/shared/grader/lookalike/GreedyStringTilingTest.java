@@ -40,4 +40,14 @@ class GreedyStringTilingTest {
         List<Tile> tiles = GreedyStringTiling.tiles(withBase, sequence(2, 1, 2, 3, 4, 5));
         assertThat(tiles).as("the tiles when the first two tokens are the base's").containsExactly(new Tile(2, 2, 3));
     }
+
+    @Test
+    void ofTwoEqualRunsThatOverlapTheEarlierIsTheTileHoweverTheTokensAreNumbered() {
+        // [1 2] and [2 3] are both common runs of two; they share the 2 of the first sequence, so only one is a tile.
+        // Token numbers follow the order in which files were read, which varies: renumbering must change nothing.
+        List<Tile> numbered = GreedyStringTiling.tiles(sequence(2, 1, 2, 3), sequence(2, 1, 2, 5, 2, 3));
+        List<Tile> renumbered = GreedyStringTiling.tiles(sequence(2, 3, 2, 1), sequence(2, 3, 2, 5, 2, 1));
+        assertThat(numbered).as("the tile of the run that starts first").containsExactly(new Tile(0, 0, 2));
+        assertThat(renumbered).as("the same tokens numbered the other way round").isEqualTo(numbered);
+    }
 }
