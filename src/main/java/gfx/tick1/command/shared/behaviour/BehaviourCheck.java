@@ -56,11 +56,11 @@ public final class BehaviourCheck {
 
     /**
      * Calls the methods of {@code sphere} and {@code renderer} (sources of package gfx.tick1),
-     * run {@code where}; hints only of the methods of the files named in
+     * run in the sandbox {@code where} makes; hints only of the methods of the files named in
      * {@code asked} ("Sphere", "Renderer"). With {@code draw}, the same run also draws
      * {@link DrawnScenes#SCENES}, and ours are drawn meanwhile.
      */
-    public static Lines check(String sphere, String renderer, List<String> asked, RunIn where, boolean draw)
+    public static Lines check(String sphere, String renderer, List<String> asked, SandboxAhead where, boolean draw)
             throws InterruptedException {
         Sandbox sandbox;
         try {
