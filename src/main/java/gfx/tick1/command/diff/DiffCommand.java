@@ -18,6 +18,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -112,11 +113,13 @@ public final class DiffCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         List<JavaMembers> theirs = new ArrayList<>();
         Set<String> classes = new LinkedHashSet<>();
+        // Ours, parsed once a class: each of their files is parsed like it, then compared with it.
+        Map<String, JavaMembers> oursOf = new HashMap<>();
         for (Path file : files) {
             try {
                 JavaMembers parsed = JavaMembers.parse(file.toString(), read(file),
                         className -> StarterKit.STUDENT_CLASSES.contains(className)
-                                ? ReferenceMembers.ours(className) : null);
+                                ? oursOf.computeIfAbsent(className, ReferenceMembers::ours) : null);
                 if (!StarterKit.STUDENT_CLASSES.contains(parsed.className())) {
                     throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": class " + parsed.className()
                             + ": expected Sphere or Renderer, the two classes of the tick");
@@ -144,7 +147,7 @@ public final class DiffCommand implements Callable<Integer> {
         boolean onlyMethodsDiffer = true;
         for (int i = 0; i < theirs.size(); i++) {
             String className = theirs.get(i).className();
-            JavaMembers ours = ReferenceMembers.ours(className);
+            JavaMembers ours = oursOf.computeIfAbsent(className, ReferenceMembers::ours);
             JavaMembers starter = ReferenceMembers.starter(className, ours);
             report.addAll(compare(ours, starter, theirs.get(i), files.get(i), colours));
             onlyMethodsDiffer &= BEHAVIOUR_COVERS.containsAll(differingMembers(ours, starter, theirs.get(i)).keySet()
