@@ -3,6 +3,7 @@ package gfx.tick1.command.diff;
 import gfx.tick1.command.shared.behaviour.BehaviourCheck;
 import gfx.tick1.command.shared.behaviour.DrawnScenes;
 import gfx.tick1.command.shared.behaviour.RunIn;
+import gfx.tick1.command.shared.behaviour.SandboxAhead;
 import gfx.tick1.command.shared.cli.CommandFailure;
 import gfx.tick1.command.shared.cli.ExitStatus;
 import gfx.tick1.command.shared.cli.TemporaryFolder;
@@ -17,6 +18,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -106,14 +108,18 @@ public final class DiffCommand implements Callable<Integer> {
     }
 
     private int compareFiles() {
+        // Made while the files are parsed: most diffs run the methods, and making it waits on processes.
+        SandboxAhead sandbox = SandboxAhead.start(noSandbox ? RunIn.OWN_PROCESS : RunIn.SANDBOX);
         PrintWriter out = spec.commandLine().getOut();
         List<JavaMembers> theirs = new ArrayList<>();
         Set<String> classes = new LinkedHashSet<>();
+        // Ours, parsed once a class: each of their files is parsed like it, then compared with it.
+        Map<String, JavaMembers> oursOf = new HashMap<>();
         for (Path file : files) {
             try {
                 JavaMembers parsed = JavaMembers.parse(file.toString(), read(file),
                         className -> StarterKit.STUDENT_CLASSES.contains(className)
-                                ? ReferenceMembers.ours(className) : null);
+                                ? oursOf.computeIfAbsent(className, ReferenceMembers::ours) : null);
                 if (!StarterKit.STUDENT_CLASSES.contains(parsed.className())) {
                     throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": class " + parsed.className()
                             + ": expected Sphere or Renderer, the two classes of the tick");
@@ -141,7 +147,7 @@ public final class DiffCommand implements Callable<Integer> {
         boolean onlyMethodsDiffer = true;
         for (int i = 0; i < theirs.size(); i++) {
             String className = theirs.get(i).className();
-            JavaMembers ours = ReferenceMembers.ours(className);
+            JavaMembers ours = oursOf.computeIfAbsent(className, ReferenceMembers::ours);
             JavaMembers starter = ReferenceMembers.starter(className, ours);
             report.addAll(compare(ours, starter, theirs.get(i), files.get(i), colours));
             onlyMethodsDiffer &= BEHAVIOUR_COVERS.containsAll(differingMembers(ours, starter, theirs.get(i)).keySet()
@@ -154,7 +160,7 @@ public final class DiffCommand implements Callable<Integer> {
         // code, with its methods behaving as ours, draws the handout's scenes as ours does; with one file given, the
         // other is the kit's, which draws no image of ours.
         boolean draw = !onlyMethodsDiffer && classes.containsAll(StarterKit.STUDENT_CLASSES);
-        Hints.Said said = hints(theirs, out, colours, draw);
+        Hints.Said said = hints(theirs, sandbox, out, colours, draw);
         boolean behaves = said != null && said.behavesAsOurs();
         DrawnScenes drawn = behaves ? said.drawn() : null;
         // Methods that behave as ours are no difference, however written; nor is any other edit that leaves the
@@ -203,10 +209,11 @@ public final class DiffCommand implements Callable<Integer> {
 
     /**
      * What their methods did, for the lines before the diff (or why it could not be checked), and with
-     * {@code draw} how the code drew the handout's scenes; null, with a line printed, when the files
-     * could not be given to the sandbox.
+     * {@code draw} how the code drew the handout's scenes, run in {@code sandbox}; null, with a line printed,
+     * when the files could not be given to the sandbox.
      */
-    private Hints.Said hints(List<JavaMembers> theirs, PrintWriter out, Colours colours, boolean draw) {
+    private Hints.Said hints(List<JavaMembers> theirs, SandboxAhead sandbox, PrintWriter out, Colours colours,
+            boolean draw) {
         Map<String, String> given = new LinkedHashMap<>(), starter = new LinkedHashMap<>();
         for (int i = 0; i < theirs.size(); i++) {
             try {
@@ -227,7 +234,7 @@ public final class DiffCommand implements Callable<Integer> {
             return null;
         }
         try {
-            Hints.Said said = Hints.of(given, starter, noSandbox ? RunIn.OWN_PROCESS : RunIn.SANDBOX, draw);
+            Hints.Said said = Hints.of(given, starter, sandbox, draw);
             if (noSandbox && said.ran()) {
                 PrintWriter err = spec.commandLine().getErr();
                 err.println("tick1 diff: note: --no-sandbox: your methods ran without a sandbox, in "

@@ -2,7 +2,7 @@ package gfx.tick1.command.diff;
 
 import gfx.tick1.command.shared.behaviour.BehaviourCheck;
 import gfx.tick1.command.shared.behaviour.DrawnScenes;
-import gfx.tick1.command.shared.behaviour.RunIn;
+import gfx.tick1.command.shared.behaviour.SandboxAhead;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -31,9 +31,10 @@ final class Hints {
 
     /**
      * What to say of {@code theirs} (class name to source), with {@code starter} for the classes not
-     * given, their methods run {@code where}; with {@code draw}, the code also draws the handout's scenes.
+     * given, their methods run in the sandbox {@code where} makes; with {@code draw}, the code also draws the
+     * handout's scenes.
      */
-    static Said of(Map<String, String> theirs, Map<String, String> starter, RunIn where, boolean draw)
+    static Said of(Map<String, String> theirs, Map<String, String> starter, SandboxAhead where, boolean draw)
             throws InterruptedException {
         String sphere = theirs.getOrDefault("Sphere", starter.get("Sphere"));
         String renderer = theirs.getOrDefault("Renderer", starter.get("Renderer"));

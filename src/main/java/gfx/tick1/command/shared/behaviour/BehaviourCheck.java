@@ -8,6 +8,7 @@ import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.Counted;
 import gfx.tick1.engine.render.GoldenImages;
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -15,6 +16,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 
 /**
  * The behaviour of a Sphere.java and a Renderer.java on their own, for {@code tick1 diff}: compiled
@@ -54,10 +56,11 @@ public final class BehaviourCheck {
 
     /**
      * Calls the methods of {@code sphere} and {@code renderer} (sources of package gfx.tick1),
-     * run {@code where}; hints only of the methods of the files named in {@code asked} ("Sphere",
-     * "Renderer"). With {@code draw}, the same run also draws {@link DrawnScenes#SCENES}.
+     * run in the sandbox {@code where} makes; hints only of the methods of the files named in
+     * {@code asked} ("Sphere", "Renderer"). With {@code draw}, the same run also draws
+     * {@link DrawnScenes#SCENES}, and ours are drawn meanwhile.
      */
-    public static Lines check(String sphere, String renderer, List<String> asked, RunIn where, boolean draw)
+    public static Lines check(String sphere, String renderer, List<String> asked, SandboxAhead where, boolean draw)
             throws InterruptedException {
         Sandbox sandbox;
         try {
@@ -67,6 +70,7 @@ public final class BehaviourCheck {
                     + "the sandbox, and " + e.getMessage() + (e.remedy() == null ? "" : ": " + e.remedy())
                     + "; if the code is yours, --no-sandbox runs them without one");
         }
+        CompletableFuture<List<BufferedImage>> ours = draw ? DrawnScenes.drawOurs() : null;
         Called called = call(sandbox, sphere, renderer, null, draw);
         if (called.log() == null) {
             return Lines.none(called.whyNone());
@@ -77,7 +81,7 @@ public final class BehaviourCheck {
         }
         Lines lines = hints(findings, asked);
         return called.drawn() == null ? lines : new Lines(lines.behaviour(), lines.hints(), null,
-                lines.behavesAsOurs(), DrawnScenes.of(called.drawn()));
+                lines.behavesAsOurs(), DrawnScenes.of(called.drawn(), ours.join()));
     }
 
     /**

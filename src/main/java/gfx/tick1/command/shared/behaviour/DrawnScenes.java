@@ -11,6 +11,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 
 /**
  * The handout's two scenes drawn by a student's whole code, render and trace included, at the
@@ -39,8 +40,22 @@ public record DrawnScenes(List<String> differences) {
         }
     }
 
-    /** What became of the scenes, in {@link #SCENES} order, against our images of them. */
-    static DrawnScenes of(List<Outcome> outcomes) {
+    /**
+     * Our images of {@link #SCENES}, in that order, drawn in a thread of their own: started before the
+     * student's code runs, they are ready by the time it has drawn its own.
+     */
+    static CompletableFuture<List<BufferedImage>> drawOurs() {
+        return CompletableFuture.supplyAsync(() -> SCENES.stream()
+                .map(name -> new ReferenceRenderer(GoldenImages.WIDTH, GoldenImages.HEIGHT)
+                        .render(BundledScenes.load(name))).toList(), task -> {
+                            Thread drawing = new Thread(task, "tick1 our scenes");
+                            drawing.setDaemon(true);
+                            drawing.start();
+                        });
+    }
+
+    /** What became of the scenes, in {@link #SCENES} order, against {@code ours}, our images of them. */
+    static DrawnScenes of(List<Outcome> outcomes, List<BufferedImage> ours) {
         List<String> differences = new ArrayList<>();
         for (int i = 0; i < SCENES.size(); i++) {
             String name = SCENES.get(i);
@@ -49,9 +64,7 @@ public record DrawnScenes(List<String> differences) {
                         + ((Outcome.Failed) outcomes.get(i)).reason().lines().findFirst().orElse(""));
                 continue;
             }
-            BufferedImage ours = new ReferenceRenderer(GoldenImages.WIDTH, GoldenImages.HEIGHT)
-                    .render(BundledScenes.load(name));
-            ImageDifference difference = ImageDifference.between(ours, rendered.image());
+            ImageDifference difference = ImageDifference.between(ours.get(i), rendered.image());
             int differing = difference.differingPixels();
             if (differing > 0) {
                 differences.add("your code draws " + name + " unlike ours: " + differing + " of its "
