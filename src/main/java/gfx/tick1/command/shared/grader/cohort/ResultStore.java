@@ -155,7 +155,7 @@ public final class ResultStore {
         }
     }
 
-    private static MessageDigest sha256() {
+    static MessageDigest sha256() {
         try {
             return MessageDigest.getInstance("SHA-256");
         } catch (NoSuchAlgorithmException e) {
@@ -163,7 +163,7 @@ public final class ResultStore {
         }
     }
 
-    private static void add(MessageDigest sha, String text) {
+    static void add(MessageDigest sha, String text) {
         add(sha, text.getBytes(StandardCharsets.UTF_8));
     }
 
