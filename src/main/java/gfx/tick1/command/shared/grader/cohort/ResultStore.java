@@ -200,8 +200,10 @@ public final class ResultStore {
         Properties p = new Properties();
         try (Reader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             p.load(in);
-        } catch (CharacterCodingException | AccessDeniedException e) {
-            return null;   // damaged, or not readable: no result, and the submission is graded again
+        } catch (CharacterCodingException | AccessDeniedException | IllegalArgumentException e) {
+            // damaged (bytes that are not UTF-8, a malformed escape), or not readable: no result, and the
+            // submission is graded again
+            return null;
         }
         try {
             List<SceneResult> scenes = new ArrayList<>();
