@@ -155,7 +155,7 @@ public final class ResultStore {
         }
     }
 
-    private static MessageDigest sha256() {
+    static MessageDigest sha256() {
         try {
             return MessageDigest.getInstance("SHA-256");
         } catch (NoSuchAlgorithmException e) {
@@ -163,7 +163,7 @@ public final class ResultStore {
         }
     }
 
-    private static void add(MessageDigest sha, String text) {
+    static void add(MessageDigest sha, String text) {
         add(sha, text.getBytes(StandardCharsets.UTF_8));
     }
 
@@ -200,8 +200,10 @@ public final class ResultStore {
         Properties p = new Properties();
         try (Reader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             p.load(in);
-        } catch (CharacterCodingException | AccessDeniedException e) {
-            return null;   // damaged, or not readable: no result, and the submission is graded again
+        } catch (CharacterCodingException | AccessDeniedException | IllegalArgumentException e) {
+            // damaged (bytes that are not UTF-8, a malformed escape), or not readable: no result, and the
+            // submission is graded again
+            return null;
         }
         try {
             List<SceneResult> scenes = new ArrayList<>();

@@ -16,7 +16,6 @@ import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.security.MessageDigest;
-import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
 import java.util.HexFormat;
 import java.util.List;
@@ -28,12 +27,19 @@ import java.util.UUID;
  * The code the look-alike check parsed, kept in a folder of the result store ({@link ResultStore#PARSED}), one
  * file a digest, so that a cohort graded again parses only the files it has not parsed before. Each file is named
  * by the digest together with this build of tick1's: a new build parses again. A file is written whole and then
- * renamed into place; one that cannot be read is no code, and the files are parsed again.
+ * renamed into place; one that cannot be read, or whose sum of what it holds and of its digest is not the one it
+ * holds (a file cut short by a stop, a full disk or a copy), is no code, and the files are parsed again.
  */
 final class StoredCode implements ParsedCodes {
 
     /** The prefix of files being written, before the id of the process writing them, as in {@link ResultStore}. */
     private static final String WRITING = ".writing-";
+    /**
+     * The most characters of code a file keeps: five times two files at the look-alike check's cap on what it
+     * parses. Honest code prints at about its own length; only nesting prints longer (its indent grows as the square
+     * of its depth), and such code is parsed again each run rather than fill the report folder.
+     */
+    static final int MOST_CHARACTERS = 2_000_000;
 
     private final Path folder;
     private final String build;
@@ -73,7 +79,9 @@ final class StoredCode implements ParsedCodes {
             for (int i = 0; i < noted; i++) {
                 notes.add(Objects.requireNonNull(p.getProperty("note." + i)));
             }
-            return new ParsedCode(members, notes);
+            ParsedCode code = new ParsedCode(members, notes);
+            // A file cut short may end in a whole line that holds part of a value, or miss a count's digit.
+            return sum(digest, code).equals(p.getProperty("sum")) ? code : null;
         } catch (IOException | RuntimeException e) {
             return null;   // damaged, unreadable or not this program's: parsed again
         }
@@ -81,6 +89,12 @@ final class StoredCode implements ParsedCodes {
 
     @Override
     public void put(String digest, ParsedCode code) {
+        long characters = code.notes().stream().mapToLong(String::length).sum() + code.members().stream()
+                .mapToLong(member -> member.file().length() + member.signature().length() + member.text().length())
+                .sum();
+        if (characters > MOST_CHARACTERS) {
+            return;
+        }
         Properties p = new Properties();
         p.setProperty("members", Integer.toString(code.members().size()));
         for (int i = 0; i < code.members().size(); i++) {
@@ -94,6 +108,7 @@ final class StoredCode implements ParsedCodes {
         for (int i = 0; i < code.notes().size(); i++) {
             p.setProperty("note." + i, code.notes().get(i));
         }
+        p.setProperty("sum", sum(digest, code));
         Path writing = folder.resolve(WRITING + Leftovers.mark() + UUID.randomUUID());
         try {
             try (Writer out = Files.newBufferedWriter(writing, StandardCharsets.UTF_8)) {
@@ -110,14 +125,27 @@ final class StoredCode implements ParsedCodes {
         }
     }
 
+    /** SHA-256 of {@code digest} and of every part of {@code code}, each preceded by its length. */
+    private static String sum(String digest, ParsedCode code) {
+        MessageDigest sha = ResultStore.sha256();
+        ResultStore.add(sha, digest);
+        ResultStore.add(sha, Integer.toString(code.members().size()));
+        for (ComparedCode.Member member : code.members()) {
+            ResultStore.add(sha, member.file());
+            ResultStore.add(sha, member.signature());
+            ResultStore.add(sha, member.text());
+        }
+        ResultStore.add(sha, Integer.toString(code.notes().size()));
+        for (String note : code.notes()) {
+            ResultStore.add(sha, note);
+        }
+        return HexFormat.of().formatHex(sha.digest());
+    }
+
     /** The file of the code with {@code digest}, as this build parsed it. */
     private Path fileOf(String digest) {
-        try {
-            MessageDigest sha = MessageDigest.getInstance("SHA-256");
-            sha.update((build + "\n" + digest).getBytes(StandardCharsets.UTF_8));
-            return folder.resolve(HexFormat.of().formatHex(sha.digest()));
-        } catch (NoSuchAlgorithmException e) {
-            throw new IllegalStateException("every Java has SHA-256", e);
-        }
+        MessageDigest sha = ResultStore.sha256();
+        sha.update((build + "\n" + digest).getBytes(StandardCharsets.UTF_8));
+        return folder.resolve(HexFormat.of().formatHex(sha.digest()));
     }
 }

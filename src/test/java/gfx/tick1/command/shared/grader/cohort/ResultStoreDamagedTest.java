@@ -35,6 +35,16 @@ class ResultStoreDamagedTest {
     }
 
     @Test
+    void aStoredResultWithAMalformedEscapeIsNoResult() throws IOException {
+        ResultStore store = new ResultStore(state);
+        store.save("key", passed(3), store.newEntry());
+        Files.writeString(store.folderOf("key").resolve("result.properties"), "reason=\\u12\n",
+                StandardOpenOption.APPEND);
+
+        assertThat(store.load("key", SUBMISSION)).as("a stored result damaged into a malformed escape").isNull();
+    }
+
+    @Test
     void aDamagedStoredResultIsReplacedByTheNextResultSavedUnderItsKey() throws IOException {
         ResultStore store = new ResultStore(state);
         store.save("key", passed(3), store.newEntry());
