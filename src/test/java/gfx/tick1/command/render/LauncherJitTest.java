@@ -45,9 +45,23 @@ class LauncherJitTest {
     }
 
     @Test
-    void aGradeKeepsTheSecondTier() throws IOException, InterruptedException {
+    void aGradeOfOneStudentsFilesRunsOnTheFirstTierAlone() throws IOException, InterruptedException {
         assertThat(optionsFor("grade", "--sphere", "Sphere.java", "--renderer", "Renderer.java"))
-                .as("the options of a grade").doesNotContain(FIRST_TIER_ONLY);
+                .as("the options of one student's grade").contains(FIRST_TIER_ONLY);
+    }
+
+    @Test
+    void aCohortsGradeKeepsTheSecondTier() throws IOException, InterruptedException {
+        assertThat(optionsFor("grade", "--submissions", "download.zip", "--jobs", "2"))
+                .as("the options of a cohort's grade").doesNotContain(FIRST_TIER_ONLY);
+        assertThat(optionsFor("grade", "--submissions=download.zip"))
+                .as("the options of a cohort's grade, its option written with =").doesNotContain(FIRST_TIER_ONLY);
+    }
+
+    @Test
+    void aGradeOfOneStudentAtAFrameOverTheLimitKeepsTheSecondTier() throws IOException, InterruptedException {
+        assertThat(optionsFor("grade", "--sphere", "Sphere.java", "--renderer", "Renderer.java", "--width", "8000",
+                "--height", "8000")).as("the options of a grade at 8000 x 8000").doesNotContain(FIRST_TIER_ONLY);
     }
 
     @Test
