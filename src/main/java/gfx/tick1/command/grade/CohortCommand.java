@@ -5,6 +5,7 @@ import gfx.tick1.command.shared.cli.OutputGate;
 import gfx.tick1.command.shared.grader.cohort.CohortGrade;
 import gfx.tick1.command.shared.grader.cohort.Ungraded;
 import gfx.tick1.command.shared.grader.cohort.ResultStore;
+import gfx.tick1.command.shared.grader.cohort.StoredCode;
 import gfx.tick1.command.shared.grader.grading.Grading;
 import gfx.tick1.command.shared.grader.intake.Submissions;
 import gfx.tick1.command.shared.grader.lookalike.Lookalikes;
@@ -212,14 +213,14 @@ final class CohortCommand {
             // Stopped part way (the shutdown hook says so): the report of the last whole run stays as it was.
             return GradeCommand.EXIT_STOPPED;
         }
-        return report(done, store);
+        return report(done);
     }
 
     /**
      * Writes grades.csv, the feedback folders and index.html from every result, and says what was done; the
-     * look-alike check keeps the code it parses in {@code store}.
+     * look-alike check keeps the code it parses in the state folder.
      */
-    private int report(CohortGrade.Done done, ResultStore store) throws InterruptedException {
+    private int report(CohortGrade.Done done) throws InterruptedException {
         Path report = options.reportFolder();
         List<StudentResult> results = CohortOutputs.forReport(done.results());
         // A student whose feedback cannot be written is theirs alone: once, with the first reason.
@@ -232,7 +233,8 @@ final class CohortCommand {
                     .map(Submissions::namedByMoodle).toList(), report);
             CohortReport.write(report, results,
                     result -> Worksheet.grade(cohortOptions.marking().grade(result, maxGrade)),
-                    cohortOptions.lookalikes() ? Lookalikes.find(results, store.parsedCodes()) : null)
+                    cohortOptions.lookalikes()
+                            ? Lookalikes.find(results, StoredCode.in(report.resolve(STATE_FOLDER))) : null)
                     .forEach(student -> unwritten.putIfAbsent(student.folder(), student.why()));
         } catch (CohortInputException e) {
             throw new CommandFailure(GradeCommand.EXIT_USAGE, e.getMessage());

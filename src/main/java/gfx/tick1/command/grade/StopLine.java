@@ -1,6 +1,6 @@
 package gfx.tick1.command.grade;
 
-import gfx.tick1.command.shared.grader.cohort.ResultStore;
+import gfx.tick1.command.shared.grader.cohort.StoredCode;
 import gfx.tick1.engine.io.Counted;
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -41,7 +41,7 @@ final class StopLine {
     /** Whether {@code folder} is a folder with anything in it besides the code the look-alike check parsed. */
     private static boolean holdsAny(Path folder) {
         try (Stream<Path> entries = Files.list(folder)) {
-            return entries.anyMatch(entry -> !entry.getFileName().toString().equals(ResultStore.PARSED));
+            return entries.anyMatch(entry -> !entry.getFileName().toString().equals(StoredCode.FOLDER));
         } catch (IOException | UncheckedIOException e) {
             return false;
         }

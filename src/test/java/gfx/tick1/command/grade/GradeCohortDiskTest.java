@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
-import gfx.tick1.command.shared.grader.cohort.ResultStore;
+import gfx.tick1.command.shared.grader.cohort.StoredCode;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -206,7 +206,7 @@ class GradeCohortDiskTest {
         }
         try (Stream<Path> entries = Files.list(state)) {
             return entries.filter(p -> !p.getFileName().toString().startsWith(".")
-                    && !p.getFileName().toString().equals(ResultStore.PARSED)).toList();
+                    && !p.getFileName().toString().equals(StoredCode.FOLDER)).toList();
         }
     }
 }

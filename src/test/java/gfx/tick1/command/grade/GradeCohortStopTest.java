@@ -8,7 +8,7 @@ import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.grade.GradeCohortTest.Student;
-import gfx.tick1.command.shared.grader.cohort.ResultStore;
+import gfx.tick1.command.shared.grader.cohort.StoredCode;
 import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
 import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
@@ -277,7 +277,7 @@ class GradeCohortStopTest {
         }
         try (Stream<Path> entries = Files.list(state)) {
             return entries.filter(p -> !p.getFileName().toString().startsWith(".")
-                    && !p.getFileName().toString().equals(ResultStore.PARSED)).count();
+                    && !p.getFileName().toString().equals(StoredCode.FOLDER)).count();
         }
     }
 

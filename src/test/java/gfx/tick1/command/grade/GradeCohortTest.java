@@ -6,7 +6,7 @@ import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
 import gfx.tick1.command.preview.HeadlessChromium;
 import gfx.tick1.command.shared.behaviour.Variant;
-import gfx.tick1.command.shared.grader.cohort.ResultStore;
+import gfx.tick1.command.shared.grader.cohort.StoredCode;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.report.Worksheet;
@@ -623,7 +623,7 @@ class GradeCohortTest {
         }
         try (Stream<Path> entries = Files.list(state)) {
             return entries.filter(p -> !p.getFileName().toString().startsWith(".")
-                    && !p.getFileName().toString().equals(ResultStore.PARSED)).toList();
+                    && !p.getFileName().toString().equals(StoredCode.FOLDER)).toList();
         }
     }
 

@@ -2,7 +2,7 @@ package gfx.tick1.command.grade;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gfx.tick1.command.shared.grader.cohort.ResultStore;
+import gfx.tick1.command.shared.grader.cohort.StoredCode;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -31,7 +31,7 @@ class StopLineTest {
 
     @Test
     void aStopBeforeAnyGradeCallsNoParsedCodeEarlierResults() throws IOException {
-        Path state = Files.createDirectories(report.resolve("state").resolve(ResultStore.PARSED)).getParent();
+        Path state = Files.createDirectories(report.resolve("state").resolve(StoredCode.FOLDER)).getParent();
 
         assertThat(StopLine.beforeAnyGrade(state)).as("the stop line with only parsed code kept")
                 .doesNotContain("earlier runs");

@@ -2,7 +2,6 @@ package gfx.tick1.command.shared.grader.cohort;
 
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.grading.Grading;
-import gfx.tick1.command.shared.grader.lookalike.ParsedCodes;
 import gfx.tick1.command.shared.grader.model.Category;
 import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
@@ -16,7 +15,6 @@ import gfx.tick1.engine.io.OwnFolder;
 import java.io.IOException;
 import java.io.Reader;
 import java.io.Writer;
-import java.net.URISyntaxException;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
 import java.nio.charset.CharacterCodingException;
@@ -65,9 +63,6 @@ public final class ResultStore {
      * sentence a finding).
      */
     private static final String FORMAT = "tick1 grade result 4";
-
-    /** The folder in the store where the look-alike check keeps the code it parsed ({@link StoredCode}). */
-    public static final String PARSED = "parsed";
 
     private final Path folder;
 
@@ -142,19 +137,6 @@ public final class ResultStore {
         }
     }
 
-    /** The digest of the code of this tick1, read once, when the first key is made. */
-    private static final class ThisBuild {
-        static final String DIGEST = digest();
-
-        private static String digest() {
-            try {
-                return build(Path.of(ResultStore.class.getProtectionDomain().getCodeSource().getLocation().toURI()));
-            } catch (URISyntaxException | RuntimeException e) {
-                return "unread " + UUID.randomUUID();
-            }
-        }
-    }
-
     static MessageDigest sha256() {
         try {
             return MessageDigest.getInstance("SHA-256");
@@ -170,18 +152,6 @@ public final class ResultStore {
     private static void add(MessageDigest sha, byte[] bytes) {
         sha.update(ByteBuffer.allocate(Long.BYTES).putLong(bytes.length).array());
         sha.update(bytes);
-    }
-
-    /**
-     * Where the look-alike check keeps the code it parsed, in this store; none is kept when its folder cannot be
-     * made (a full or read-only report folder), and every file is parsed.
-     */
-    public ParsedCodes parsedCodes() {
-        try {
-            return new StoredCode(folder.resolve(PARSED), ThisBuild.DIGEST);
-        } catch (IOException e) {
-            return ParsedCodes.NONE;
-        }
     }
 
     /** The folder of the stored result with {@code key}: its images are there. */

@@ -24,13 +24,16 @@ import java.util.Properties;
 import java.util.UUID;
 
 /**
- * The code the look-alike check parsed, kept in a folder of the result store ({@link ResultStore#PARSED}), one
+ * The code the look-alike check parsed, kept in a folder of the result store ({@link #FOLDER}), one
  * file a digest, so that a cohort graded again parses only the files it has not parsed before. Each file is named
  * by the digest together with this build of tick1's: a new build parses again. A file is written whole and then
  * renamed into place; one that cannot be read, or whose sum of what it holds and of its digest is not the one it
  * holds (a file cut short by a stop, a full disk or a copy), is no code, and the files are parsed again.
  */
-final class StoredCode implements ParsedCodes {
+public final class StoredCode implements ParsedCodes {
+
+    /** The folder in the result store where the code is kept. */
+    public static final String FOLDER = "parsed";
 
     /** The prefix of files being written, before the id of the process writing them, as in {@link ResultStore}. */
     private static final String WRITING = ".writing-";
@@ -43,6 +46,18 @@ final class StoredCode implements ParsedCodes {
 
     private final Path folder;
     private final String build;
+
+    /**
+     * The code kept in the result store in {@code store}, for this build; none is kept when its folder cannot be made
+     * (a full or read-only report folder), and every file is parsed.
+     */
+    public static ParsedCodes in(Path store) {
+        try {
+            return new StoredCode(store.resolve(FOLDER), ThisBuild.DIGEST);
+        } catch (IOException e) {
+            return ParsedCodes.NONE;
+        }
+    }
 
     /** The store in {@code folder}, made if need be; what a stopped run left half-written is deleted. */
     StoredCode(Path folder, String build) throws IOException {
