@@ -216,10 +216,7 @@ final class CohortCommand {
         return report(done);
     }
 
-    /**
-     * Writes grades.csv, the feedback folders and index.html from every result, and says what was done; the
-     * look-alike check keeps the code it parses in the state folder.
-     */
+    /** Writes grades.csv, the feedback folders and index.html from every result, and says what was done. */
     private int report(CohortGrade.Done done) throws InterruptedException {
         Path report = options.reportFolder();
         List<StudentResult> results = CohortOutputs.forReport(done.results());
