@@ -9,6 +9,7 @@ import gfx.tick1.command.shared.cli.ExitStatus;
 import gfx.tick1.command.shared.cli.TemporaryFolder;
 import gfx.tick1.command.shared.grader.intake.StudentFile;
 import gfx.tick1.command.shared.javacode.JavaMembers;
+import gfx.tick1.command.shared.javacode.Nesting;
 import gfx.tick1.command.shared.javacode.ReferenceMembers;
 import gfx.tick1.command.shared.javacode.SameMeaning;
 import gfx.tick1.command.shared.kit.StarterKit;
@@ -128,6 +129,9 @@ public final class DiffCommand implements Callable<Integer> {
                     throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": a second " + parsed.className()
                             + " class: give one Sphere.java and one Renderer.java");
                 }
+                if (!parsed.tooDeep().isEmpty()) {
+                    throw new CommandFailure(EXIT_CANNOT_COMPARE, parsed.tooDeep().get(0).message());
+                }
                 theirs.add(parsed);
             } catch (JavaMembers.ParseException e) {
                 throw new CommandFailure(EXIT_CANNOT_COMPARE, parseError(file, e));
@@ -137,8 +141,8 @@ public final class DiffCommand implements Callable<Integer> {
             } catch (IOException e) {
                 throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": " + unreadable(file, e));
             } catch (StackOverflowError e) {
-                throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": expressions or blocks nested too deeply to "
-                        + "compare; expected code nested at most a few thousand deep");
+                throw new CommandFailure(EXIT_CANNOT_COMPARE, file + ": blocks, statements or expressions nested "
+                        + "too deeply to parse; code nested more than " + Nesting.MOST_DEPTH + " deep is not compared");
             }
         }
         Colours colours = new Colours(Colours.wanted(System.console() != null, System.getenv(),

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.command.shared.javacode.Nesting;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -75,6 +76,23 @@ class DiffFileErrorsTest {
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_CANNOT_COMPARE);
         assertThat(run.err()).as(run.transcript()).isEqualTo("tick1 diff: /dev/zero: larger than 1 MiB, far more "
                 + "than any Sphere.java or Renderer.java\n");
+    }
+
+    /**
+     * Blocks nested thousands deep, in a Java of small heap: their text would grow as the square of the depth. The
+     * line places where the nesting passes the bound: the block one deeper than it.
+     */
+    @Test
+    void codeNestedDeeperThanAnySolutionIsRefusedInOneLine() throws Exception {
+        int depth = 3_500;
+        Path sphere = write("class Sphere {\n    void deep() " + "{".repeat(depth) + "}".repeat(depth) + "\n}\n");
+
+        CliRun run = CliRun.inJvm(dir, List.of("-Xmx160m"), "diff", "--no-sandbox", sphere.toString());
+
+        assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_CANNOT_COMPARE);
+        assertThat(run.err()).as(run.transcript()).isEqualTo("tick1 diff: " + sphere + ":2:"
+                + ("    void deep() ".length() + Nesting.MOST_DEPTH + 1) + ": deep(): blocks, statements and "
+                + "expressions nested more than " + Nesting.MOST_DEPTH + " deep: too deeply nested to compare\n");
     }
 
     private Path write(String text) throws IOException {

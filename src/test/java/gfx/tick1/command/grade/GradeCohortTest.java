@@ -642,6 +642,28 @@ class GradeCohortTest {
         assertThat(rows.get("Participant 1")).element(5).isEqualTo("10.00");
     }
 
+    /**
+     * A method whose blocks nest thousands deep, in a grader of small heap: its text for the look-alike check would
+     * grow as the square of the depth. It is not compared, and every student is graded and the report written.
+     */
+    @Test
+    void codeNestedThousandsDeepCostsNoOneTheirGradeNorTheReport(@TempDir Path dir) throws Exception {
+        StudentSolution correct = StudentSolution.correct();
+        String deep = "void deep() " + "{".repeat(3_500) + "}".repeat(3_500) + "\n    ";
+        List<Student> two = List.of(new Student("Right", 1, files(correct), true),
+                new Student("Nested", 2, files(correct.editSphere("public Vector3 getColour()",
+                        deep + "public Vector3 getColour()")), false));
+        Path report = dir.resolve("report");
+        Process grade = gradeInAJvmOfItsOwn(dir, List.of("-Xmx160m"), gradeArguments(moodleZip(dir.resolve("a.zip"),
+                two), report));
+        assertThat(grade.waitFor(5, TimeUnit.MINUTES)).as("the grade ended").isTrue();
+        String log = Files.readString(dir.resolve("grade.log"));
+        assertThat(log).as("what the grade said").doesNotContain("out of memory", "internal error", "Exception");
+        assertThat(rows(report)).as(log).containsOnlyKeys("Participant 1", "Participant 2");
+        assertThat(rows(report).get("Participant 1")).as(log).element(4).isEqualTo("1.00");
+        assertThat(report.resolve("index.html")).as(log).isRegularFile();
+    }
+
     @Test
     void aDownloadThatIsNotThereIsOneLineAndExitTwo(@TempDir Path dir) {
         CliRun run = CliRun.of(gradeArguments(dir.resolve("nope.zip"), dir.resolve("report")));

@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.javacode;
 import com.github.javaparser.JavaParser;
 import com.github.javaparser.ParseResult;
 import com.github.javaparser.ParserConfiguration;
+import com.github.javaparser.Position;
 import com.github.javaparser.Problem;
 import com.github.javaparser.ast.CompilationUnit;
 import com.github.javaparser.ast.Node;
@@ -20,6 +21,7 @@ import com.github.javaparser.ast.expr.MethodCallExpr;
 import com.github.javaparser.ast.expr.NameExpr;
 import com.github.javaparser.ast.expr.ObjectCreationExpr;
 import com.github.javaparser.ast.expr.ThisExpr;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -38,8 +40,9 @@ import java.util.stream.Collectors;
  * @param className the name of the file's first class
  * @param members   member signature ("intersectionWith(Ray)", "field radius") to its printed text, in
  *                  the file's order
+ * @param tooDeep   the members not compared, nested too deeply ({@link Nesting}), in the file's order
  */
-public record JavaMembers(String className, Map<String, Member> members) {
+public record JavaMembers(String className, Map<String, Member> members, List<TooDeep> tooDeep) {
 
     /** Where the lexer's message says it stopped: "Lexical error at line 2, column 19.  Encountered: ...". */
     private static final Pattern LEXER_PLACE = Pattern.compile(" at line (\\d+), column (\\d+)");
@@ -60,6 +63,40 @@ public record JavaMembers(String className, Map<String, Member> members) {
             List<String> keys = key.lines().toList();
             return keys.size() == lines().size() ? keys : lines();
         }
+    }
+
+    /**
+     * A member not compared, nested too deeply ({@link Nesting}), and where.
+     *
+     * @param file      the file's name, as given to {@link #parse(String, String)}
+     * @param signature the member's signature, "deep()"
+     * @param line      with {@code column}, where: the start of a node deeper than {@link Nesting#MOST_DEPTH}, or
+     *                  of the member whose nesting takes the file's past {@link Nesting#MOST_TOTAL}
+     * @param inAll     whether the member is nested too deeply only with the file's members before it
+     */
+    public record TooDeep(String file, String signature, int line, int column, boolean inAll) {
+
+        /** Why it is not compared: "blocks, statements and expressions nested more than 300 deep". */
+        public String why() {
+            return inAll ? "the depths of the file's blocks, statements and expressions, added up, pass "
+                    + Nesting.MOST_TOTAL : "blocks, statements and expressions nested more than " + Nesting.MOST_DEPTH
+                    + " deep";
+        }
+
+        /** "Sphere.java:3:317: deep(): blocks, statements and expressions nested more than 300 deep: too ...". */
+        public String message() {
+            return file + ":" + line + ":" + column + ": " + signature + ": " + why() + ": too deeply nested to "
+                    + "compare";
+        }
+    }
+
+    public JavaMembers {
+        tooDeep = List.copyOf(tooDeep);
+    }
+
+    /** A file's members, all of them compared. */
+    public JavaMembers(String className, Map<String, Member> members) {
+        this(className, members, List.of());
     }
 
     /** A file that is not Java the parser accepts: where, and what the parser said. */
@@ -120,9 +157,20 @@ public record JavaMembers(String className, Map<String, Member> members) {
         SameMeaning meaning = new SameMeaning(type);
         JavaMembers like = likeOf.apply(type.getNameAsString());
         Map<String, Member> members = new LinkedHashMap<>();
+        List<TooDeep> tooDeep = new ArrayList<>();
+        long total = 0;
         for (BodyDeclaration<?> member : type.getMembers()) {
             String signature = signature(member);
             if (!wanted.test(signature)) {
+                continue;
+            }
+            Nesting nesting = Nesting.of(member);
+            total += nesting.total();
+            if (nesting.deepest() != null || total > Nesting.MOST_TOTAL) {
+                Node at = nesting.deepest() != null ? nesting.deepest() : member;
+                Position place = at.getBegin().orElse(Position.HOME);
+                tooDeep.add(new TooDeep(name, signature, place.line, place.column, nesting.deepest() == null));
+                total -= nesting.total();
                 continue;
             }
             boolean todo = member.getAllContainedComments().stream()
@@ -132,7 +180,7 @@ public record JavaMembers(String className, Map<String, Member> members) {
             meaning.order(member, preferred);
             members.put(signature, new Member(SameMeaning.print(member), meaning.key(member, preferred), todo));
         }
-        return new JavaMembers(type.getNameAsString(), members);
+        return new JavaMembers(type.getNameAsString(), members, tooDeep);
     }
 
     /** "trace(Scene, Ray)", "Renderer(int, int)", "field width, height". */

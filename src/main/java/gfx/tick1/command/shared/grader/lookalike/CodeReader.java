@@ -37,7 +37,7 @@ final class CodeReader {
 
     private static final String LOCAL = "#";
     /** Changes when what a parse keeps changes, so that code kept by an older reader is parsed again. */
-    private static final String FORMAT = "tick1 parsed code 1";
+    private static final String FORMAT = "tick1 parsed code 2";
 
     private final int minimum;
     private final ParsedCodes parsed;
@@ -158,6 +158,8 @@ final class CodeReader {
                 JavaMembers members = JavaMembers.parse(file, source, tick1().reference().get(className),
                         signature -> signature.equals(own) || !given.contains(signature));
                 parsed.add(new JavaMembers(className, members.members()));
+                members.tooDeep().forEach(member -> notes.add(member.signature() + " in " + file
+                        + " is not compared: " + member.why()));
             } catch (JavaMembers.ParseException e) {
                 notes.add(file + " does not parse");
             } catch (StackOverflowError e) {

@@ -9,6 +9,7 @@ import gfx.tick1.command.shared.grader.model.Findings;
 import gfx.tick1.command.shared.grader.model.StudentResult;
 import gfx.tick1.command.shared.grader.model.StudentResult.SceneResult;
 import gfx.tick1.command.shared.grader.model.Submission;
+import gfx.tick1.command.shared.javacode.Nesting;
 import gfx.tick1.command.shared.kit.StarterKit;
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
@@ -175,6 +176,22 @@ class LookalikesTest {
             assertThat(pair.reason()).as("why").isEqualTo(Lookalike.Reason.SAME_UNCATALOGUED_ANSWERS);
             assertThat(pair.why()).as("the phrase").isEqualTo("the same uncatalogued wrong answer");
         });
+    }
+
+    /** A member nested deeper than any solution is not compared, and the note says so; the rest of the code is. */
+    @Test
+    void aMemberNestedBeyondTheBoundIsLeftOutWithANote() {
+        Solution honest = HONEST.get(0);
+        int depth = Nesting.MOST_DEPTH + 1;
+        String sphere = honest.sphere().substring(0, honest.sphere().lastIndexOf('}'))
+                + "    void deep() " + "{".repeat(depth) + "}".repeat(depth) + "\n}\n";
+
+        ComparedCode code = reader.read(sphere, honest.renderer());
+
+        assertThat(code.members()).as("the members compared").extracting(ComparedCode.Member::signature)
+                .contains(CodeReader.INTERSECTION, CodeReader.ILLUMINATE).doesNotContain("deep()");
+        assertThat(code.notes()).as("what was not compared").containsExactly("deep() in Sphere.java is not compared: "
+                + "blocks, statements and expressions nested more than " + Nesting.MOST_DEPTH + " deep");
     }
 
     private static String describe(Lookalike pair) {
