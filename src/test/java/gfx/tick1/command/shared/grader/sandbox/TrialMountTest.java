@@ -3,14 +3,10 @@ package gfx.tick1.command.shared.grader.sandbox;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
 
-import gfx.tick1.CliRun;
+import gfx.tick1.EndedJvm;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
-import java.util.concurrent.TimeUnit;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -29,38 +25,30 @@ class TrialMountTest {
         Path temporary = Files.createDirectory(dir.resolve("tmp"));
         assumeThat(OutputDisk.canMount(Files.createDirectory(dir.resolve("scratch"))))
                 .as("a tmpfs can be mounted here (as root)").isTrue();
-        List<String> command = CliRun.java();
-        command.addAll(List.of("-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
-                EndDuringTrial.class.getName()));
-        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
-        String said = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        assertThat(process.waitFor(60, TimeUnit.SECONDS)).as("the JVM ended").isTrue();
 
-        assertThat(said).as("whether the JVM ended while the trial's folder was there").startsWith("ended during");
+        EndedJvm ended = EndedJvm.of(EndDuringTrial.class, temporary);
+
+        assertThat(ended.said()).as("whether the JVM ended while the trial's folder was there")
+                .startsWith("ended during");
         assertThat(OutputDisk.mountPoints()).as("the file systems mounted in the temporary folder")
                 .noneMatch(point -> point.startsWith(temporary.toString()));
-        try (Stream<Path> left = Files.list(temporary)) {
-            assertThat(left.toList()).as("what the trial left in the temporary folder").isEmpty();
-        }
+        assertThat(ended.left()).as("what the trial left in the temporary folder").isEmpty();
     }
 
-    /** The other JVM of the test above: it ends as soon as the trial's folder is there. */
+    /**
+     * The other JVM of the test above: it ends as soon as a trial's folder is there. A trial lasts milliseconds, so
+     * one follows another until then.
+     */
     static final class EndDuringTrial {
         public static void main(String[] args) throws IOException {
-            Path temporary = Path.of(System.getProperty("java.io.tmpdir"));
-            Thread trial = new Thread(Host::canMountOutputDisks, "trial");
+            Thread trial = new Thread(() -> {
+                while (true) {
+                    Host.canMountOutputDisks();
+                }
+            }, "trials");
             trial.setDaemon(true);
             trial.start();
-            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
-            while (System.nanoTime() < end) {
-                try (Stream<Path> names = Files.list(temporary)) {
-                    if (names.anyMatch(name -> name.getFileName().toString().startsWith("tick1-mount-"))) {
-                        System.out.println("ended during the trial");
-                        System.exit(0);
-                    }
-                }
-            }
-            System.out.println("the trial's folder was never seen");
+            EndedJvm.endOnceMade("tick1-mount-", folder -> true, 20);
         }
     }
 }
