@@ -7,6 +7,7 @@ import gfx.tick1.command.shared.grader.sandbox.SceneBatch;
 import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.Counted;
+import gfx.tick1.engine.io.OnExit;
 import gfx.tick1.engine.render.GoldenImages;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -106,16 +107,18 @@ public final class BehaviourCheck {
     /** As above; with {@code draw}, the run also draws {@link DrawnScenes#SCENES} at the handout's size. */
     private static Called call(Sandbox sandbox, String sphere, String renderer, BehaviourInputs.Chosen chosen,
             boolean draw) throws InterruptedException {
-        Path work = null;
+        OnExit deleted = null;
         try {
-            work = Leftovers.newWorkFolder("behaviour");
+            Path work = Leftovers.newWorkFolder("behaviour");
+            // However tick1 ends (Ctrl-C, SIGTERM while the methods run), the folder and the run's tmpfs go.
+            deleted = OnExit.run("tick1-behaviour-clean-up", () -> WorkFolder.delete(work));
             return call(sandbox, work, sphere, renderer, chosen, draw);
         } catch (IOException e) {
             return new Called(null, "behaviour could not be checked: your methods could not be run ("
                     + e.getMessage() + ")");
         } finally {
-            if (work != null) {
-                WorkFolder.delete(work);
+            if (deleted != null) {
+                deleted.now();
             }
         }
     }

@@ -1,8 +1,11 @@
 package gfx.tick1.command.shared.grader.sandbox;
 
+import gfx.tick1.engine.io.OnExit;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.concurrent.locks.ReentrantLock;
 
 /**
  * What this machine gives every sandbox made here: the bwrap (null for none), where control
@@ -62,14 +65,37 @@ record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDis
                 hiddenRunFilter);
     }
 
-    /** Whether this grader can mount each run a tmpfs of its own: it mounts one, in a new temporary folder. */
-    private static boolean canMountOutputDisks() {
+    /**
+     * Whether this grader can mount each run a tmpfs of its own: it mounts one, in a new temporary folder. The
+     * folder goes however tick1 ends: a diff makes its sandbox while it parses, and may end before the trial does.
+     * The JVM's end waits for the mount and unmount under way, then deletes the folder; after it, no trial begins.
+     */
+    static boolean canMountOutputDisks() {
+        ReentrantLock trying = new ReentrantLock();
+        AtomicReference<Path> scratch = new AtomicReference<>();
+        AtomicBoolean ended = new AtomicBoolean();
         try {
-            Path scratch = Leftovers.newWorkFolder("mount");
+            OnExit cleanUp = OnExit.run("tick1-trial-mount", () -> {
+                trying.lock();
+                try {
+                    ended.set(true);
+                    if (scratch.get() != null) {
+                        WorkFolder.delete(scratch.get());
+                    }
+                } finally {
+                    trying.unlock();
+                }
+            });
+            trying.lock();
             try {
-                return OutputDisk.canMount(scratch);
+                if (ended.get()) {
+                    return false;
+                }
+                scratch.set(Leftovers.newWorkFolder("mount"));
+                return OutputDisk.canMount(scratch.get());
             } finally {
-                Files.deleteIfExists(scratch);
+                trying.unlock();
+                cleanUp.now();
             }
         } catch (IOException e) {
             return false;
