@@ -72,6 +72,11 @@ public final class ResultStore {
      */
     public ResultStore(Path folder) throws IOException {
         this.folder = OwnFolder.at(folder);
+        deleteHalfWritten(folder);
+    }
+
+    /** Deletes what stopped runs left half-written in {@code folder}, leaving what a live run is writing. */
+    static void deleteHalfWritten(Path folder) throws IOException {
         try (DirectoryStream<Path> entries = Files.newDirectoryStream(folder, WRITING + "*")) {
             for (Path entry : entries) {
                 if (Leftovers.leftByAGoneRun(entry.getFileName().toString().substring(WRITING.length()))) {
@@ -215,6 +220,11 @@ public final class ResultStore {
 
     /** A new name for a folder being written, which carries this process's mark. */
     private Path writingName() {
+        return writingName(folder);
+    }
+
+    /** A new name in {@code folder} for a file or folder being written, which carries this process's mark. */
+    static Path writingName(Path folder) {
         return folder.resolve(WRITING + Leftovers.mark() + UUID.randomUUID());
     }
 

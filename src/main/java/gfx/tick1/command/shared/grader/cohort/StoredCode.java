@@ -3,14 +3,11 @@ package gfx.tick1.command.shared.grader.cohort;
 import gfx.tick1.command.shared.grader.lookalike.ComparedCode;
 import gfx.tick1.command.shared.grader.lookalike.ParsedCode;
 import gfx.tick1.command.shared.grader.lookalike.ParsedCodes;
-import gfx.tick1.command.shared.grader.sandbox.Leftovers;
-import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import gfx.tick1.engine.io.OwnFolder;
 import java.io.IOException;
 import java.io.Reader;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
@@ -21,7 +18,6 @@ import java.util.HexFormat;
 import java.util.List;
 import java.util.Objects;
 import java.util.Properties;
-import java.util.UUID;
 
 /**
  * The code the look-alike check parsed, kept in a folder of the result store ({@link #FOLDER}), one
@@ -35,8 +31,6 @@ public final class StoredCode implements ParsedCodes {
     /** The folder in the result store where the code is kept. */
     public static final String FOLDER = "parsed";
 
-    /** The prefix of files being written, before the id of the process writing them, as in {@link ResultStore}. */
-    private static final String WRITING = ".writing-";
     /**
      * The most characters of code a file keeps: five times two files at the look-alike check's cap on what it
      * parses. Honest code prints at about its own length; only nesting prints longer (its indent grows as the square
@@ -63,13 +57,7 @@ public final class StoredCode implements ParsedCodes {
     StoredCode(Path folder, String build) throws IOException {
         this.folder = OwnFolder.at(folder);
         this.build = build;
-        try (DirectoryStream<Path> entries = Files.newDirectoryStream(folder, WRITING + "*")) {
-            for (Path entry : entries) {
-                if (Leftovers.leftByAGoneRun(entry.getFileName().toString().substring(WRITING.length()))) {
-                    WorkFolder.delete(entry);
-                }
-            }
-        }
+        ResultStore.deleteHalfWritten(folder);
     }
 
     @Override
@@ -124,7 +112,7 @@ public final class StoredCode implements ParsedCodes {
             p.setProperty("note." + i, code.notes().get(i));
         }
         p.setProperty("sum", sum(digest, code));
-        Path writing = folder.resolve(WRITING + Leftovers.mark() + UUID.randomUUID());
+        Path writing = ResultStore.writingName(folder);
         try {
             try (Writer out = Files.newBufferedWriter(writing, StandardCharsets.UTF_8)) {
                 p.store(out, null);
