@@ -3,7 +3,6 @@ package gfx.tick1.command.shared.grader.sandbox;
 import gfx.tick1.engine.io.OnExit;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.ReentrantLock;
 
@@ -73,12 +72,10 @@ record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDis
     static boolean canMountOutputDisks() {
         ReentrantLock trying = new ReentrantLock();
         AtomicReference<Path> scratch = new AtomicReference<>();
-        AtomicBoolean ended = new AtomicBoolean();
         try {
             OnExit cleanUp = OnExit.run("tick1-trial-mount", () -> {
                 trying.lock();
                 try {
-                    ended.set(true);
                     if (scratch.get() != null) {
                         WorkFolder.delete(scratch.get());
                     }
@@ -88,7 +85,7 @@ record Host(Path bwrap, Cgroup.Place cgroups, Path seccompFilter, boolean ownDis
             });
             trying.lock();
             try {
-                if (ended.get()) {
+                if (OnExit.stopping()) {   // the hook may have run already: no trial now
                     return false;
                 }
                 scratch.set(Leftovers.newWorkFolder("mount"));
