@@ -6,6 +6,7 @@ import gfx.tick1.engine.fast.FastRenderer.SphereSearch;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.math.Vector3;
 import gfx.tick1.engine.render.GoldenImages;
+import gfx.tick1.engine.render.ReferenceImages;
 import gfx.tick1.engine.render.ReferenceRenderer;
 import gfx.tick1.engine.render.SamplePattern;
 import gfx.tick1.engine.scene.Intersection;
@@ -43,9 +44,9 @@ class FastRendererTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void matchesTheReadableRendererOnEveryRepositoryScene(Path scene) {
-        BufferedImage expected = new ReferenceRenderer(640, 480).render(load(scene));
-        assertSamePixels(expected, new FastRenderer(640, 480, new SamplePattern(1)).render(load(scene)),
-                scene.toString());
+        BufferedImage expected = ReferenceImages.of(scene);
+        assertSamePixels(expected, new FastRenderer(GoldenImages.WIDTH, GoldenImages.HEIGHT, new SamplePattern(1))
+                .render(load(scene)), scene.toString());
     }
 
     static List<Path> hardScenes() throws IOException {
