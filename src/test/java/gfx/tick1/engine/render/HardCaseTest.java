@@ -62,20 +62,32 @@ class HardCaseTest {
                 .isLessThanOrEqualTo(1);
     }
 
+    /**
+     * A NaN channel truncates to 0, so a NaN-derived pixel would be silently black in that channel:
+     * the colours are traced again, as the image's were, at every pixel with a channel at 0 (on most hard
+     * cases there is none), and none may be NaN.
+     */
     @ParameterizedTest(name = "{0}")
     @MethodSource("hardCases")
     void noColourTheDefaultRendererComputesIsNaN(Path scene) {
         Scene loaded = load(scene);
+        BufferedImage image = byDefault(scene);
         Renderer renderer = new ReferenceRenderer(WIDTH, HEIGHT);
         Camera camera = new Camera(WIDTH, HEIGHT);
         for (int y = 0; y < HEIGHT; y++) {
             for (int x = 0; x < WIDTH; x++) {
+                if (!hasAChannelAtZero(image.getRGB(x, y))) {
+                    continue;
+                }
                 Vector3 colour = renderer.trace(loaded, camera.castRay(x, y));
-                // NaN truncates to 0: a NaN-derived pixel would be silently black.
                 assertThat(Double.isNaN(colour.x) || Double.isNaN(colour.y) || Double.isNaN(colour.z))
                         .as("%s pixel (%d, %d) is %s", scene, x, y, colour).isFalse();
             }
         }
+    }
+
+    private static boolean hasAChannelAtZero(int rgb) {
+        return (rgb & 0xFF0000) == 0 || (rgb & 0xFF00) == 0 || (rgb & 0xFF) == 0;
     }
 
     @ParameterizedTest(name = "{0}")
