@@ -17,6 +17,7 @@ import gfx.tick1.engine.scene.Sphere;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -53,10 +54,14 @@ class FastRendererTest {
         return GoldenImages.scenesUnder(Path.of("scenes/hard"));
     }
 
+    /**
+     * The default method, {@link Intersection#DEFAULT}, is held to the readable code on every hard case at
+     * 640x480 already: the hard cases are among the repository's scenes.
+     */
     @ParameterizedTest(name = "{0}")
     @MethodSource("hardScenes")
-    void matchesTheReadableRendererWithEveryIntersectionMethodOnTheHardCases(Path scene) {
-        for (Intersection intersection : Intersection.values()) {
+    void matchesTheReadableRendererWithTheOtherIntersectionMethodsOnTheHardCases(Path scene) {
+        for (Intersection intersection : EnumSet.complementOf(EnumSet.of(Intersection.DEFAULT))) {
             BufferedImage expected = new ReferenceRenderer(320, 240, intersection).render(load(scene));
             assertSamePixels(expected,
                     new FastRenderer(320, 240, new SamplePattern(1), intersection).render(load(scene)),
