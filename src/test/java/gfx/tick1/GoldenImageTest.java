@@ -5,8 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.image.PngOutput;
 import gfx.tick1.engine.render.GoldenImages;
-import gfx.tick1.engine.render.ReferenceRenderer;
-import gfx.tick1.engine.scene.SceneLoader;
+import gfx.tick1.engine.render.ReferenceImages;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -40,8 +39,7 @@ class GoldenImageTest {
         assertThat(reference).as("reference image for %s (make it with: gradle updateReferenceImages)", scene)
                 .exists();
         BufferedImage expected = ImageIO.read(reference.toFile());
-        BufferedImage actual = new ReferenceRenderer(GoldenImages.WIDTH, GoldenImages.HEIGHT)
-                .render(new SceneLoader(scene, false).getScene());
+        BufferedImage actual = ReferenceImages.of(scene);
 
         ImageDifference difference = ImageDifference.between(expected, actual);
         if (difference.differingPixels() > 0) {

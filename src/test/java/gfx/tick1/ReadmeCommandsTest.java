@@ -91,7 +91,7 @@ class ReadmeCommandsTest {
      */
     @Test
     void theStudentSectionWorksAsWrittenInsideTheStarterKit(@TempDir Path dir) throws Exception {
-        assertThat(CliRun.inFolder(dir, "starter", "--out", "kit").status()).isZero();
+        assertThat(CliRun.of("starter", "--out", dir.resolve("kit").toString()).status()).isZero();
         Path kit = dir.resolve("kit");
         for (String name : List.of("Sphere.java", "Renderer.java")) {
             Files.copy(Path.of("src/test/resources/students/correct", name), kit.resolve("src/gfx/tick1/" + name),
@@ -142,7 +142,7 @@ class ReadmeCommandsTest {
      */
     @Test
     void theStudentSectionPreviewsASceneOfTheStarterKit(@TempDir Path dir) throws Exception {
-        assertThat(CliRun.inFolder(dir, "starter", "--out", "kit").status()).isZero();
+        assertThat(CliRun.of("starter", "--out", dir.resolve("kit").toString()).status()).isZero();
         String readme = Files.readString(Path.of("README.md"));
         String section = readme.substring(readme.indexOf("## For students"), readme.indexOf("## For course staff"));
         Matcher preview = Pattern.compile("`(?:tick1|java -jar tick1\\.jar) preview ([^`]+)`").matcher(section);

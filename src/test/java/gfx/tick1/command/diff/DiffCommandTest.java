@@ -182,6 +182,23 @@ class DiffCommandTest {
         return run;
     }
 
+    /** A run that more than one test reads, made in a folder of its own. */
+    private interface SharedRun {
+        CliRun in(Path folder) throws IOException, InterruptedException;
+    }
+
+    private static final java.util.Map<String, CliRun> SHARED_RUNS = new java.util.HashMap<>();
+
+    /** The run named {@code name}, made once, on first use, in the folder of that name: each diff costs seconds. */
+    private static synchronized CliRun shared(String name, SharedRun run) throws IOException, InterruptedException {
+        CliRun made = SHARED_RUNS.get(name);
+        if (made == null) {
+            made = run.in(Files.createDirectories(styles.resolve(name)));
+            SHARED_RUNS.put(name, made);
+        }
+        return made;
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("otherCode")
     void aCorrectSolutionWrittenAnotherWayShowsTheMembersItChangesAndNoOthers(CorrectStyles.Style style)
@@ -358,14 +375,23 @@ class DiffCommandTest {
         assertThat(report).as(String.join("\n", report)).contains("@@ todo() @@").doesNotContain("@@ given() @@");
     }
 
-    /** Whether the sandbox, where diff runs the probes that make its hints, can be made here. */
-    private static boolean sandboxHere() throws InterruptedException {
-        try {
-            gfx.tick1.command.shared.grader.sandbox.Sandbox.confined();
-            return true;
-        } catch (gfx.tick1.command.shared.grader.sandbox.Sandbox.Unavailable e) {
-            return false;
+    /** Whether the sandbox can be made here, once asked; null before. */
+    private static Boolean sandboxHere;
+
+    /**
+     * Whether the sandbox, where diff runs the probes that make its hints, can be made here: asked once
+     * for the class (making one runs bubblewrap's self-test), as no test of it changes what makes it.
+     */
+    private static synchronized boolean sandboxHere() throws InterruptedException {
+        if (sandboxHere == null) {
+            try {
+                gfx.tick1.command.shared.grader.sandbox.Sandbox.confined();
+                sandboxHere = true;
+            } catch (gfx.tick1.command.shared.grader.sandbox.Sandbox.Unavailable e) {
+                sandboxHere = false;
+            }
         }
+        return sandboxHere;
     }
 
     private static java.util.List<String> hints(CliRun run) {
@@ -406,15 +432,18 @@ class DiffCommandTest {
         return gfx.tick1.command.shared.behaviour.WrittenStyles.all().values().stream();
     }
 
-    /** A correct solution of a style of its own behaves as ours: nothing to fix, no hint, no note, exit 0. */
+    /**
+     * A correct solution of a style of its own behaves as ours: nothing to fix, no hint, no note, exit 0.
+     * Each style rewrites one method, intersectionWith or illuminate, in the correct solution, so one
+     * diff runs two styles: the Sphere.java of one that rewrites intersectionWith with the Renderer.java
+     * of one that rewrites illuminate.
+     */
     @ParameterizedTest(name = "{0}")
     @MethodSource("writtenStyles")
     void aCorrectSolutionOfAStyleOfItsOwnExitsZeroWithNoHintAndNoNote(WrittenStyles.Style style)
             throws IOException, InterruptedException {
         org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
-        Path folder = Files.createDirectories(styles.resolve("written-" + Math.abs(style.name().hashCode())));
-        CliRun run = CliRun.of("diff", Files.writeString(folder.resolve("Sphere.java"), style.sphere()).toString(),
-                Files.writeString(folder.resolve("Renderer.java"), style.renderer()).toString());
+        CliRun run = writtenPairRun(style);
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
         assertThat(hints(run)).as(run.transcript()).isEmpty();
         assertThat(run.out().lines().findFirst()).as(run.transcript()).contains(DiffCommand.NOTHING_TO_FIX);
@@ -422,12 +451,24 @@ class DiffCommandTest {
                 && line.contains(" behaves as ours on "));
     }
 
+    /** The diff of the written style's pair ({@link #aCorrectSolutionOfAStyleOfItsOwnExitsZeroWithNoHintAndNoNote}). */
+    private static CliRun writtenPairRun(WrittenStyles.Style style) throws IOException, InterruptedException {
+        String correctSphere = Files.readString(Path.of("src/test/resources/students/correct/Sphere.java"));
+        java.util.List<WrittenStyles.Style> spheres = WrittenStyles.all().values().stream()
+                .filter(written -> !written.sphere().equals(correctSphere)).toList();
+        java.util.List<WrittenStyles.Style> renderers = WrittenStyles.all().values().stream()
+                .filter(written -> written.sphere().equals(correctSphere)).toList();
+        // The k-th pair: the k-th Renderer style with a Sphere style, each Sphere style in at least one pair.
+        int k = spheres.contains(style) ? spheres.indexOf(style) : renderers.indexOf(style);
+        WrittenStyles.Style sphere = spheres.get(k % spheres.size()), renderer = renderers.get(k % renderers.size());
+        return shared("written-" + k, folder -> CliRun.of("diff",
+                Files.writeString(folder.resolve("Sphere.java"), sphere.sphere()).toString(),
+                Files.writeString(folder.resolve("Renderer.java"), renderer.renderer()).toString()));
+    }
+
     @Test
     void withoutTheSandboxThereAreNoHintsAndOneLineSaysWhy() throws IOException, InterruptedException {
-        Path file = write("Renderer.java", StarterKit.source("Renderer"));
-        // The missing bwrap is named to a tick1 in a JVM of its own, so that no other test's sandbox is affected.
-        CliRun run = CliRun.inJvm(dir, java.util.List.of("-Dtick1.grade.bwrap=/nonexistent/bwrap"), "diff",
-                file.toString());
+        CliRun run = kitRendererWithoutBubblewrap();
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
         assertThat(hints(run)).as(run.transcript()).hasSize(1).allMatch(line -> line.startsWith(
                 "behaviour could not be checked: it comes from running your methods in the sandbox"));
@@ -444,6 +485,12 @@ class DiffCommandTest {
                 .contains(RefusedNamespaces.WHAT_BWRAP_SAYS, "user namespaces").doesNotContain("install");
     }
 
+    /** {@code tick1 diff} of the kit's Renderer.java as on a machine without bubblewrap, read by two tests. */
+    private static CliRun kitRendererWithoutBubblewrap() throws IOException, InterruptedException {
+        return shared("kit-renderer-without-bubblewrap", folder -> withoutBubblewrap("diff",
+                Files.writeString(folder.resolve("Renderer.java"), StarterKit.source("Renderer")).toString()));
+    }
+
     /** Runs {@code diff} with these arguments as on a machine without bubblewrap (macOS, Windows). */
     private static CliRun withoutBubblewrap(String... args) throws IOException {
         // The missing bwrap is named to a tick1 in a JVM of its own: classes that grade or diff in the
@@ -458,14 +505,10 @@ class DiffCommandTest {
     }
 
     @Test
-    void withoutTheSandboxTheLineThatSaysBehaviourCouldNotBeCheckedNamesNoSandbox() throws IOException {
-        CliRun run = withoutBubblewrap("diff", write("Renderer.java", StarterKit.source("Renderer")).toString());
+    void withoutTheSandboxTheLineThatSaysBehaviourCouldNotBeCheckedNamesNoSandbox()
+            throws IOException, InterruptedException {
+        CliRun run = kitRendererWithoutBubblewrap();
         assertThat(hints(run)).as(run.transcript()).singleElement().asString().contains("--no-sandbox");
-    }
-
-    private Path correct(String className) throws IOException {
-        return write(className + ".java",
-                Files.readString(Path.of("src/test/resources/students/correct/" + className + ".java")));
     }
 
     /**
@@ -485,9 +528,7 @@ class DiffCommandTest {
 
     @Test
     void starterMembersEditedWithoutChangingAnImageAreShownButExitZero() throws IOException, InterruptedException {
-        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
-        Path[] files = starterMembersEdited().writeTo(dir.resolve("edited"));
-        CliRun run = CliRun.of("diff", files[0].toString(), files[1].toString());
+        CliRun run = sandboxedDiffOf(starterMembersEdited());
         assertThat(membersShown(run)).as(run.transcript()).containsExactlyInAnyOrder(RENDER, TRACE);
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
     }
@@ -495,9 +536,7 @@ class DiffCommandTest {
     @Test
     void starterMembersEditedWithoutChangingAnImageAreToldThatTheImagesWereDrawnAsOurs()
             throws IOException, InterruptedException {
-        org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
-        Path[] files = starterMembersEdited().writeTo(dir.resolve("edited"));
-        CliRun run = CliRun.of("diff", files[0].toString(), files[1].toString());
+        CliRun run = sandboxedDiffOf(starterMembersEdited());
         java.util.List<String> lines = run.out().lines().toList();
         assertThat(lines.get(0)).as(run.transcript()).isEqualTo(DiffCommand.NOTHING_TO_FIX_DRAWN);
         assertThat(lines).as(run.transcript()).contains(DiffCommand.DRAWN_THE_SAME).doesNotContain(
@@ -517,10 +556,9 @@ class DiffCommandTest {
     }
 
     @Test
-    void withNoSandboxAWrongMethodGetsItsCounterexampleWhereThereIsNoBubblewrap() throws IOException {
-        Path sphere = write("Sphere.java", Files.readString(Path.of("src/test/resources/students/correct/Sphere.java"))
-                .replace("double s = s1 > 0 ? s1 : s2;", "double s = s2;"));
-        CliRun run = withoutBubblewrap("diff", "--no-sandbox", sphere.toString(), correct("Renderer").toString());
+    void withNoSandboxAWrongMethodGetsItsCounterexampleWhereThereIsNoBubblewrap()
+            throws IOException, InterruptedException {
+        CliRun run = farRootWithNoSandbox();
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_DIFFERENT);
         assertThat(run.out()).as(run.transcript()).startsWith("your intersectionWith gives the answers of \""
                 + Variant.FAR_ROOT.title() + "\" on all ").contains("; for example, for ");
@@ -528,10 +566,8 @@ class DiffCommandTest {
     }
 
     @Test
-    void withNoSandboxACorrectSolutionBehavesAsOursWhereThereIsNoBubblewrap() throws IOException {
-        WrittenStyles.Style style = WrittenStyles.all().values().iterator().next();
-        CliRun run = withoutBubblewrap("diff", "--no-sandbox", write("Sphere.java", style.sphere()).toString(),
-                write("Renderer.java", style.renderer()).toString());
+    void withNoSandboxACorrectSolutionBehavesAsOursWhereThereIsNoBubblewrap() throws IOException, InterruptedException {
+        CliRun run = correctWithNoSandbox();
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_SAME);
         assertThat(run.out().lines().findFirst()).as(run.transcript()).hasValue(DiffCommand.NOTHING_TO_FIX);
         assertThat(run.out().lines().skip(1).limit(2)).as(run.transcript()).hasSize(2)
@@ -539,13 +575,40 @@ class DiffCommandTest {
     }
 
     @Test
-    void withNoSandboxOneLineSaysTheMethodsRanUnsandboxedAndHowTheyWereLimited() throws IOException {
-        WrittenStyles.Style style = WrittenStyles.all().values().iterator().next();
-        CliRun run = withoutBubblewrap("diff", "--no-sandbox", write("Sphere.java", style.sphere()).toString(),
-                write("Renderer.java", style.renderer()).toString());
+    void withNoSandboxOneLineSaysTheMethodsRanUnsandboxedAndHowTheyWereLimited()
+            throws IOException, InterruptedException {
+        CliRun run = correctWithNoSandbox();
         assertThat(run.err().lines()).as(run.transcript()).singleElement().asString()
                 .startsWith("tick1 diff: note: --no-sandbox: your methods ran without a sandbox")
                 .contains("time", "heap");
+    }
+
+    /** The first written style's files, diffed with --no-sandbox where there is no bubblewrap; read by two tests. */
+    private static CliRun correctWithNoSandbox() throws IOException, InterruptedException {
+        WrittenStyles.Style style = WrittenStyles.all().values().iterator().next();
+        return shared("correct-with-no-sandbox", folder -> withoutBubblewrap("diff", "--no-sandbox",
+                Files.writeString(folder.resolve("Sphere.java"), style.sphere()).toString(),
+                Files.writeString(folder.resolve("Renderer.java"), style.renderer()).toString()));
+    }
+
+    /** The correct Sphere.java taking the far root. */
+    private static String farRootSphere() throws IOException {
+        return Files.readString(Path.of("src/test/resources/students/correct/Sphere.java"))
+                .replace("double s = s1 > 0 ? s1 : s2;", "double s = s2;");
+    }
+
+    /** The folder of {@link #farRootWithNoSandbox}'s files. */
+    private static final String FAR_ROOT = "far-root-with-no-sandbox";
+
+    /**
+     * The far root's Sphere.java with the correct Renderer.java, saved plainly, diffed with --no-sandbox
+     * where there is no bubblewrap; read by two tests.
+     */
+    private static CliRun farRootWithNoSandbox() throws IOException, InterruptedException {
+        return shared(FAR_ROOT, folder -> withoutBubblewrap("diff", "--no-sandbox",
+                Files.writeString(folder.resolve("Sphere.java"), farRootSphere()).toString(),
+                Files.writeString(folder.resolve("Renderer.java"), Files.readString(
+                        Path.of("src/test/resources/students/correct/Renderer.java"))).toString()));
     }
 
     /**
@@ -553,16 +616,14 @@ class DiffCommandTest {
      * name has spaces and a letter beyond ASCII, are compared as the same files saved plainly, to the word.
      */
     @Test
-    void filesSavedOnWindowsInAFolderNamedWithSpacesAndAnEAreDiffedAsThePlainOnes() throws IOException {
+    void filesSavedOnWindowsInAFolderNamedWithSpacesAndAnEAreDiffedAsThePlainOnes()
+            throws IOException, InterruptedException {
         gfx.tick1.FileNames.assumeTheyCanHold("Zoë");
-        String sphere = Files.readString(Path.of("src/test/resources/students/correct/Sphere.java"))
-                .replace("double s = s1 > 0 ? s1 : s2;", "double s = s2;");
+        String sphere = farRootSphere();
         String renderer = Files.readString(Path.of("src/test/resources/students/correct/Renderer.java"));
-        Path plain = Files.createDirectories(dir.resolve("plain"));
+        CliRun asPlain = farRootWithNoSandbox();
+        Path plain = styles.resolve(FAR_ROOT);
         Path windows = Files.createDirectories(dir.resolve("Tick 1 (copy) Zoë"));
-        CliRun asPlain = withoutBubblewrap("diff", "--no-sandbox",
-                Files.writeString(plain.resolve("Sphere.java"), sphere).toString(),
-                Files.writeString(plain.resolve("Renderer.java"), renderer).toString());
         CliRun asSaved = withoutBubblewrap("diff", "--no-sandbox",
                 Files.writeString(windows.resolve("Sphere.java"), savedOnWindows(sphere)).toString(),
                 Files.writeString(windows.resolve("Renderer.java"), savedOnWindows(renderer)).toString());
@@ -679,7 +740,7 @@ class DiffCommandTest {
 
     @Test
     void aFileNamedWithoutTheKitsSourceFolderIsFoundThere() throws IOException, InterruptedException {
-        assertThat(CliRun.inFolder(dir, "starter", "--out", "kit").status()).isZero();
+        assertThat(CliRun.of("starter", "--out", dir.resolve("kit").toString()).status()).isZero();
         CliRun run = CliRun.inFolder(dir.resolve("kit"), "diff", "Sphere.java", "Renderer.java");
         assertThat(run.status()).as(run.transcript()).isEqualTo(DiffCommand.EXIT_CANNOT_COMPARE);
         assertThat(run.err()).isEqualTo("tick1 diff: Sphere.java: no such file; did you mean "

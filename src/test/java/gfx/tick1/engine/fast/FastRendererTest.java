@@ -6,6 +6,7 @@ import gfx.tick1.engine.fast.FastRenderer.SphereSearch;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.math.Vector3;
 import gfx.tick1.engine.render.GoldenImages;
+import gfx.tick1.engine.render.ReferenceImages;
 import gfx.tick1.engine.render.ReferenceRenderer;
 import gfx.tick1.engine.render.SamplePattern;
 import gfx.tick1.engine.scene.Intersection;
@@ -16,6 +17,7 @@ import gfx.tick1.engine.scene.Sphere;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -43,19 +45,23 @@ class FastRendererTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void matchesTheReadableRendererOnEveryRepositoryScene(Path scene) {
-        BufferedImage expected = new ReferenceRenderer(640, 480).render(load(scene));
-        assertSamePixels(expected, new FastRenderer(640, 480, new SamplePattern(1)).render(load(scene)),
-                scene.toString());
+        BufferedImage expected = ReferenceImages.of(scene);
+        assertSamePixels(expected, new FastRenderer(GoldenImages.WIDTH, GoldenImages.HEIGHT, new SamplePattern(1))
+                .render(load(scene)), scene.toString());
     }
 
     static List<Path> hardScenes() throws IOException {
         return GoldenImages.scenesUnder(Path.of("scenes/hard"));
     }
 
+    /**
+     * The default method, {@link Intersection#DEFAULT}, is held to the readable code on every hard case at
+     * 640x480 already: the hard cases are among the repository's scenes.
+     */
     @ParameterizedTest(name = "{0}")
     @MethodSource("hardScenes")
-    void matchesTheReadableRendererWithEveryIntersectionMethodOnTheHardCases(Path scene) {
-        for (Intersection intersection : Intersection.values()) {
+    void matchesTheReadableRendererWithTheOtherIntersectionMethodsOnTheHardCases(Path scene) {
+        for (Intersection intersection : EnumSet.complementOf(EnumSet.of(Intersection.DEFAULT))) {
             BufferedImage expected = new ReferenceRenderer(320, 240, intersection).render(load(scene));
             assertSamePixels(expected,
                     new FastRenderer(320, 240, new SamplePattern(1), intersection).render(load(scene)),
@@ -72,17 +78,31 @@ class FastRendererTest {
         assertSamePixels(expected, new FastRenderer(160, 120, pattern).render(scene), samples + " samples");
     }
 
+    /**
+     * A crowd of spheres, a fifth of them duplicated exactly, drawn by the readable code, brute force and
+     * the BVH. Whether the BVH finds a ray's nearest sphere, and the earlier of two coincident ones, is a
+     * matter of each ray: a small image of the crowd still holds hundreds of pixels an exact tie decides
+     * (the test counts them), and the readable code, which tests every sphere on every ray, costs less.
+     */
     @ParameterizedTest(name = "seed {0}")
     @ValueSource(longs = {1, 2, 3})
     void bvhAndBruteForceAgreeOnLargeScenesIncludingExactTies(long seed) {
-        Scene scene = crowd(seed, 1500);
-        BufferedImage readable = new ReferenceRenderer(200, 150).render(scene);
-        BufferedImage brute = new FastRenderer(200, 150, new SamplePattern(1), SphereSearch.BRUTE_FORCE,
-                Intersection.DEFAULT).render(scene);
-        BufferedImage bvh = new FastRenderer(200, 150, new SamplePattern(1), SphereSearch.BVH, Intersection.DEFAULT)
-                .render(scene);
+        Scene scene = crowd(seed, 1500, false);
+        BufferedImage readable = new ReferenceRenderer(CROWD_WIDTH, CROWD_HEIGHT).render(scene);
+        BufferedImage brute = crowdBy(SphereSearch.BRUTE_FORCE, scene);
+        BufferedImage bvh = crowdBy(SphereSearch.BVH, scene);
+        ImageDifference ties = ImageDifference.between(bvh, crowdBy(SphereSearch.BVH, crowd(seed, 1500, true)));
+        assertThat(ties.differingPixels()).as("pixels an exact tie decides").isGreaterThan(300);
         assertSamePixels(brute, bvh, "BVH vs brute force");
         assertSamePixels(readable, bvh, "BVH vs readable");
+    }
+
+    /** The size of the crowd's image: its spheres still cover thousands of pixels. */
+    private static final int CROWD_WIDTH = 100, CROWD_HEIGHT = 75;
+
+    private static BufferedImage crowdBy(SphereSearch search, Scene scene) {
+        return new FastRenderer(CROWD_WIDTH, CROWD_HEIGHT, new SamplePattern(1), search, Intersection.DEFAULT)
+                .render(scene);
     }
 
     @Test
@@ -143,8 +163,11 @@ class FastRendererTest {
         assertThat(between).as("pixels between background and sphere").isGreaterThan(20);
     }
 
-    /** Many small spheres in front of the camera, with every fifth one duplicated exactly. */
-    static Scene crowd(long seed, int count) {
+    /**
+     * Many small spheres in front of the camera, with every fifth one duplicated exactly: the
+     * duplicate after it, or, {@code duplicateFirst}, before it (the tie then goes the other way).
+     */
+    static Scene crowd(long seed, int count, boolean duplicateFirst) {
         Random random = new Random(seed);
         Scene scene = new Scene();
         scene.setAmbientLight(new Vector3(0.2));
@@ -154,9 +177,13 @@ class FastRendererTest {
                     4 + random.nextDouble() * 30);
             Vector3 colour = new Vector3(random.nextDouble(), random.nextDouble(), random.nextDouble());
             double radius = 0.05 + random.nextDouble() * 0.4;
+            Sphere duplicate = i % 5 == 0 ? new Sphere(centre, radius, new Vector3(1).subtract(colour)) : null;
+            if (duplicate != null && duplicateFirst) {
+                scene.addObject(duplicate);
+            }
             scene.addObject(new Sphere(centre, radius, colour));
-            if (i % 5 == 0) {
-                scene.addObject(new Sphere(centre, radius, new Vector3(1).subtract(colour)));
+            if (duplicate != null && !duplicateFirst) {
+                scene.addObject(duplicate);
             }
         }
         return scene;

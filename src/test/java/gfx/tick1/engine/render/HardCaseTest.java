@@ -43,8 +43,14 @@ class HardCaseTest {
         return TRUTH.computeIfAbsent(scene, s -> new TruthRenderer(WIDTH, HEIGHT).render(load(s)));
     }
 
+    /** The default renderer's image, shared with the other classes that render the scene so. */
+    private static BufferedImage byDefault(Path scene) {
+        return ReferenceImages.of(scene);
+    }
+
     private static ImageDifference againstTruth(Path scene, Intersection intersection) {
-        BufferedImage image = new ReferenceRenderer(WIDTH, HEIGHT, intersection).render(load(scene));
+        BufferedImage image = intersection == Intersection.DEFAULT ? byDefault(scene)
+                : new ReferenceRenderer(WIDTH, HEIGHT, intersection).render(load(scene));
         return ImageDifference.between(truth(scene), image);
     }
 
@@ -56,31 +62,42 @@ class HardCaseTest {
                 .isLessThanOrEqualTo(1);
     }
 
+    /**
+     * A NaN channel truncates to 0, so a NaN-derived pixel would be silently black in that channel:
+     * the colours are traced again, as the image's were, at every pixel with a channel at 0 (on most hard
+     * cases there is none), and none may be NaN.
+     */
     @ParameterizedTest(name = "{0}")
     @MethodSource("hardCases")
     void noColourTheDefaultRendererComputesIsNaN(Path scene) {
         Scene loaded = load(scene);
+        BufferedImage image = byDefault(scene);
         Renderer renderer = new ReferenceRenderer(WIDTH, HEIGHT);
         Camera camera = new Camera(WIDTH, HEIGHT);
         for (int y = 0; y < HEIGHT; y++) {
             for (int x = 0; x < WIDTH; x++) {
+                if (!hasAChannelAtZero(image.getRGB(x, y))) {
+                    continue;
+                }
                 Vector3 colour = renderer.trace(loaded, camera.castRay(x, y));
-                // NaN truncates to 0: a NaN-derived pixel would be silently black.
                 assertThat(Double.isNaN(colour.x) || Double.isNaN(colour.y) || Double.isNaN(colour.z))
                         .as("%s pixel (%d, %d) is %s", scene, x, y, colour).isFalse();
             }
         }
     }
 
+    private static boolean hasAChannelAtZero(int rgb) {
+        return (rgb & 0xFF0000) == 0 || (rgb & 0xFF00) == 0 || (rgb & 0xFF) == 0;
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("hardCases")
     void noPixelIsBlackWhereTheTruthIsNot(Path scene) {
-        BufferedImage truth = truth(scene);
-        BufferedImage image = new ReferenceRenderer(WIDTH, HEIGHT).render(load(scene));
+        BufferedImage image = byDefault(scene);
         for (int y = 0; y < HEIGHT; y++) {
             for (int x = 0; x < WIDTH; x++) {
                 if ((image.getRGB(x, y) & 0xFFFFFF) == 0) {
-                    assertThat(truth.getRGB(x, y) & 0xFFFFFF).as("%s pixel (%d, %d) is black", scene, x, y)
+                    assertThat(truth(scene).getRGB(x, y) & 0xFFFFFF).as("%s pixel (%d, %d) is black", scene, x, y)
                             .isLessThanOrEqualTo(0x010101);
                 }
             }

@@ -42,7 +42,9 @@ class OrdinaryScenesTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("ordinaryScenes")
     void theDefaultRendererDrawsEachOrdinarySceneExactlyAsTheHandoutFormula(Path scene) {
-        ImageDifference difference = defaultAgainstHandout(new SceneLoader(scene, false).getScene(), 640, 480);
+        ImageDifference difference = ImageDifference.between(new ReferenceRenderer(GoldenImages.WIDTH,
+                GoldenImages.HEIGHT, Intersection.HANDOUT).render(new SceneLoader(scene, false).getScene()),
+                ReferenceImages.of(scene));
         assertThat(difference.differingPixels()).as("%s: %s", scene, difference.summary()).isZero();
     }
 

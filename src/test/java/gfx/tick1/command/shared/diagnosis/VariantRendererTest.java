@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.engine.image.ImageDifference;
 import gfx.tick1.engine.render.GoldenImages;
+import gfx.tick1.engine.render.ReferenceImages;
 import gfx.tick1.engine.render.ReferenceRenderer;
 import gfx.tick1.engine.scene.BundledScenes;
 import gfx.tick1.engine.scene.Scene;
@@ -28,19 +29,20 @@ class VariantRendererTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void correctVariantIsTheReferenceRendererPixelForPixel(Path file) {
-        Scene scene = new SceneLoader(file, false).getScene();
-        assertSameAsReference(scene, file.toString());
+        assertSameAsReference(ReferenceImages.of(file), new SceneLoader(file, false).getScene(), file.toString());
     }
 
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = {BundledScenes.TICK1, BundledScenes.HIDDEN})
     void correctVariantIsTheReferenceRendererOnTheBundledScenes(String name) {
-        assertSameAsReference(BundledScenes.load(name), name);
+        Scene scene = BundledScenes.load(name);
+        assertSameAsReference(new ReferenceRenderer(GoldenImages.WIDTH, GoldenImages.HEIGHT).render(scene), scene,
+                name);
     }
 
-    private static void assertSameAsReference(Scene scene, String name) {
-        BufferedImage reference = new ReferenceRenderer(640, 480).render(scene);
-        BufferedImage correct = new VariantRenderer(640, 480).render(scene, Variant.CORRECT);
+    private static void assertSameAsReference(BufferedImage reference, Scene scene, String name) {
+        BufferedImage correct = new VariantRenderer(GoldenImages.WIDTH, GoldenImages.HEIGHT).render(scene,
+                Variant.CORRECT);
         ImageDifference difference = ImageDifference.between(reference, correct);
         assertThat(difference.differingPixels()).as("%s: %s", name, difference.summary()).isZero();
     }
