@@ -25,7 +25,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.ValueSource;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * A cohort's grade stopped part way (Ctrl-C, SIGTERM): every student graded whole before the stop
@@ -58,13 +58,13 @@ class GradeCohortStopTest {
     }
 
     /**
-     * The same grade stopped with SIGINT (Ctrl-C) or SIGTERM: one line says it stopped and how
-     * many results it kept, and the report folder and the temporary folder hold nothing
-     * half-written.
+     * A grade stopped with SIGINT (Ctrl-C) or SIGTERM: one line says it stopped and how many
+     * results it kept, and the report folder and the temporary folder hold nothing half-written.
      */
     @ParameterizedTest
-    @ValueSource(strings = {"INT", "TERM"})
-    void aStopSaysInOneLineHowManyResultsAreKeptAndLeavesNothingHalfWritten(String signal) throws Exception {
+    @CsvSource({"INT, 1 of 2", "TERM, 3 of 4"})
+    void aStopSaysInOneLineHowManyResultsAreKeptAndLeavesNothingHalfWritten(String signal, String kept)
+            throws Exception {
         assumeThat(!"INT".equals(signal) || !sigintIgnored()).as("SIGINT is not ignored here (the tests run in "
                 + "the foreground), so the grade's JVM can be stopped with it").isTrue();
 
@@ -72,7 +72,7 @@ class GradeCohortStopTest {
 
         assertThat(stop.said().lines().filter(line -> line.startsWith("tick1 grade: stopped")))
                 .as("what the stopped grade said:\n" + stop.said())
-                .containsExactly("tick1 grade: stopped: the results of 3 of 4 submissions are kept in "
+                .containsExactly("tick1 grade: stopped: the results of " + kept + " submissions are kept in "
                         + stop.report().resolve(CohortCommand.STATE_FOLDER) + "; run the same command again to "
                         + "grade the rest and write the report");
         assertThat(stop.said()).as("what the stopped grade said").doesNotContain("internal error", "Exception");
@@ -137,10 +137,9 @@ class GradeCohortStopTest {
     }
 
     /**
-     * The grade of two correct students, the twin of one, and a slow one, stopped with a signal while the slow one's
-     * code ran, as
-     * it was when it ended: what it said, its exit status, and the names in its state folder and its temporary
-     * folder. The tests that read the same stop share it.
+     * A grade stopped with a signal while a slow student's code ran, as it was when it ended: what it said, its exit
+     * status, and the names in its state folder and its temporary folder. SIGTERM's stop, which three tests read,
+     * is of two correct students, the twin of one, and a slow one; SIGINT's, of a correct student and a slow one.
      */
     private record Stopped(Path zip, Path report, String said, int exitValue, List<String> stateFolder,
             List<String> leftInTemporaryFolder) {
@@ -161,9 +160,11 @@ class GradeCohortStopTest {
             // The sandbox's user passes through the folders above each grade's own (gradeInAJvmOfItsOwn).
             Files.setPosixFilePermissions(stops, PosixFilePermissions.fromString("rwx--x--x"));
             Path folder = Files.createTempDirectory(stops, signal);
-            Path zip = moodleZip(folder.resolve("download.zip"), twoCorrectATwinThenOneSlow());
+            boolean term = "TERM".equals(signal);
+            Path zip = moodleZip(folder.resolve("download.zip"), term ? twoCorrectATwinThenOneSlow()
+                    : List.of(twoCorrectATwinThenOneSlow().get(0), slow("Slow", 102, SLOW_RENDER)));
             Path report = folder.resolve("report");
-            Process grade = stoppedWhileTheThirdRuns(folder, zip, report, signal);
+            Process grade = stoppedWhileTheSlowOneRuns(folder, zip, report, signal, term ? 2 : 1);
             stop = new Stopped(zip, report, Files.readString(folder.resolve("grade.log")), grade.exitValue(),
                     names(report.resolve(CohortCommand.STATE_FOLDER)), names(folder.resolve("tmp")));
             STOPPED.put(signal, stop);
@@ -265,13 +266,14 @@ class GradeCohortStopTest {
 
     /**
      * The grade of {@code zip}, one student at a time, in a JVM of its own whose folder is {@code dir}, stopped
-     * with {@code signal} once the two correct students' results are stored and the slow one's code runs; ended.
+     * with {@code signal} once the correct students' {@code stored} results are stored and the slow one's code
+     * runs; ended.
      */
-    private static Process stoppedWhileTheThirdRuns(Path dir, Path zip, Path report, String signal)
+    private static Process stoppedWhileTheSlowOneRuns(Path dir, Path zip, Path report, String signal, int stored)
             throws Exception {
         Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, "--jobs", "1",
                 TIME_LIMIT[0], TIME_LIMIT[1]));
-        awaitTheSlowCode(dir, grade, report.resolve(CohortCommand.STATE_FOLDER), 2, 1);
+        awaitTheSlowCode(dir, grade, report.resolve(CohortCommand.STATE_FOLDER), stored, 1);
         new ProcessBuilder("/bin/kill", "-" + signal, Long.toString(grade.pid())).start().waitFor();
         assertThat(grade.waitFor(120, TimeUnit.SECONDS)).as("the grade ended").isTrue();
         return grade;
