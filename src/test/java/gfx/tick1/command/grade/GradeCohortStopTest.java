@@ -25,7 +25,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.ValueSource;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * A cohort's grade stopped part way (Ctrl-C, SIGTERM): every student graded whole before the stop
@@ -43,9 +43,9 @@ class GradeCohortStopTest {
     Path dir;
 
     /**
-     * Two correct students, then one whose render waits 15 s, graded one at a time and stopped
-     * while the third's code runs: the first two, graded whole, are kept, and the same command
-     * again grades the third alone.
+     * Two correct students (and the twin of one), then a slow one, graded one at a time and stopped
+     * while the slow one's code runs: the two graded whole are kept, and the same command again
+     * grades the slow one alone.
      */
     @Test
     void aStopKeepsEveryStudentGradedWholeAndTheNextRunGradesOnlyTheRest() throws Exception {
@@ -53,18 +53,18 @@ class GradeCohortStopTest {
 
         assertThat(stop.results()).as("results kept: " + stop.said()).hasSize(2);
         CliRun again = CliRun.of(gradeArguments(stop.zip(), stop.report(), TIME_LIMIT));
-        assertThat(again.out()).as(again.transcript()).contains("(1 now, 2 from earlier runs)");
+        assertThat(again.out()).as(again.transcript()).contains("(1 now, 3 from earlier runs)");
         assertThat(stop.exitValue()).as("the stopped grade's exit status").isNotZero();
     }
 
     /**
-     * The same grade stopped with SIGINT (Ctrl-C) or SIGTERM: one line says it stopped and how
-     * many results it kept, and the report folder and the temporary folder hold nothing
-     * half-written.
+     * A grade stopped with SIGINT (Ctrl-C) or SIGTERM: one line says it stopped and how many
+     * results it kept, and the report folder and the temporary folder hold nothing half-written.
      */
     @ParameterizedTest
-    @ValueSource(strings = {"INT", "TERM"})
-    void aStopSaysInOneLineHowManyResultsAreKeptAndLeavesNothingHalfWritten(String signal) throws Exception {
+    @CsvSource({"INT, 1 of 2", "TERM, 3 of 4"})
+    void aStopSaysInOneLineHowManyResultsAreKeptAndLeavesNothingHalfWritten(String signal, String kept)
+            throws Exception {
         assumeThat(!"INT".equals(signal) || !sigintIgnored()).as("SIGINT is not ignored here (the tests run in "
                 + "the foreground), so the grade's JVM can be stopped with it").isTrue();
 
@@ -72,7 +72,7 @@ class GradeCohortStopTest {
 
         assertThat(stop.said().lines().filter(line -> line.startsWith("tick1 grade: stopped")))
                 .as("what the stopped grade said:\n" + stop.said())
-                .containsExactly("tick1 grade: stopped: the results of 2 of 3 submissions are kept in "
+                .containsExactly("tick1 grade: stopped: the results of " + kept + " submissions are kept in "
                         + stop.report().resolve(CohortCommand.STATE_FOLDER) + "; run the same command again to "
                         + "grade the rest and write the report");
         assertThat(stop.said()).as("what the stopped grade said").doesNotContain("internal error", "Exception");
@@ -81,26 +81,17 @@ class GradeCohortStopTest {
     }
 
     /**
-     * A correct student, a twin with the same files (graded once, for both), and a slow one, stopped while the slow
-     * one's code runs: the twin's result is kept with the one it shares, and the stop line counts both.
+     * The twin of a correct student (the same files, graded once, for both) is kept with the result it shares, and
+     * the stop line counts both: two results stored, three submissions kept.
      */
     @Test
     void aStopCountsTheTwinOfAStudentGradedWholeAsKept() throws Exception {
-        StudentSolution correct = StudentSolution.correct();
-        List<Student> students = new ArrayList<>(List.of(new Student("Correct 0", 100, files(correct), true),
-                new Student("Correct 1", 101, files(correct), true)));
-        students.add(twoCorrectThenOneSlow().get(2));
-        Path report = dir.resolve("report");
-        Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(moodleZip(dir.resolve("twins.zip"),
-                students), report, "--jobs", "1", TIME_LIMIT[0], TIME_LIMIT[1]));
-        awaitTheSlowCode(dir, grade, report.resolve(CohortCommand.STATE_FOLDER), 1);
+        Stopped stop = stopped("TERM");
 
-        grade.destroy();   // SIGTERM
-        assertThat(grade.waitFor(120, TimeUnit.SECONDS)).as("the grade ended").isTrue();
-
-        String said = Files.readString(dir.resolve("grade.log"));
-        assertThat(said.lines().filter(line -> line.startsWith("tick1 grade: stopped"))).as(said).singleElement()
-                .asString().startsWith("tick1 grade: stopped: the results of 2 of 3 submissions are kept");
+        assertThat(stop.results()).as("results stored: " + stop.said()).hasSize(2);
+        assertThat(stop.said().lines().filter(line -> line.startsWith("tick1 grade: stopped"))).as(stop.said())
+                .singleElement().asString().startsWith("tick1 grade: stopped: the results of 3 of 4 submissions are "
+                        + "kept");
     }
 
     /**
@@ -113,7 +104,8 @@ class GradeCohortStopTest {
                 + "JVM can be stopped with it").isTrue();
         SlowBubblewrap bubblewrap = SlowBubblewrap.in(dir);
         Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, List.of(bubblewrap.jvmOption()),
-                gradeArguments(moodleZip(dir.resolve("download.zip"), twoCorrectThenOneSlow()), dir.resolve("report")));
+                gradeArguments(moodleZip(dir.resolve("download.zip"), List.of(slow("Slow", 102, SLOW_RENDER))),
+                        dir.resolve("report")));
         bubblewrap.awaitBegun(grade);
         List<ProcessHandle> waiting = grade.descendants().toList();
 
@@ -132,10 +124,10 @@ class GradeCohortStopTest {
      */
     @Test
     void theStoppedLineIsTheLastLineTheGradePrints() throws Exception {
-        Path zip = moodleZip(dir.resolve("download.zip"), twoCorrectThenOneSlow());
+        Path zip = moodleZip(dir.resolve("download.zip"), List.of(slow("Slow", 102, SLOW_RENDER)));
         Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, List.of("-Dtick1.grade.outputDisks=host"),
                 gradeArguments(zip, dir.resolve("report"), "--jobs", "1", TIME_LIMIT[0], TIME_LIMIT[1]));
-        awaitTheSlowCode(dir, grade, dir.resolve("report").resolve(CohortCommand.STATE_FOLDER), 2);
+        awaitTheSlowCode(dir, grade, dir.resolve("report").resolve(CohortCommand.STATE_FOLDER), 0, 1);
         new ProcessBuilder("/bin/kill", "-TERM", Long.toString(grade.pid())).start().waitFor();
         assertThat(grade.waitFor(120, TimeUnit.SECONDS)).as("the grade ended").isTrue();
 
@@ -145,9 +137,9 @@ class GradeCohortStopTest {
     }
 
     /**
-     * The grade of two correct students and a slow one, stopped with a signal while the slow one's code ran, as
-     * it was when it ended: what it said, its exit status, and the names in its state folder and its temporary
-     * folder. The tests that read the same stop share it.
+     * A grade stopped with a signal while a slow student's code ran, as it was when it ended: what it said, its exit
+     * status, and the names in its state folder and its temporary folder. SIGTERM's stop, which three tests read,
+     * is of two correct students, the twin of one, and a slow one; SIGINT's, of a correct student and a slow one.
      */
     private record Stopped(Path zip, Path report, String said, int exitValue, List<String> stateFolder,
             List<String> leftInTemporaryFolder) {
@@ -168,9 +160,11 @@ class GradeCohortStopTest {
             // The sandbox's user passes through the folders above each grade's own (gradeInAJvmOfItsOwn).
             Files.setPosixFilePermissions(stops, PosixFilePermissions.fromString("rwx--x--x"));
             Path folder = Files.createTempDirectory(stops, signal);
-            Path zip = moodleZip(folder.resolve("download.zip"), twoCorrectThenOneSlow());
+            boolean term = "TERM".equals(signal);
+            Path zip = moodleZip(folder.resolve("download.zip"), term ? twoCorrectATwinThenOneSlow()
+                    : List.of(twoCorrectATwinThenOneSlow().get(0), slow("Slow", 102, SLOW_RENDER)));
             Path report = folder.resolve("report");
-            Process grade = stoppedWhileTheThirdRuns(folder, zip, report, signal);
+            Process grade = stoppedWhileTheSlowOneRuns(folder, zip, report, signal, term ? 2 : 1);
             stop = new Stopped(zip, report, Files.readString(folder.resolve("grade.log")), grade.exitValue(),
                     names(report.resolve(CohortCommand.STATE_FOLDER)), names(folder.resolve("tmp")));
             STOPPED.put(signal, stop);
@@ -185,23 +179,31 @@ class GradeCohortStopTest {
     }
 
     /**
-     * A grade killed with SIGKILL while the slow student's code runs, two jobs at a time, leaves its
-     * work folder, the tmpfs of that run and of each job's compiler, and control groups: the next
-     * grade, with the same temporary folder, removes them all before it grades.
+     * A grade killed with SIGKILL while two slow students' code runs, two jobs at a time, leaves its
+     * work folder, the tmpfs of those runs and of each job's compiler, and control groups: the next
+     * grade, with the same temporary folder (of another download), removes them all before it grades.
      */
     @Test
     void whatAKilledGradeLeftIsRemovedByTheNextGrade() throws Exception {
-        Path zip = moodleZip(dir.resolve("download.zip"), twoCorrectThenOneSlow());
+        // Never waited out: the grade is killed while both wait.
+        List<Student> slow = List.of(slow("Slow 0", 200, KILLED_RENDER), slow("Slow 1", 201, KILLED_RENDER));
+        Path zip = moodleZip(dir.resolve("download.zip"), slow);
         Path report = dir.resolve("report");
         Process killed = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, "--jobs", "2",
                 TIME_LIMIT[0], TIME_LIMIT[1]));
-        awaitTheSlowCode(dir, killed, report.resolve(CohortCommand.STATE_FOLDER), 2);
+        awaitTheSlowCode(dir, killed, report.resolve(CohortCommand.STATE_FOLDER), 0, 2);
         killed.destroyForcibly().waitFor();
         try (Stream<Path> left = Files.list(dir.resolve("tmp"))) {
             assertThat(left).as("what the killed grade left in its temporary folder").isNotEmpty();
         }
 
-        Process next = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, TIME_LIMIT));
+        // Its one student's Renderer.java is missing: nothing is run, and what the grade removes is all it does.
+        Map<String, byte[]> sphereAlone = new HashMap<>(files(StudentSolution.correct()));
+        sphereAlone.remove("Renderer.java");
+        Path another = moodleZip(dir.resolve("another.zip"), List.of(new Student("Missing Renderer", 100, sphereAlone,
+                false)));
+        Process next = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(another, dir.resolve("another"),
+                "--no-lookalikes"));
         assertThat(next.waitFor(300, TimeUnit.SECONDS)).as("the next grade ended").isTrue();
 
         String said = Files.readString(dir.resolve("grade.log"));
@@ -227,44 +229,65 @@ class GradeCohortStopTest {
     }
 
     /**
-     * Two correct students, then one whose render waits 15 s, once in each JVM that runs it: time enough to stop
-     * the grade while its code runs, and a run after the stop that passes it soon.
+     * How long a slow student's render of tick1.xml waits, in seconds: long enough to stop a grade of one student at
+     * a time while it runs, which the test does as soon as it runs; and the one wait of a run after the stop.
      */
-    private static List<Student> twoCorrectThenOneSlow() {
+    private static final int SLOW_RENDER = 5;
+    /** As long, for two jobs' slow students to run at once however far apart they begin: never waited out. */
+    private static final int KILLED_RENDER = 40;
+
+    /** Two correct students, the twin of the first (the same files), then a slow one. */
+    private static List<Student> twoCorrectATwinThenOneSlow() {
         List<Student> students = new ArrayList<>();
         for (int i = 0; i < 2; i++) {
-            students.add(new Student("Correct " + i, 100 + i, files(StudentSolution.correct()
-                    .editRenderer("return image;", "return image; // " + i)), true));
+            Map<String, byte[]> own = files(StudentSolution.correct().editRenderer("return image;",
+                    "return image; // " + i));
+            students.add(new Student("Correct " + i, 100 + i, own, true));
+            if (i == 0) {
+                students.add(new Student("Correct 0 Again", 110, own, true));
+            }
         }
-        students.add(new Student("Slow", 102, files(StudentSolution.correct()
-                .editRenderer("public class Renderer {", "public class Renderer {\n    private static boolean waited;")
-                .editRenderer("return image;", "if (!waited) { waited = true; try { Thread.sleep(15_000); } "
-                        + "catch (InterruptedException e) { } } return image;")), true));
+        students.add(slow("Slow", 102, SLOW_RENDER));
         return students;
     }
 
     /**
-     * The grade of {@code zip}, one student at a time, in a JVM of its own whose folder is {@code dir}, stopped
-     * with {@code signal} once the two correct students' results are stored and the slow one's code runs; ended.
+     * A student whose render of tick1.xml waits {@code seconds}, once in each JVM that runs it, and then passes; the
+     * render of the hidden scene does not wait (tick1.xml's light is right of the camera, the hidden scene's left).
      */
-    private static Process stoppedWhileTheThirdRuns(Path dir, Path zip, Path report, String signal)
+    private static Student slow(String name, int id, int seconds) {
+        return new Student(name, id, files(StudentSolution.correct()
+                .editRenderer("public class Renderer {", "public class Renderer {\n    // " + name
+                        + "\n    private static boolean waited;")
+                .editRenderer("return image;", "if (!waited && scene.getPointLight().getPosition().x > 0) { "
+                        + "waited = true; try { Thread.sleep(" + seconds * 1000 + "); } "
+                        + "catch (InterruptedException e) { } } return image;")), true);
+    }
+
+    /**
+     * The grade of {@code zip}, one student at a time, in a JVM of its own whose folder is {@code dir}, stopped
+     * with {@code signal} once the correct students' {@code stored} results are stored and the slow one's code
+     * runs; ended.
+     */
+    private static Process stoppedWhileTheSlowOneRuns(Path dir, Path zip, Path report, String signal, int stored)
             throws Exception {
         Process grade = GradeCohortTest.gradeInAJvmOfItsOwn(dir, gradeArguments(zip, report, "--jobs", "1",
                 TIME_LIMIT[0], TIME_LIMIT[1]));
-        awaitTheSlowCode(dir, grade, report.resolve(CohortCommand.STATE_FOLDER), 2);
+        awaitTheSlowCode(dir, grade, report.resolve(CohortCommand.STATE_FOLDER), stored, 1);
         new ProcessBuilder("/bin/kill", "-" + signal, Long.toString(grade.pid())).start().waitFor();
         assertThat(grade.waitFor(120, TimeUnit.SECONDS)).as("the grade ended").isTrue();
         return grade;
     }
 
     /**
-     * Waits (at most two minutes) for {@code stored} results to be stored (the correct students') and the
-     * slow student's code to run.
+     * Waits (at most two minutes) for {@code stored} results to be stored (the correct students') and {@code slow}
+     * slow students' code to run: as many JVMs (not the bubblewrap around each) that run the harness's render.
      */
-    private static void awaitTheSlowCode(Path dir, Process grade, Path state, int stored) throws IOException,
-            InterruptedException {
+    private static void awaitTheSlowCode(Path dir, Process grade, Path state, int stored, int slow)
+            throws IOException, InterruptedException {
         for (int i = 0; i < 1200 && grade.isAlive() && !(storedResults(state) == stored && grade.descendants()
-                .anyMatch(p -> p.info().commandLine().orElse("").contains("StudentHarness render"))); i++) {
+                .map(p -> p.info().commandLine().orElse("")).filter(line -> line.contains("StudentHarness render")
+                        && line.split(" ", 2)[0].endsWith("/java")).count() >= slow); i++) {
             Thread.sleep(100);
         }
         assertThat(grade.isAlive()).as("the grade runs: " + Files.readString(dir.resolve("grade.log"))).isTrue();
