@@ -97,7 +97,7 @@ final class Words {
         return switch (how) {
             case "null" -> "null";
             case "threw" -> "an exception";
-            case "timeout" -> "no answer within half a second of processor time, or 10 s in all";
+            case "timeout" -> "no answer within half a second";
             case "absent" -> "nothing: there is no illuminate(Scene, Sphere, Vector3, Vector3) returning a Vector3";
             default -> "no answer (the call did not return in time, or the run stopped before it)";
         };

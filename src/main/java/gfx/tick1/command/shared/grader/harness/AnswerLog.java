@@ -70,11 +70,11 @@ public final class AnswerLog {
                 return;
             }
             for (BehaviourInputs.IntersectionCall call : BehaviourInputs.INTERSECTIONS) {
-                lines.write(call.name(), Bounded.call(() -> intersect(call), CALL_MILLIS));
+                lines.write(call.name(), Bounded.RUN.call(() -> intersect(call), CALL_MILLIS));
             }
             for (BehaviourInputs.IlluminationCall call : BehaviourInputs.ILLUMINATIONS) {
                 lines.write(call.name(), api.hasIlluminate()
-                        ? Bounded.call(() -> illuminate(call, Phong.FIXED), CALL_MILLIS)
+                        ? Bounded.RUN.call(() -> illuminate(call, Phong.FIXED), CALL_MILLIS)
                         : new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
             }
             batch(lines, BehaviourInputs.RANDOM_INTERSECTIONS, call -> intersect(call));
@@ -114,7 +114,7 @@ public final class AnswerLog {
      */
     private static <T extends Record> void batch(Lines lines, List<T> calls, Call<T> answer) {
         AtomicBoolean open = new AtomicBoolean(true);
-        Bounded.call(() -> {
+        Bounded.RUN.call(() -> {
             for (T call : calls) {
                 String said;
                 try {

@@ -9,20 +9,26 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 
 /**
- * Runs a piece of the student's code in a thread of its own for at most a given time, so that
- * one call that loops or throws fails alone and the harness goes on. A thread that does not
+ * Runs pieces of the student's code, each in a thread of its own for at most a given time, so
+ * that one call that loops or throws fails alone and the harness goes on. A thread that does not
  * return is left running (Java cannot stop it); the harness halts the JVM when it is done.
  *
- * <p>The time is the thread's processor time, not the clock's: on a busy machine a correct call
- * can wait for a core longer than it works, and "no answer" must mean the code itself did not
- * return. Code that waits without working (a sleep, a lock) is stopped by the clock instead,
- * {@link #CLOCK_SLACK_MILLIS} after the limit. The thread's processor time is read only once the
- * clock has passed the limit, so a call that returns in time costs nothing more.
+ * <p>On a busy machine a correct call can wait for a core longer than it works, and "no answer"
+ * must mean that the code did not return, not that the machine was slow. So a call past its limit
+ * by the clock that has not yet had that much processor time goes on, drawing on spare clock time
+ * that all the calls of a run share: a run's calls together can outlast their limits by no more
+ * than that, whatever the code does (waits, sleeps, or leaves work to threads of its own). Once a
+ * call is stopped, the run has no spare time left: its threads still run beside the later calls,
+ * which then get the clock's limit alone, as a call that waits on such threads would never have
+ * the processor time. The thread's processor time is read only once the clock has passed the limit,
+ * so a call that returns in time costs nothing more.
  */
 final class Bounded {
 
-    /** How much longer than the limit a call may take by the clock, working or not. */
-    static final long CLOCK_SLACK_MILLIS = 10_000;
+    /** The spare clock time of one run of the harness: well inside the shortest time limit of a run. */
+    static final long RUN_SPARE_MILLIS = 5_000;
+    /** The calls of this JVM's run. */
+    static final Bounded RUN = new Bounded(RUN_SPARE_MILLIS);
     /** How often a call past its limit by the clock has its processor time read again. */
     private static final long POLL_MILLIS = 20;
 
@@ -33,32 +39,37 @@ final class Bounded {
     record Outcome<T>(Ending ending, T value) {
     }
 
-    private Bounded() {
+    /** The spare clock time left to the calls, in nanoseconds. */
+    private long spareNanos;
+
+    /** Calls that share {@code spareMillis} of clock time beyond their limits. */
+    Bounded(long spareMillis) {
+        spareNanos = TimeUnit.MILLISECONDS.toNanos(spareMillis);
     }
 
-    static <T> Outcome<T> call(Callable<T> work, long millis) {
-        return call(work, millis, millis + CLOCK_SLACK_MILLIS);
-    }
-
-    /** As {@link #call(Callable, long)}, stopping code that waits without working at {@code clockMillis}. */
-    static <T> Outcome<T> call(Callable<T> work, long millis, long clockMillis) {
+    /** Runs {@code work}, for at most {@code millis} of its thread's processor time (see above). */
+    synchronized <T> Outcome<T> call(Callable<T> work, long millis) {
         FutureTask<T> task = new FutureTask<>(work);
         Thread thread = new Thread(task, "probe");
         thread.setDaemon(true);
-        long start = System.nanoTime();
         thread.start();
-        long limit = TimeUnit.MILLISECONDS.toNanos(millis), clockLimit = TimeUnit.MILLISECONDS.toNanos(clockMillis);
+        long limit = TimeUnit.MILLISECONDS.toNanos(millis);
         try {
             try {
                 return new Outcome<>(Ending.RETURNED, task.get(millis, TimeUnit.MILLISECONDS));
-            } catch (TimeoutException e) {
-                while (!working(thread, limit) && System.nanoTime() - start < clockLimit) {
+            } catch (TimeoutException pastTheClock) {
+                while (spareNanos > 0 && !task.isDone() && !working(thread, limit)) {
+                    long waited = System.nanoTime();
                     try {
                         return new Outcome<>(Ending.RETURNED, task.get(POLL_MILLIS, TimeUnit.MILLISECONDS));
                     } catch (TimeoutException stillRunning) {
-                        // read its processor time again
+                        spareNanos -= System.nanoTime() - waited;
                     }
                 }
+                if (task.isDone()) {
+                    return new Outcome<>(Ending.RETURNED, task.get());
+                }
+                spareNanos = 0;
                 return new Outcome<>(Ending.TIMED_OUT, null);
             }
         } catch (ExecutionException e) {
@@ -71,7 +82,7 @@ final class Bounded {
 
     /**
      * Whether {@code thread} has had at least {@code limit} nanoseconds of processor time: true too where the JVM
-     * cannot tell, so that the clock's limit is the limit there, as it always was.
+     * cannot tell, so that the clock's limit is the limit there.
      */
     private static boolean working(Thread thread, long limit) {
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();

@@ -40,7 +40,7 @@ public final class SampleTrace {
 
     /** Traces the samples of {@code scene} (a starter Scene) and writes them to {@code file}. */
     static void trace(StarterApi api, Object scene, int width, int height, Path file) throws IOException {
-        Bounded.Outcome<String> outcome = Bounded.call(() -> lines(api, scene, width, height), SCENE_MILLIS);
+        Bounded.Outcome<String> outcome = Bounded.RUN.call(() -> lines(api, scene, width, height), SCENE_MILLIS);
         if (outcome.ending() == Bounded.Ending.RETURNED) {
             Files.writeString(file, outcome.value(), StandardCharsets.UTF_8);
         }

@@ -2,19 +2,26 @@ package gfx.tick1.command.shared.grader.harness;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicBoolean;
 import org.junit.jupiter.api.Test;
 
-/** A bounded call of the student's code: "no answer" means the code worked past its limit, not that it waited. */
+/**
+ * Bounded calls of the student's code: "no answer" means the code worked past its limit, or waited past its limit
+ * and the run's spare time, not that the machine was slow.
+ */
 class BoundedTest {
 
     private static final long LIMIT_MILLIS = 100;
+    /** Spare time enough for every call below that waits and then returns. */
+    private static final long SPARE_MILLIS = 5_000;
 
     @Test
     void aCallThatWaitsLongerThanItsLimitWithoutWorkingStillGivesItsAnswer() {
         // As a correct call does on a busy machine: it waits for a core longer than it works.
-        Bounded.Outcome<String> outcome = Bounded.call(() -> {
+        Bounded.Outcome<String> outcome = new Bounded(SPARE_MILLIS).call(() -> {
             Thread.sleep(3 * LIMIT_MILLIS);
             return "answer";
         }, LIMIT_MILLIS);
@@ -24,9 +31,24 @@ class BoundedTest {
     }
 
     @Test
+    void everyCallThatReturnsAsItsLimitPassesGivesItsAnswer() {
+        Bounded bounded = new Bounded(SPARE_MILLIS);
+        List<Bounded.Ending> endings = new ArrayList<>();
+        for (int call = 0; call < 1000; call++) {
+            endings.add(bounded.call(() -> {
+                Thread.sleep(1);
+                return "answer";
+            }, 1).ending());
+        }
+
+        assertThat(endings).as("1000 calls that each return about when their limit passes")
+                .containsOnly(Bounded.Ending.RETURNED);
+    }
+
+    @Test
     void aCallThatWorksPastItsLimitHasNoAnswer() {
         AtomicBoolean over = new AtomicBoolean();
-        Bounded.Outcome<String> outcome = Bounded.call(() -> {
+        Bounded.Outcome<String> outcome = new Bounded(SPARE_MILLIS).call(() -> {
             long spins = 0;
             while (!over.get()) {
                 spins++;
@@ -39,20 +61,38 @@ class BoundedTest {
     }
 
     @Test
-    void aCallThatWaitsWithoutEndHasNoAnswer() {
+    void aCallThatWaitsLongerThanTheRunsSpareTimeHasNoAnswer() {
+        Bounded.Outcome<String> outcome = new Bounded(2 * LIMIT_MILLIS).call(() -> {
+            Thread.sleep(10 * LIMIT_MILLIS);
+            return "too late";
+        }, LIMIT_MILLIS);
+
+        assertThat(outcome.ending()).as("a call that waited past its limit and all the spare time")
+                .isEqualTo(Bounded.Ending.TIMED_OUT);
+    }
+
+    @Test
+    void afterACallIsStoppedTheRunsLaterCallsHaveNoSpareTime() {
+        Bounded bounded = new Bounded(5 * LIMIT_MILLIS);
         CountDownLatch over = new CountDownLatch(1);
-        Bounded.Outcome<String> outcome = Bounded.call(() -> {
+        Bounded.Outcome<String> stopped = bounded.call(() -> {
             over.await();
             return "after the test";
-        }, LIMIT_MILLIS, 5 * LIMIT_MILLIS);
+        }, LIMIT_MILLIS);
         over.countDown();
+        Bounded.Outcome<String> later = bounded.call(() -> {
+            Thread.sleep(3 * LIMIT_MILLIS);
+            return "answer";
+        }, LIMIT_MILLIS);
 
-        assertThat(outcome.ending()).as("a call that waits without end").isEqualTo(Bounded.Ending.TIMED_OUT);
+        assertThat(stopped.ending()).as("a call that waits without end").isEqualTo(Bounded.Ending.TIMED_OUT);
+        assertThat(later.ending()).as("a later call that waits three times its limit")
+                .isEqualTo(Bounded.Ending.TIMED_OUT);
     }
 
     @Test
     void aCallThatThrowsIsToldAsThrowing() {
-        Bounded.Outcome<String> outcome = Bounded.call(() -> {
+        Bounded.Outcome<String> outcome = new Bounded(SPARE_MILLIS).call(() -> {
             throw new IllegalStateException("the student's exception");
         }, LIMIT_MILLIS);
 
