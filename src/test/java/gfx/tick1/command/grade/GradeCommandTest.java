@@ -41,11 +41,11 @@ class GradeCommandTest {
 
     /**
      * Where the grades that several tests read are made, each in a folder of its own: {@link #twoMistakes},
-     * {@link #correctOnTheCoursesScenes} and {@link #correctOnManyScenes}.
+     * {@link #twoMistakesWithoutTheSandbox}, {@link #correctOnTheCoursesScenes} and {@link #correctOnManyScenes}.
      */
     @TempDir
     static Path shared;
-    private static CliRun twoMistakes, correctOnTheCoursesScenes, correctOnManyScenes;
+    private static CliRun twoMistakes, twoMistakesWithoutTheSandbox, correctOnTheCoursesScenes, correctOnManyScenes;
 
     /** Two mistakes in two methods: N.L left unclamped in illuminate, the far root taken in intersectionWith. */
     private static final StudentSolution TWO_MISTAKES = StudentSolution.correct()
@@ -431,13 +431,31 @@ class GradeCommandTest {
         assertThat(run.out()).contains("giant-floor-1e16.xml: FAIL");
     }
 
+    /**
+     * The grade, in {@link #shared}/no-sandbox, of {@link #TWO_MISTAKES} with --no-sandbox: graded once, on first
+     * use, for the tests that read what it printed and wrote.
+     */
+    private static synchronized CliRun twoMistakesWithoutTheSandbox() throws IOException {
+        if (twoMistakesWithoutTheSandbox == null) {
+            twoMistakesWithoutTheSandbox = grade(shared.resolve("no-sandbox"), TWO_MISTAKES, "--no-sandbox");
+        }
+        return twoMistakesWithoutTheSandbox;
+    }
+
+    /** What {@code run} printed, with {@code folder} (which holds its student's files and report) as FOLDER. */
+    private static String outFrom(Path folder, CliRun run) {
+        return run.out().replace(folder.toString(), "FOLDER");
+    }
+
     @Test
     void withoutTheSandboxTheGradeWarnsAndStillGrades() throws IOException {
-        CliRun run = grade(StudentSolution.correct(), "--no-sandbox");
-        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
-        assertThat(run.err().lines()).singleElement().asString()
+        CliRun run = twoMistakesWithoutTheSandbox();
+        assertThat(run.err().lines()).as(run.transcript()).singleElement().asString()
                 .startsWith("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions")
                 .as("the one line says what still limits the code").contains("limited only in time", "heap");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(outFrom(shared.resolve("no-sandbox"), run)).as("the report, to the word as the sandbox's grade's")
+                .isEqualTo(outFrom(shared.resolve("two-mistakes"), twoMistakes()));
     }
 
     /** A file as a Windows editor may save it: a UTF-8 byte-order mark, then CRLF line ends. */
@@ -448,8 +466,8 @@ class GradeCommandTest {
     /**
      * A solution with mistakes, as a student on Windows keeps it (saved by a Windows editor, in a folder
      * whose name has spaces and a letter beyond ASCII), is graded as the same files saved plainly, to
-     * the word: with the sandbox where it can be made (the plain files' grade is {@link #twoMistakes}), and
-     * with --no-sandbox anywhere.
+     * the word: with the sandbox where it can be made, and with --no-sandbox anywhere (the plain files' grades
+     * are {@link #twoMistakes} and {@link #twoMistakesWithoutTheSandbox}).
      */
     @org.junit.jupiter.params.ParameterizedTest(name = "{0}")
     @org.junit.jupiter.params.provider.ValueSource(strings = {"in the sandbox", "--no-sandbox"})
@@ -464,19 +482,18 @@ class GradeCommandTest {
                 org.junit.jupiter.api.Assumptions.abort("the sandbox cannot be made here: " + e.getMessage());
             }
         }
-        Path plain = sandboxed ? shared.resolve("two-mistakes") : dir.resolve("plain");
+        Path plain = shared.resolve(sandboxed ? "two-mistakes" : "no-sandbox");
         Path windows = dir.resolve("Tick 1 (copy) Zoë");
         StudentSolution saved = new StudentSolution(savedOnWindows(TWO_MISTAKES.sphere()),
                 savedOnWindows(TWO_MISTAKES.renderer()));
         assertThat(saved.sphere()).startsWith("\uFEFF").contains("\r\n");
         String[] options = sandboxed ? new String[0] : new String[] {"--no-sandbox"};
-        CliRun asPlain = sandboxed ? twoMistakes() : grade(plain, TWO_MISTAKES, options);
+        CliRun asPlain = sandboxed ? twoMistakes() : twoMistakesWithoutTheSandbox();
         CliRun asSaved = grade(windows, saved, options);
         assertThat(asPlain.status()).as(asPlain.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
         assertThat(asPlain.out()).as(asPlain.transcript()).contains("tick1.xml: FAIL");
         assertThat(asSaved.status()).as(asSaved.transcript()).isEqualTo(asPlain.status());
-        assertThat(asSaved.out().replace(windows.toString(), "FOLDER")).as(asSaved.transcript())
-                .isEqualTo(asPlain.out().replace(plain.toString(), "FOLDER"));
+        assertThat(outFrom(windows, asSaved)).as(asSaved.transcript()).isEqualTo(outFrom(plain, asPlain));
         assertThat(Files.list(windows.resolve("report")).map(file -> file.getFileName().toString()).sorted().toList())
                 .as("the images of the failing scene, in the report folder of that name")
                 .isEqualTo(Files.list(plain.resolve("report")).map(file -> file.getFileName().toString()).sorted()
