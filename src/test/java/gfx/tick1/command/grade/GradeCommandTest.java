@@ -39,10 +39,17 @@ class GradeCommandTest {
     @TempDir
     Path dir;
 
-    /** Where the one grade that several tests read is made: see {@link #unclampedNdotL}. */
+    /**
+     * Where the grades that several tests read are made, each in a folder of its own: {@link #twoMistakes},
+     * {@link #twoMistakesWithoutTheSandbox}, {@link #correctOnTheCoursesScenes} and {@link #correctOnManyScenes}.
+     */
     @TempDir
     static Path shared;
-    private static CliRun unclampedNdotL;
+    private static CliRun twoMistakes, twoMistakesWithoutTheSandbox, correctOnTheCoursesScenes, correctOnManyScenes;
+
+    /** Two mistakes in two methods: N.L left unclamped in illuminate, the far root taken in intersectionWith. */
+    private static final StudentSolution TWO_MISTAKES = StudentSolution.correct()
+            .editRenderer(DIFFUSE, "k_d * NdotL").editSphere(NEAR_ROOT, "double s = s2;");
 
     private CliRun grade(StudentSolution solution, String... options) throws IOException {
         return grade(dir, solution, options);
@@ -58,9 +65,30 @@ class GradeCommandTest {
         return CliRun.of(args.toArray(String[]::new));
     }
 
+    /**
+     * The grade, in {@link #shared}/courses-scenes, of the correct solution on the course's scenes, into a report
+     * folder as a failing grade ({@link #twoMistakes}) left it, with the organiser's own notes.txt beside its
+     * images: graded once, on first use, for the tests that read what it printed and left in the folder.
+     */
+    private static synchronized CliRun correctOnTheCoursesScenes() throws IOException {
+        if (correctOnTheCoursesScenes == null) {
+            assertThat(twoMistakes().status()).isEqualTo(GradeCommand.EXIT_FAIL);
+            Path report = Files.createDirectories(shared.resolve("courses-scenes").resolve("report"));
+            try (Stream<Path> earlier = Files.list(shared.resolve("two-mistakes").resolve("report"))) {
+                for (Path image : earlier.toList()) {
+                    Files.copy(image, report.resolve(image.getFileName()));
+                }
+            }
+            assertThat(report.resolve("1-tick1-diff.png")).exists();
+            Files.writeString(report.resolve("notes.txt"), "the organiser's own file");
+            correctOnTheCoursesScenes = grade(shared.resolve("courses-scenes"), StudentSolution.correct());
+        }
+        return correctOnTheCoursesScenes;
+    }
+
     @Test
     void theCorrectSolutionPassesWithTheCoursesWords() throws IOException {
-        CliRun run = grade(StudentSolution.correct());
+        CliRun run = correctOnTheCoursesScenes();
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
         assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS")
                 .endsWith(SubmissionGrader.CONGRATULATIONS + System.lineSeparator());
@@ -136,19 +164,37 @@ class GradeCommandTest {
         assertThat(run.out()).contains("tick1.xml: PASS", "hidden.xml: PASS");
     }
 
+    /**
+     * The grade, in {@link #shared}/many-scenes, of the correct solution on a --scenes folder that holds every
+     * scene of the project's scenes folder, the hard scene giant-floor-1e16.xml and a scene of defaults
+     * (defaults.xml): graded once, on first use, for the tests that each read the lines of their scenes.
+     */
+    private static synchronized CliRun correctOnManyScenes() throws IOException {
+        if (correctOnManyScenes == null) {
+            Path scenes = Files.createDirectories(shared.resolve("many-scenes").resolve("scenes"));
+            try (Stream<Path> project = Files.list(Path.of("scenes"))) {
+                for (Path scene : project.filter(f -> f.toString().endsWith(".xml")).toList()) {
+                    Files.copy(scene, scenes.resolve(scene.getFileName()));
+                }
+            }
+            Files.copy(Path.of("scenes/hard/giant-floor-1e16.xml"), scenes.resolve("giant-floor-1e16.xml"));
+            Files.writeString(scenes.resolve("defaults.xml"), DEFAULTS_NESTING_AND_TWO_LIGHTS);
+            correctOnManyScenes = grade(shared.resolve("many-scenes"), StudentSolution.correct(), "--scenes",
+                    scenes.toString());
+        }
+        return correctOnManyScenes;
+    }
+
     @Test
     void theCorrectSolutionPassesOnEverySceneOfTheProject() throws IOException {
-        CliRun run = grade(StudentSolution.correct(), "--scenes", "scenes");
+        CliRun run = correctOnManyScenes();
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
         assertThat(run.out()).contains("scenes/hundred-spheres.xml: PASS", "scenes/no-ambient.xml: PASS")
                 .doesNotContain("FAIL");
     }
 
-    /** The starter SceneLoader must read what the reference loader reads, defaults included. */
-    @Test
-    void theStarterLoaderReadsDefaultsNestingAndTheLastLightAsTheReferenceDoes() throws IOException {
-        Path scenes = Files.createDirectories(dir.resolve("scenes"));
-        Files.writeString(scenes.resolve("defaults.xml"), """
+    /** A scene that leaves most attributes to their defaults, nests a sphere in another and has two lights. */
+    private static final String DEFAULTS_NESTING_AND_TWO_LIGHTS = """
                 <scene>
                   <point-light x="2" y="2" colour="#FF0000"/>
                   <sphere z="5" colour="#00FF00">
@@ -156,10 +202,13 @@ class GradeCommandTest {
                   </sphere>
                   <point-light x="-1" y="3" z="1" colour="#FFFFFF" intensity="80"/>
                 </scene>
-                """);
-        CliRun run = grade(StudentSolution.correct(), "--scenes", scenes.toString());
-        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
-        assertThat(run.out()).contains("defaults.xml: PASS");
+                """;
+
+    /** The starter SceneLoader must read what the reference loader reads, defaults included. */
+    @Test
+    void theStarterLoaderReadsDefaultsNestingAndTheLastLightAsTheReferenceDoes() throws IOException {
+        CliRun run = correctOnManyScenes();
+        assertThat(run.out()).as(run.transcript()).contains("scenes/defaults.xml: PASS");
     }
 
     @Test
@@ -185,8 +234,7 @@ class GradeCommandTest {
 
     @Test
     void twoMistakesInTwoMethodsAreEachNamedByTheirModels() throws IOException {
-        CliRun run = grade(StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL")
-                .editSphere(NEAR_ROOT, "double s = s2;"));
+        CliRun run = twoMistakes();
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
         assertThat(run.out().lines().filter(line -> line.startsWith("  behaviour: ")).toList()).as(run.transcript())
                 .satisfiesExactly(
@@ -244,23 +292,24 @@ class GradeCommandTest {
     }
 
     /**
-     * The grade, in {@link #shared}, of a solution whose illuminate leaves N.L unclamped, which fails
-     * both scenes: graded once, on first use, for the tests that read what it printed and wrote.
+     * The grade, in {@link #shared}/two-mistakes, of {@link #TWO_MISTAKES}, which fails both scenes: graded once,
+     * on first use, for the tests that read what it printed and wrote.
      */
-    private static synchronized CliRun unclampedNdotL() throws IOException {
-        if (unclampedNdotL == null) {
-            unclampedNdotL = grade(shared, StudentSolution.correct().editRenderer(DIFFUSE, "k_d * NdotL"));
+    private static synchronized CliRun twoMistakes() throws IOException {
+        if (twoMistakes == null) {
+            twoMistakes = grade(shared.resolve("two-mistakes"), TWO_MISTAKES);
         }
-        return unclampedNdotL;
+        return twoMistakes;
     }
 
     @Test
     void aFailingSceneLeavesItsHeatMapWhereTheReportSays() throws IOException {
-        CliRun run = unclampedNdotL();
-        Path heatMap = shared.resolve("report").resolve("1-tick1-diff.png");
-        assertThat(run.out()).contains("heat map: " + heatMap);
+        CliRun run = twoMistakes();
+        Path report = shared.resolve("two-mistakes").resolve("report");
+        Path heatMap = report.resolve("1-tick1-diff.png");
+        assertThat(run.out()).as(run.transcript()).contains("heat map: " + heatMap);
         assertThat(heatMap).exists();
-        assertThat(shared.resolve("report").resolve("1-tick1-yours.png")).exists();
+        assertThat(report.resolve("1-tick1-yours.png")).exists();
     }
 
     @Test
@@ -348,40 +397,27 @@ class GradeCommandTest {
 
     @Test
     void theReportFolderShowsOnlyThisGradesImages() throws IOException {
-        // The report folder as a failing grade left it, with the organiser's own file beside the images.
-        assertThat(unclampedNdotL().status()).isEqualTo(GradeCommand.EXIT_FAIL);
-        Files.createDirectories(dir.resolve("report"));
-        try (Stream<Path> earlier = Files.list(shared.resolve("report"))) {
-            for (Path image : earlier.toList()) {
-                Files.copy(image, dir.resolve("report").resolve(image.getFileName()));
-            }
-        }
-        assertThat(dir.resolve("report").resolve("1-tick1-diff.png")).exists();
-        Files.writeString(dir.resolve("report").resolve("notes.txt"), "the organiser's own file");
-        CliRun run = grade(StudentSolution.correct());
+        CliRun run = correctOnTheCoursesScenes();
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
-        try (Stream<Path> files = Files.list(dir.resolve("report"))) {
+        try (Stream<Path> files = Files.list(shared.resolve("courses-scenes").resolve("report"))) {
             assertThat(files.map(f -> f.getFileName().toString())).containsExactly("notes.txt");
         }
     }
 
     @Test
     void aFailingHiddenSceneIsFixedWordsWithoutFiguresDiagnosisOrImages() throws IOException {
-        CliRun run = unclampedNdotL();
+        CliRun run = twoMistakes();
         String hidden = run.out().substring(run.out().indexOf("hidden.xml: "));
         assertThat(hidden).as(run.transcript()).startsWith("hidden.xml: FAIL: "
                 + HiddenVerdict.WRONG.words() + System.lineSeparator() + "FAILED: ");
-        try (Stream<Path> files = Files.list(shared.resolve("report"))) {
+        try (Stream<Path> files = Files.list(shared.resolve("two-mistakes").resolve("report"))) {
             assertThat(files.map(f -> f.getFileName().toString())).allMatch(name -> name.startsWith("1-tick1-"));
         }
     }
 
     @Test
     void theHandoutsFormulaPassesAHardHiddenSceneWhoseReportSaysOnlyPass() throws IOException {
-        Path scenes = Files.createDirectories(dir.resolve("hard"));
-        Files.copy(Path.of("scenes/hard/giant-floor-1e16.xml"), scenes.resolve("giant-floor-1e16.xml"));
-        CliRun run = grade(StudentSolution.correct(), "--scenes", scenes.toString());
-        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
+        CliRun run = correctOnManyScenes();
         assertThat(run.out().lines()).as("which reference it matched is the code's to choose: not said")
                 .anyMatch(line -> line.endsWith("/giant-floor-1e16.xml: " + HiddenVerdict.PASS.words()));
     }
@@ -395,13 +431,31 @@ class GradeCommandTest {
         assertThat(run.out()).contains("giant-floor-1e16.xml: FAIL");
     }
 
+    /**
+     * The grade, in {@link #shared}/no-sandbox, of {@link #TWO_MISTAKES} with --no-sandbox: graded once, on first
+     * use, for the tests that read what it printed and wrote.
+     */
+    private static synchronized CliRun twoMistakesWithoutTheSandbox() throws IOException {
+        if (twoMistakesWithoutTheSandbox == null) {
+            twoMistakesWithoutTheSandbox = grade(shared.resolve("no-sandbox"), TWO_MISTAKES, "--no-sandbox");
+        }
+        return twoMistakesWithoutTheSandbox;
+    }
+
+    /** What {@code run} printed, with {@code folder} (which holds its student's files and report) as FOLDER. */
+    private static String outFrom(Path folder, CliRun run) {
+        return run.out().replace(folder.toString(), "FOLDER");
+    }
+
     @Test
     void withoutTheSandboxTheGradeWarnsAndStillGrades() throws IOException {
-        CliRun run = grade(StudentSolution.correct(), "--no-sandbox");
-        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
-        assertThat(run.err().lines()).singleElement().asString()
+        CliRun run = twoMistakesWithoutTheSandbox();
+        assertThat(run.err().lines()).as(run.transcript()).singleElement().asString()
                 .startsWith("tick1 grade: warning: --no-sandbox: the student's code runs with your permissions")
                 .as("the one line says what still limits the code").contains("limited only in time", "heap");
+        assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
+        assertThat(outFrom(shared.resolve("no-sandbox"), run)).as("the report, to the word as the sandbox's grade's")
+                .isEqualTo(outFrom(shared.resolve("two-mistakes"), twoMistakes()));
     }
 
     /** A file as a Windows editor may save it: a UTF-8 byte-order mark, then CRLF line ends. */
@@ -410,9 +464,10 @@ class GradeCommandTest {
     }
 
     /**
-     * A solution with a mistake, as a student on Windows keeps it (saved by a Windows editor, in a folder
+     * A solution with mistakes, as a student on Windows keeps it (saved by a Windows editor, in a folder
      * whose name has spaces and a letter beyond ASCII), is graded as the same files saved plainly, to
-     * the word: with the sandbox where it can be made, and with --no-sandbox anywhere.
+     * the word: with the sandbox where it can be made, and with --no-sandbox anywhere (the plain files' grades
+     * are {@link #twoMistakes} and {@link #twoMistakesWithoutTheSandbox}).
      */
     @org.junit.jupiter.params.ParameterizedTest(name = "{0}")
     @org.junit.jupiter.params.provider.ValueSource(strings = {"in the sandbox", "--no-sandbox"})
@@ -427,20 +482,18 @@ class GradeCommandTest {
                 org.junit.jupiter.api.Assumptions.abort("the sandbox cannot be made here: " + e.getMessage());
             }
         }
-        StudentSolution mistake = StudentSolution.correct().editSphere(NEAR_ROOT, "double s = s2;");
-        Path plain = dir.resolve("plain");
+        Path plain = shared.resolve(sandboxed ? "two-mistakes" : "no-sandbox");
         Path windows = dir.resolve("Tick 1 (copy) Zoë");
-        StudentSolution saved = new StudentSolution(savedOnWindows(mistake.sphere()),
-                savedOnWindows(mistake.renderer()));
+        StudentSolution saved = new StudentSolution(savedOnWindows(TWO_MISTAKES.sphere()),
+                savedOnWindows(TWO_MISTAKES.renderer()));
         assertThat(saved.sphere()).startsWith("\uFEFF").contains("\r\n");
         String[] options = sandboxed ? new String[0] : new String[] {"--no-sandbox"};
-        CliRun asPlain = grade(plain, mistake, options);
+        CliRun asPlain = sandboxed ? twoMistakes() : twoMistakesWithoutTheSandbox();
         CliRun asSaved = grade(windows, saved, options);
         assertThat(asPlain.status()).as(asPlain.transcript()).isEqualTo(GradeCommand.EXIT_FAIL);
         assertThat(asPlain.out()).as(asPlain.transcript()).contains("tick1.xml: FAIL");
         assertThat(asSaved.status()).as(asSaved.transcript()).isEqualTo(asPlain.status());
-        assertThat(asSaved.out().replace(windows.toString(), "FOLDER")).as(asSaved.transcript())
-                .isEqualTo(asPlain.out().replace(plain.toString(), "FOLDER"));
+        assertThat(outFrom(windows, asSaved)).as(asSaved.transcript()).isEqualTo(outFrom(plain, asPlain));
         assertThat(Files.list(windows.resolve("report")).map(file -> file.getFileName().toString()).sorted().toList())
                 .as("the images of the failing scene, in the report folder of that name")
                 .isEqualTo(Files.list(plain.resolve("report")).map(file -> file.getFileName().toString()).sorted()
