@@ -160,12 +160,10 @@ class StudentJarTest {
 
     private Process start(String locale, String jar, String folder, String... args) throws IOException {
         List<String> command = new ArrayList<>(bareRoot);
-        // The JIT's first tier and the serial collector, as the installed launcher starts tick1: they change how
-        // much processor time a run of seconds takes, never what it prints or writes.
         command.addAll(List.of("--setenv", "LANG", locale, "--bind", home.toString(), HOME, "--ro-bind",
                 home.resolve("tick1.jar").toString(), ASCII_JAR, "--chdir", folder, "--",
                 Path.of(System.getProperty("java.home")).toRealPath().resolve("bin/java").toString(),
-                "-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC", "-jar", jar));
+                "-jar", jar));
         command.addAll(List.of(args));
         return new ProcessBuilder(command).redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")))
                 .redirectOutput(out().toFile()).redirectError(err().toFile()).start();
