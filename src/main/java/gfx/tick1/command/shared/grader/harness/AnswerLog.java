@@ -16,7 +16,8 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * and logs what each returned, one line a call, as soon as it returns: a run stopped on the time
  * limit keeps the lines before. The lines are raw numbers; the grader, which trusts nothing this
  * process writes, parses them and decides. A call that throws is logged as {@code threw}, one that
- * does not return within {@link #CALL_MILLIS} as {@code timeout}, and the next call goes on. The
+ * does not return within {@link #CALL_MILLIS} ({@link Bounded}: of its own processor time) as {@code timeout}, and
+ * the next call goes on. The
  * random inputs of each method are called in one batch, with {@link #BATCH_MILLIS} for the lot: a
  * call that does not return leaves the rest of its batch unanswered. Before the random shadings,
  * one line says whether their k_d, k_s and n could be set through the starter Sphere's fields
