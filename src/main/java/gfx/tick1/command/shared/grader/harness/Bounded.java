@@ -81,8 +81,8 @@ final class Bounded {
     /**
      * The answer of {@code task} once it is done, waiting at most {@code nanos} of the clock. Nothing of tick1
      * interrupts the harness's thread, but the student's code can (a render that leaves its thread's interrupt
-     * flag set, a call that interrupts every thread): the wait goes on, and the flag is cleared, as a call that
-     * answers in time has answered, and the harness's own writes must not be cut short.
+     * flag set, a call that interrupts every thread): the wait goes on and the flag stays cleared, for a call
+     * that answers in time has answered, whatever else the code did.
      */
     private static <T> T answer(FutureTask<T> task, long nanos) throws ExecutionException, TimeoutException {
         long end = System.nanoTime() + nanos;
