@@ -91,6 +91,42 @@ class BoundedTest {
     }
 
     @Test
+    void aCallMadeWhileTheHarnessThreadIsInterruptedStillGivesItsAnswer() {
+        // As after a Renderer.render that left its thread's interrupt flag set: the harness calls on that thread.
+        Thread.currentThread().interrupt();
+        Bounded.Outcome<String> outcome;
+        try {
+            outcome = new Bounded(SPARE_MILLIS).call(() -> {
+                Thread.sleep(LIMIT_MILLIS / 2);
+                return "answer";
+            }, LIMIT_MILLIS);
+        } finally {
+            Thread.interrupted();
+        }
+
+        assertThat(outcome).as("a call that returned within its limit, made with the harness's thread interrupted")
+                .isEqualTo(new Bounded.Outcome<>(Bounded.Ending.RETURNED, "answer"));
+    }
+
+    @Test
+    void aCallThatInterruptsTheHarnessThreadStillGivesItsAnswer() {
+        Thread harness = Thread.currentThread();
+        Bounded.Outcome<String> outcome;
+        try {
+            outcome = new Bounded(SPARE_MILLIS).call(() -> {
+                harness.interrupt();
+                Thread.sleep(LIMIT_MILLIS / 2);
+                return "answer";
+            }, LIMIT_MILLIS);
+        } finally {
+            Thread.interrupted();
+        }
+
+        assertThat(outcome).as("a call that interrupted the harness's thread and returned within its limit")
+                .isEqualTo(new Bounded.Outcome<>(Bounded.Ending.RETURNED, "answer"));
+    }
+
+    @Test
     void aCallThatThrowsIsToldAsThrowing() {
         Bounded.Outcome<String> outcome = new Bounded(SPARE_MILLIS).call(() -> {
             throw new IllegalStateException("the student's exception");
