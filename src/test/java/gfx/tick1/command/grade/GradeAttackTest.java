@@ -92,7 +92,7 @@ class GradeAttackTest {
     /**
      * The time limit of the one attack that ends only at the time limit, in seconds: shorter than {@link #TIME_LIMIT}
      * (the attack holds a worker of the test run until it), still one a correct solution compiles within on a busy
-     * machine, as CompilingTest's grades do within ten seconds.
+     * machine.
      */
     private static final String FIFO_TIME_LIMIT = "15";
 
