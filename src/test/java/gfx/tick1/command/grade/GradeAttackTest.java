@@ -471,6 +471,17 @@ class GradeAttackTest {
     }
 
     @Test
+    void aCorrectRenderThatLeavesTheRunNoThreadIsToldItReachedTheLimitOfProcessesAndThreads() throws Exception {
+        Grade grade = grade("leave-no-thread");
+        assertFailedAndHarmedNothing(grade);
+        assertThat(grade.output()).as("what the grade says of a correct image the run had no thread left to check")
+                .contains("tick1.xml: FAIL: the image could not be checked against your Sphere and Renderer: the "
+                        + "program reached the limit of processes and threads")
+                .contains("hidden.xml: FAIL: " + HiddenVerdict.PROCESSES.words() + "\n")
+                .doesNotContain("OutOfMemoryError", "gfx.tick1.command");
+    }
+
+    @Test
     void threadsCoresAndNativeMemoryAreLimited() throws Exception {
         Grade grade = grade("exceed-limits", "--memory", "64");
         assertFailedAndHarmedNothing(grade);

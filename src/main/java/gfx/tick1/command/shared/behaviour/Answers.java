@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.behaviour;
 
+import gfx.tick1.command.shared.grader.harness.AnswerLog;
 import gfx.tick1.command.shared.grader.harness.BehaviourInputs;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -44,6 +45,8 @@ final class Answers {
     private final Map<String, Answer> answers = new HashMap<>();
     /** Whether the random shadings' k_d, k_s and n were set on the student's spheres (else the course's). */
     private BehaviourInputs.Phong phong;
+    /** Whether the log says that a call found no thread to run in, so the calls left were never made. */
+    private boolean noThread;
 
     private Answers() {
     }
@@ -75,6 +78,10 @@ final class Answers {
             return parsed;
         }
         log.lines().limit(maxLines).forEach(line -> {
+            if (line.equals(AnswerLog.NO_THREAD)) {
+                parsed.noThread = true;
+                return;
+            }
             String[] words = line.split(" ", 12);
             if (words.length == 2 && words[0].equals("phong") && parsed.phong == null) {
                 for (BehaviourInputs.Phong phong : BehaviourInputs.Phong.values()) {
@@ -137,6 +144,14 @@ final class Answers {
     /** Whether the log held any answer at all: without one, the probes did not run. */
     boolean any() {
         return !answers.isEmpty();
+    }
+
+    /**
+     * Whether a call found no thread to run in (the program had reached the limit of processes and threads), so
+     * the calls after it were never made.
+     */
+    boolean noThread() {
+        return noThread;
     }
 
     /** Whether the random shadings' spheres had their k_d, k_s and n set (else they kept the course's). */

@@ -78,7 +78,7 @@ public final class BehaviourCheck {
         }
         BehaviourFindings findings = BehaviourFindings.of(called.log());
         if (!findings.ran()) {
-            return Lines.none("behaviour could not be checked: your methods gave no answer");
+            return Lines.none("behaviour could not be checked: " + findings.whyNotRan());
         }
         Lines lines = hints(findings, asked);
         return called.drawn() == null ? lines : new Lines(lines.behaviour(), lines.hints(), null,

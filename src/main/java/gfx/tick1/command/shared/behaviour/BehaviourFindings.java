@@ -27,10 +27,13 @@ public final class BehaviourFindings {
     }
 
     private final Behaviour behaviour;
+    /** Whether a call found no thread to run in, the program being at the limit of processes and threads. */
+    private final boolean noThread;
     private final List<Finding> tested = new ArrayList<>();
 
-    private BehaviourFindings(Behaviour behaviour) {
+    private BehaviourFindings(Behaviour behaviour, boolean noThread) {
         this.behaviour = behaviour;
+        this.noThread = noThread;
         if (behaviour.ran()) {
             Stream.of(behaviour.intersectionWith(), behaviour.illuminate()).filter(b -> !b.behavesAsOurs())
                     .forEach(b -> tested.add(finding(b)));
@@ -39,7 +42,8 @@ public final class BehaviourFindings {
 
     /** The findings of the probes' log {@code log} (null when the child left none). */
     public static BehaviourFindings of(String log) {
-        return new BehaviourFindings(BehaviourJudge.judge(Answers.parse(log)));
+        Answers answers = Answers.parse(log);
+        return new BehaviourFindings(BehaviourJudge.judge(answers), answers.noThread());
     }
 
     private static Finding finding(MethodBehaviour b) {
@@ -104,6 +108,12 @@ public final class BehaviourFindings {
         untested().forEach(note -> lines.add("note: " + note));
         toReread().forEach(section -> lines.add("reread: " + section));
         return lines;
+    }
+
+    /** Why the probes did not run, when they did not ({@link #ran}). */
+    public String whyNotRan() {
+        return noThread ? "the program reached the limit of processes and threads, so no thread was left to call "
+                + "your methods in" : "your methods gave no answer";
     }
 
     /** What the comparison did find when no method differs. */

@@ -10,18 +10,19 @@ import java.util.List;
  * channel's largest difference, the catalogue entry its image matches, an exception's class or
  * message, a stack frame, an exit status, a PNG header's size, which reference it matched) could
  * carry bytes of the scene out. A verdict is all it can choose: log2 of the number of verdicts,
- * {@code log2(9)}, about 3.2 bits a hidden scene.
+ * {@code log2(10)}, about 3.3 bits a hidden scene.
  */
 public enum HiddenVerdict {
 
     PASS("PASS"),
     WRONG("wrong: the image is not the expected one"),
     NOT_FROM_THE_CODE(SubmissionGrader.NOT_FROM_THE_CODE + " (checked on sampled pixels)"),
+    NOT_TRACED("the image's sampled pixels could not be traced through your Sphere and Renderer"),
     THREW("the code threw an exception"),
     TIME_LIMIT("no image within the time limit"),
     NO_IMAGE("no usable image: the program ended, or the image it wrote is unusable"),
     MEMORY("no image: the program was stopped at the memory limit"),
-    PROCESSES("no image: the program reached the limit of processes and threads"),
+    PROCESSES("the program reached the limit of processes and threads"),
     OUTPUT_FOLDER("no image: the program was stopped at the limit of its output folder");
 
     private final String words;
@@ -48,6 +49,18 @@ public enum HiddenVerdict {
             }
         }
         return NO_IMAGE;
+    }
+
+    /**
+     * The verdict of a hidden scene whose image is the expected one but was not confirmed by the code's own methods,
+     * from what {@code check} found.
+     */
+    static HiddenVerdict ofUnconfirmedImage(SampleCheck.Result check) {
+        return switch (check) {
+            case DISAGREES -> NOT_FROM_THE_CODE;
+            case NO_THREAD -> PROCESSES;
+            case NO_TRACE, AGREES -> NOT_TRACED;
+        };
     }
 
     /**

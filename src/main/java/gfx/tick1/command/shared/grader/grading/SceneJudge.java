@@ -158,14 +158,23 @@ final class SceneJudge {
                 new SceneVerdict.Passed(), false, false);
     }
 
-    /** Why a matching image fails: their own methods give other colours, or could not be asked. */
+    /**
+     * Why a matching image fails: their own methods give other colours, or could not be asked (in time, or at all,
+     * the run's threads being at the limit of processes and threads).
+     */
     private Judged notFromTheCode(CourseScene scene, SampleCheck.Result check) {
-        String reason = check == SampleCheck.Result.DISAGREES ? Explainer.NOT_FROM_THE_CODE + ": traced through "
-                + "your own intersectionWith and illuminate, its sampled pixels have other colours"
-                : Explainer.NOT_FROM_THE_CODE + "? Its sampled pixels could not be traced through your "
-                + "intersectionWith and illuminate (they did not return in time, or the harness's record of them "
-                + "is missing)";
-        String shown = scene.hidden() ? HiddenVerdict.NOT_FROM_THE_CODE.words() : reason;
+        String reason = switch (check) {
+            case DISAGREES -> Explainer.NOT_FROM_THE_CODE + ": traced through your own intersectionWith and "
+                    + "illuminate, its sampled pixels have other colours";
+            case NO_THREAD -> "the image could not be checked against your Sphere and Renderer: the program reached "
+                    + "the limit of processes and threads (threads the code starts and leaves running count), so no "
+                    + "thread could be started to trace its sampled pixels through your intersectionWith and "
+                    + "illuminate";
+            case NO_TRACE, AGREES -> Explainer.NOT_FROM_THE_CODE + "? Its sampled pixels could not be traced through "
+                    + "your intersectionWith and illuminate (they did not return in time, or the harness's record of "
+                    + "them is missing)";
+        };
+        String shown = scene.hidden() ? HiddenVerdict.ofUnconfirmedImage(check).words() : reason;
         out.println(scene.name() + ": FAIL: " + shown);
         return new Judged(new SceneResult(scene.name(), scene.hidden(), false, List.of(shown), SceneResult.Images.NONE),
                 new SceneVerdict.NotFromTheCode(), false, false);

@@ -29,11 +29,14 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * NAME colour R G B
  * NAME null | threw | timeout | absent       (absent: no illuminate(Scene, Sphere, Vector3, Vector3))
  * phong set | phong fixed
+ * nothread                                   (the next call found no thread to run in: the last line)
  * </pre>
  */
 public final class AnswerLog {
 
     static final String ANSWERS_FILE = "probes";
+    /** The line that ends a log whose next call found no thread to run in: the calls left were never made. */
+    public static final String NO_THREAD = "nothread";
     /** The most one call may take: an answer is one sphere and one point. */
     static final long CALL_MILLIS = 500;
     /** The most one method's random inputs may take together: a correct method takes milliseconds. */
@@ -62,31 +65,40 @@ public final class AnswerLog {
     void run(Path log) throws IOException {
         try (OutputStream out = Files.newOutputStream(log, StandardOpenOption.CREATE, StandardOpenOption.APPEND)) {
             Lines lines = new Lines(out);
-            BehaviourInputs.Chosen chosen = chosen();
-            if (chosen != null) {
-                batch(lines, chosen.intersections(), call -> intersect(call));
-                if (api.hasIlluminate()) {
-                    batch(lines, chosen.illuminations(), call -> illuminate(call, Phong.FIXED));
-                }
-                return;
+            try {
+                answerAll(lines);
+            } catch (NoThread atTheLimit) {
+                // The calls left would find no thread either: they get no line, and the log says why.
+                lines.write(NO_THREAD);
             }
-            for (BehaviourInputs.IntersectionCall call : BehaviourInputs.INTERSECTIONS) {
-                lines.write(call.name(), Bounded.RUN.call(() -> intersect(call), CALL_MILLIS));
-            }
-            for (BehaviourInputs.IlluminationCall call : BehaviourInputs.ILLUMINATIONS) {
-                lines.write(call.name(), api.hasIlluminate()
-                        ? Bounded.RUN.call(() -> illuminate(call, Phong.FIXED), CALL_MILLIS)
-                        : new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
-            }
-            batch(lines, BehaviourInputs.RANDOM_INTERSECTIONS, call -> intersect(call));
-            Phong phong = api.hasPhongFields() ? Phong.SET : Phong.FIXED;
-            lines.write("phong", new Bounded.Outcome<>(Bounded.Ending.RETURNED, phong.word()));
+        }
+    }
+
+    private void answerAll(Lines lines) {
+        BehaviourInputs.Chosen chosen = chosen();
+        if (chosen != null) {
+            batch(lines, chosen.intersections(), call -> intersect(call));
             if (api.hasIlluminate()) {
-                batch(lines, BehaviourInputs.RANDOM_ILLUMINATIONS, call -> illuminate(call, phong));
-            } else {
-                for (BehaviourInputs.IlluminationCall call : BehaviourInputs.RANDOM_ILLUMINATIONS) {
-                    lines.write(call.name(), new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
-                }
+                batch(lines, chosen.illuminations(), call -> illuminate(call, Phong.FIXED));
+            }
+            return;
+        }
+        for (BehaviourInputs.IntersectionCall call : BehaviourInputs.INTERSECTIONS) {
+            lines.write(call.name(), Bounded.RUN.call(() -> intersect(call), CALL_MILLIS));
+        }
+        for (BehaviourInputs.IlluminationCall call : BehaviourInputs.ILLUMINATIONS) {
+            lines.write(call.name(), api.hasIlluminate()
+                    ? Bounded.RUN.call(() -> illuminate(call, Phong.FIXED), CALL_MILLIS)
+                    : new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
+        }
+        batch(lines, BehaviourInputs.RANDOM_INTERSECTIONS, call -> intersect(call));
+        Phong phong = api.hasPhongFields() ? Phong.SET : Phong.FIXED;
+        lines.write("phong", new Bounded.Outcome<>(Bounded.Ending.RETURNED, phong.word()));
+        if (api.hasIlluminate()) {
+            batch(lines, BehaviourInputs.RANDOM_ILLUMINATIONS, call -> illuminate(call, phong));
+        } else {
+            for (BehaviourInputs.IlluminationCall call : BehaviourInputs.RANDOM_ILLUMINATIONS) {
+                lines.write(call.name(), new Bounded.Outcome<>(Bounded.Ending.RETURNED, "absent"));
             }
         }
     }
@@ -115,7 +127,7 @@ public final class AnswerLog {
      */
     private static <T extends Record> void batch(Lines lines, List<T> calls, Call<T> answer) {
         AtomicBoolean open = new AtomicBoolean(true);
-        Bounded.RUN.call(() -> {
+        Bounded.Outcome<Object> outcome = Bounded.RUN.call(() -> {
             for (T call : calls) {
                 String said;
                 try {
@@ -134,6 +146,9 @@ public final class AnswerLog {
         }, BATCH_MILLIS);
         synchronized (lines) {
             open.set(false);
+        }
+        if (outcome.ending() == Bounded.Ending.NO_THREAD) {
+            throw new NoThread();
         }
     }
 
@@ -195,12 +210,23 @@ public final class AnswerLog {
                 case RETURNED -> outcome.value();
                 case THREW -> "threw";
                 case TIMED_OUT -> "timeout";
+                case NO_THREAD -> throw new NoThread();
             };
+            write(name + " " + said);
+        }
+
+        /** Writes {@code line}; a write that fails is left out. */
+        void write(String line) {
             try {
-                out.write((name + " " + said + "\n").getBytes(StandardCharsets.UTF_8));
+                out.write((line + "\n").getBytes(StandardCharsets.UTF_8));
             } catch (IOException e) {
                 // the student's code may have closed or filled the log: its answers are then missing
             }
         }
+    }
+
+    /** A call's thread could not be started: the run's threads are at the limit of processes and threads. */
+    private static final class NoThread extends RuntimeException {
+        private static final long serialVersionUID = 1L;
     }
 }

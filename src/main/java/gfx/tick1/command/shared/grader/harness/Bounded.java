@@ -5,6 +5,7 @@ import java.lang.management.ThreadMXBean;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.FutureTask;
+import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 
@@ -32,8 +33,11 @@ final class Bounded {
     /** How often a call past its limit by the clock has its processor time read again. */
     private static final long POLL_MILLIS = 20;
 
-    /** How a bounded call ended. */
-    enum Ending { RETURNED, THREW, TIMED_OUT }
+    /**
+     * How a bounded call ended: NO_THREAD when its thread could not be started, so the code was not called (the
+     * run's threads, the code's own left running among them, are at the limit of processes and threads).
+     */
+    enum Ending { RETURNED, THREW, TIMED_OUT, NO_THREAD }
 
     /** The ending, and the value when it returned. */
     record Outcome<T>(Ending ending, T value) {
@@ -41,18 +45,31 @@ final class Bounded {
 
     /** The spare clock time left to the calls, in nanoseconds. */
     private long spareNanos;
+    /** Makes each call's thread. */
+    private final ThreadFactory threads;
 
     /** Calls that share {@code spareMillis} of clock time beyond their limits. */
     Bounded(long spareMillis) {
+        this(spareMillis, work -> new Thread(work, "probe"));
+    }
+
+    /** Calls that share {@code spareMillis} of clock time beyond their limits, each in a thread of {@code threads}. */
+    Bounded(long spareMillis, ThreadFactory threads) {
         spareNanos = TimeUnit.MILLISECONDS.toNanos(spareMillis);
+        this.threads = threads;
     }
 
     /** Runs {@code work}, for at most {@code millis} of its thread's processor time (see above). */
     synchronized <T> Outcome<T> call(Callable<T> work, long millis) {
         FutureTask<T> task = new FutureTask<>(work);
-        Thread thread = new Thread(task, "probe");
+        Thread thread = threads.newThread(task);
         thread.setDaemon(true);
-        thread.start();
+        try {
+            thread.start();
+        } catch (OutOfMemoryError noNativeThread) {
+            // The harness's own failure, not the code's: the call's ending says it, and the harness goes on.
+            return new Outcome<>(Ending.NO_THREAD, null);
+        }
         long limit = TimeUnit.MILLISECONDS.toNanos(millis);
         try {
             try {

@@ -13,7 +13,8 @@ import java.util.List;
  * {@code illuminate}, as the starter's {@code trace} does: the grader compares them with the
  * image, which must be what those methods give. One line a sample, in {@link #samples} order: the
  * colour as six hex digits, or {@code x} when the call threw. A scene whose samples do not all
- * return within {@link #SCENE_MILLIS} gets no file.
+ * return within {@link #SCENE_MILLIS} gets no file; one whose samples could not be traced for want of a thread
+ * ({@link Bounded.Ending#NO_THREAD}) gets the one line {@link #NO_THREAD}.
  */
 public final class SampleTrace {
 
@@ -21,6 +22,8 @@ public final class SampleTrace {
     static final int COLUMNS = 16, ROWS = 12;
     /** The most the samples of one scene may take together. */
     static final long SCENE_MILLIS = 2000;
+    /** The trace of a scene whose samples found no thread to be traced in. */
+    public static final String NO_THREAD = "no thread";
     /** The grey a ray that meets no sphere sees, as in the starter's Renderer. */
     private static final double[] BACKGROUND = {0.1, 0.1, 0.1};
 
@@ -43,6 +46,8 @@ public final class SampleTrace {
         Bounded.Outcome<String> outcome = Bounded.RUN.call(() -> lines(api, scene, width, height), SCENE_MILLIS);
         if (outcome.ending() == Bounded.Ending.RETURNED) {
             Files.writeString(file, outcome.value(), StandardCharsets.UTF_8);
+        } else if (outcome.ending() == Bounded.Ending.NO_THREAD) {
+            Files.writeString(file, NO_THREAD + "\n", StandardCharsets.UTF_8);
         }
     }
 

@@ -4,6 +4,7 @@ import java.awt.image.BufferedImage;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
+import java.io.OutputStream;
 import java.lang.reflect.InvocationTargetException;
 import java.net.URL;
 import java.net.URLClassLoader;
@@ -183,7 +184,7 @@ public final class StudentHarness {
                 log(progress, "start " + index);
                 try {
                     BufferedImage image = render(student, scenes.get(index), width, height);
-                    ImageIO.write(image, "png", output.resolve(index + ".png").toFile());
+                    writePng(image, output.resolve(index + ".png"));
                     trace(student, scenes.get(index), width, height, output.resolve(index + TRACE_SUFFIX));
                 } catch (Throwable failure) { // the student's code may throw anything, errors included
                     writeFailure(output.resolve(index + ".error"), failure);
@@ -200,6 +201,18 @@ public final class StudentHarness {
             stopStartedProcesses();
         }
         Runtime.getRuntime().halt(0);
+    }
+
+    /**
+     * Writes {@code image} as a PNG through a stream: ImageIO writing to a File starts a thread of its own (Java2D's
+     * Disposer), which a run whose threads the code has brought to the limit of processes and threads cannot start,
+     * and the image would be lost for the harness's want of a thread.
+     */
+    private static void writePng(BufferedImage image, Path file) throws IOException {
+        ImageIO.setUseCache(false); // in memory, not in a cache file
+        try (OutputStream out = Files.newOutputStream(file)) {
+            ImageIO.write(image, "png", out);
+        }
     }
 
     private static boolean unconfined() {

@@ -50,6 +50,27 @@ class HiddenVerdictTest {
     }
 
     @Test
+    void anImageWhoseSamplesWereNotTracedIsNotSaidToBeCheckedOnThem() {
+        assertThat(HiddenVerdict.ofUnconfirmedImage(SampleCheck.Result.NO_TRACE).words())
+                .as("the verdict of the expected image whose sampled pixels could not be traced through the methods")
+                .doesNotContain("checked on sampled pixels");
+    }
+
+    @Test
+    void anImageWhoseSamplesFoundNoThreadToBeTracedInIsAtTheLimitOfProcessesAndThreads() {
+        assertThat(HiddenVerdict.ofUnconfirmedImage(SampleCheck.Result.NO_THREAD))
+                .as("the verdict of the expected image whose samples found no thread to be traced in")
+                .isEqualTo(HiddenVerdict.PROCESSES);
+    }
+
+    @Test
+    void anImageWhoseSamplesHaveOtherColoursDoesNotComeFromTheCode() {
+        assertThat(HiddenVerdict.ofUnconfirmedImage(SampleCheck.Result.DISAGREES))
+                .as("the verdict of the expected image whose sampled pixels the methods give other colours")
+                .isEqualTo(HiddenVerdict.NOT_FROM_THE_CODE);
+    }
+
+    @Test
     void noVerdictHoldsANumber() {
         assertThat(Arrays.stream(HiddenVerdict.values()).map(HiddenVerdict::words))
                 .noneMatch(words -> words.matches(".*\\d.*"));

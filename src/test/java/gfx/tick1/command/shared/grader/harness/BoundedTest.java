@@ -134,4 +134,26 @@ class BoundedTest {
 
         assertThat(outcome.ending()).as("a call that threw").isEqualTo(Bounded.Ending.THREW);
     }
+
+    @Test
+    void aCallWhoseThreadCannotStartIsToldAsHavingNoThreadAndTheCodeIsNotCalled() {
+        AtomicBoolean called = new AtomicBoolean();
+        // What Thread.start throws once the run's threads are at the limit of processes and threads.
+        Bounded atTheLimit = new Bounded(SPARE_MILLIS, work -> new Thread(work) {
+            @Override
+            public synchronized void start() {
+                throw new OutOfMemoryError("unable to create native thread: possibly out of memory or process/resource "
+                        + "limits reached");
+            }
+        });
+
+        Bounded.Outcome<String> outcome = atTheLimit.call(() -> {
+            called.set(true);
+            return "answer";
+        }, LIMIT_MILLIS);
+
+        assertThat(outcome).as("a call whose thread could not be started")
+                .isEqualTo(new Bounded.Outcome<>(Bounded.Ending.NO_THREAD, null));
+        assertThat(called).as("whether the code was called").isFalse();
+    }
 }
