@@ -3,7 +3,9 @@ package gfx.tick1.command.shared.behaviour;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.command.shared.grader.harness.AnswerLog;
+import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** Why the behaviour comparison did not run is said as the probes' log shows it. */
 class BehaviourFindingsTest {
@@ -23,5 +25,19 @@ class BehaviourFindingsTest {
     void probesThatLoggedNothingGaveNoAnswer() {
         assertThat(BehaviourFindings.of("").whyNotRan()).as("why an empty log has no answer")
                 .isEqualTo("your methods gave no answer");
+    }
+
+    @Test
+    void callsLeftUnmadeForWantOfAThreadAreNotSaidToDifferFromOurs(@TempDir Path folder) throws Exception {
+        String log = CalledSolution.correct().probeLog(folder);
+        // The log as the harness leaves it when the random shadings' call finds no thread: every line up to the
+        // phong line, then the line that says the calls left were never made.
+        int phong = log.indexOf("\nphong ") + 1;
+        String cut = log.substring(0, log.indexOf('\n', phong) + 1) + AnswerLog.NO_THREAD + "\n";
+
+        BehaviourFindings findings = BehaviourFindings.of(cut);
+
+        assertThat(findings.facts()).as("the findings of correct methods whose last calls found no thread")
+                .isEmpty();
     }
 }
