@@ -121,7 +121,8 @@ public final class BehaviourFindings {
         return behaviour.ran() ? "your intersectionWith and illuminate behave as ours on "
                 + Counted.of(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(),
                         "input")
-                : "your intersectionWith and illuminate could not be checked: the harness logged no answer";
+                : "your intersectionWith and illuminate could not be checked: "
+                        + (noThread ? whyNotRan() : "the harness logged no answer");
     }
 
 

@@ -90,7 +90,9 @@ final class BehaviourJudge {
     }
 
     static Behaviour judge(Answers answers) {
-        if (!answers.any()) {
+        // A log that ends for want of a thread holds no answer to the calls never made. Those cannot be compared,
+        // and a method judged on part of its inputs would not be judged as every other student's is: no finding.
+        if (!answers.any() || answers.noThread()) {
             MethodBehaviour none = new MethodBehaviour("", 0, MethodBehaviour.Difference.NONE, List.of(), List.of(),
                     List.of());
             return new Behaviour(false, none, none);

@@ -40,4 +40,14 @@ class BehaviourFindingsTest {
         assertThat(findings.facts()).as("the findings of correct methods whose last calls found no thread")
                 .isEmpty();
     }
+
+    @Test
+    void aLogThatEndsForWantOfAThreadSaysSoWhereNoMethodDiffers(@TempDir Path folder) throws Exception {
+        String log = CalledSolution.correct().probeLog(folder);
+        String cut = log.substring(0, log.indexOf('\n') + 1) + AnswerLog.NO_THREAD + "\n";
+
+        assertThat(BehaviourFindings.of(cut).noFinding()).as("what is said of methods whose calls found no thread")
+                .isEqualTo("your intersectionWith and illuminate could not be checked: the program reached the limit "
+                        + "of processes and threads, so no thread was left to call your methods in");
+    }
 }

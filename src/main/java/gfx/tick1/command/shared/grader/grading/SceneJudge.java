@@ -176,8 +176,12 @@ final class SceneJudge {
         };
         String shown = scene.hidden() ? HiddenVerdict.ofUnconfirmedImage(check).words() : reason;
         out.println(scene.name() + ": FAIL: " + shown);
+        // An image no thread was left to check is counted where the run's limit of processes and threads is: nothing
+        // was found of where it came from.
+        SceneVerdict verdict = check == SampleCheck.Result.NO_THREAD ? new SceneVerdict.Missing(NoImage.PROCESS_LIMIT)
+                : new SceneVerdict.NotFromTheCode();
         return new Judged(new SceneResult(scene.name(), scene.hidden(), false, List.of(shown), SceneResult.Images.NONE),
-                new SceneVerdict.NotFromTheCode(), false, false);
+                verdict, false, false);
     }
 
     /**
