@@ -26,6 +26,10 @@ public final class BehaviourFindings {
     record Finding(String method, String fact, String section, String label) {
     }
 
+    /** Why the probes did not run when a call found no thread to run in. */
+    private static final String NO_THREAD = "the program reached the limit of processes and threads, so no thread "
+            + "was left to call your methods in";
+
     private final Behaviour behaviour;
     /** Whether a call found no thread to run in, the program being at the limit of processes and threads. */
     private final boolean noThread;
@@ -112,8 +116,7 @@ public final class BehaviourFindings {
 
     /** Why the probes did not run, when they did not ({@link #ran}). */
     public String whyNotRan() {
-        return noThread ? "the program reached the limit of processes and threads, so no thread was left to call "
-                + "your methods in" : "your methods gave no answer";
+        return noThread ? NO_THREAD : "your methods gave no answer";
     }
 
     /** What the comparison did find when no method differs. */
@@ -122,7 +125,7 @@ public final class BehaviourFindings {
                 + Counted.of(behaviour.intersectionWith().inputs() + behaviour.illuminate().inputs(),
                         "input")
                 : "your intersectionWith and illuminate could not be checked: "
-                        + (noThread ? whyNotRan() : "the harness logged no answer");
+                        + (noThread ? NO_THREAD : "the harness logged no answer");
     }
 
 

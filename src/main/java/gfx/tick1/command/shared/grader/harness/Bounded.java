@@ -120,8 +120,8 @@ final class Bounded {
      * cannot tell, so that the clock's limit is the limit there.
      */
     private static boolean working(Thread thread, long limit) {
-        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
-        long used = threads.isThreadCpuTimeSupported() ? threads.getThreadCpuTime(thread.getId()) : -1;
+        ThreadMXBean processorTimes = ManagementFactory.getThreadMXBean();
+        long used = processorTimes.isThreadCpuTimeSupported() ? processorTimes.getThreadCpuTime(thread.getId()) : -1;
         return used < 0 || used >= limit;
     }
 }

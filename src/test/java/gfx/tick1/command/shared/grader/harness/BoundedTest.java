@@ -94,15 +94,10 @@ class BoundedTest {
     void aCallMadeWhileTheHarnessThreadIsInterruptedStillGivesItsAnswer() {
         // As after a Renderer.render that left its thread's interrupt flag set: the harness calls on that thread.
         Thread.currentThread().interrupt();
-        Bounded.Outcome<String> outcome;
-        try {
-            outcome = new Bounded(SPARE_MILLIS).call(() -> {
-                Thread.sleep(LIMIT_MILLIS / 2);
-                return "answer";
-            }, LIMIT_MILLIS);
-        } finally {
-            Thread.interrupted();
-        }
+        Bounded.Outcome<String> outcome = callThenClearTheFlag(() -> {
+            Thread.sleep(LIMIT_MILLIS / 2);
+            return "answer";
+        });
 
         assertThat(outcome).as("a call that returned within its limit, made with the harness's thread interrupted")
                 .isEqualTo(new Bounded.Outcome<>(Bounded.Ending.RETURNED, "answer"));
@@ -111,19 +106,23 @@ class BoundedTest {
     @Test
     void aCallThatInterruptsTheHarnessThreadStillGivesItsAnswer() {
         Thread harness = Thread.currentThread();
-        Bounded.Outcome<String> outcome;
-        try {
-            outcome = new Bounded(SPARE_MILLIS).call(() -> {
-                harness.interrupt();
-                Thread.sleep(LIMIT_MILLIS / 2);
-                return "answer";
-            }, LIMIT_MILLIS);
-        } finally {
-            Thread.interrupted();
-        }
+        Bounded.Outcome<String> outcome = callThenClearTheFlag(() -> {
+            harness.interrupt();
+            Thread.sleep(LIMIT_MILLIS / 2);
+            return "answer";
+        });
 
         assertThat(outcome).as("a call that interrupted the harness's thread and returned within its limit")
                 .isEqualTo(new Bounded.Outcome<>(Bounded.Ending.RETURNED, "answer"));
+    }
+
+    /** {@code work} called within the limit, the test thread's interrupt flag then cleared for the tests after it. */
+    private static Bounded.Outcome<String> callThenClearTheFlag(java.util.concurrent.Callable<String> work) {
+        try {
+            return new Bounded(SPARE_MILLIS).call(work, LIMIT_MILLIS);
+        } finally {
+            Thread.interrupted();
+        }
     }
 
     @Test
