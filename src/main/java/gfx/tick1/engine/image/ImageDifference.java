@@ -25,8 +25,8 @@ public final class ImageDifference {
     private ImageDifference(BufferedImage expectedImage, BufferedImage actualImage) {
         width = expectedImage.getWidth();
         height = expectedImage.getHeight();
-        expected = pixels(expectedImage);
-        actual = pixels(actualImage);
+        expected = RgbPixels.of(expectedImage);
+        actual = RgbPixels.of(actualImage);
         long squares = 0;
         for (int y = 0; y < height; y++) {
             for (int x = 0; x < width; x++) {
@@ -58,10 +58,6 @@ public final class ImageDifference {
                     + expected.getHeight() + ", actual " + actual.getWidth() + " x " + actual.getHeight());
         }
         return new ImageDifference(expected, actual);
-    }
-
-    private static int[] pixels(BufferedImage image) {
-        return image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());
     }
 
     /** Channel 0 = red, 1 = green, 2 = blue of a packed 0xRRGGBB pixel. */

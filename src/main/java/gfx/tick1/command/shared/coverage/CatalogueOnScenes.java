@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.coverage;
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.diagnosis.ModelRenderer;
 import gfx.tick1.command.shared.diagnosis.VariantRenderer;
+import gfx.tick1.engine.image.RgbPixels;
 import gfx.tick1.engine.render.ReferenceRenderer;
 import gfx.tick1.engine.scene.Intersection;
 import gfx.tick1.engine.scene.Scene;
@@ -92,13 +93,13 @@ public final class CatalogueOnScenes {
         rendered.add(Variant.CORRECT);
         rendered.add(Variant.HANDOUT_SIX_STEPS);
         Map<Variant, BufferedImage> images = new VariantRenderer(width, height).render(scene, rendered);
-        References pass = new References(pixels(images.get(Variant.CORRECT)),
-                pixels(new ReferenceRenderer(width, height, Intersection.ROBUST).render(scene)));
+        References pass = new References(RgbPixels.of(images.get(Variant.CORRECT)),
+                RgbPixels.of(new ReferenceRenderer(width, height, Intersection.ROBUST).render(scene)));
         long[] differing = new long[mistakes.size()];
         for (int i = 0; i < mistakes.size(); i++) {
-            differing[i] = pass.differing(pixels(images.get(mistakes.get(i))));
+            differing[i] = pass.differing(RgbPixels.of(images.get(mistakes.get(i))));
         }
-        return new Counted(differing, pass.differing(pixels(images.get(Variant.HANDOUT_SIX_STEPS))), pass);
+        return new Counted(differing, pass.differing(RgbPixels.of(images.get(Variant.HANDOUT_SIX_STEPS))), pass);
     }
 
     /**
@@ -166,9 +167,5 @@ public final class CatalogueOnScenes {
             }
             return differing;
         }
-    }
-
-    private static int[] pixels(BufferedImage image) {
-        return image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());
     }
 }

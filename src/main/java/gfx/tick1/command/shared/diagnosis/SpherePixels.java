@@ -1,5 +1,6 @@
 package gfx.tick1.command.shared.diagnosis;
 
+import gfx.tick1.engine.image.RgbPixels;
 import java.awt.image.BufferedImage;
 import java.util.Arrays;
 
@@ -62,7 +63,7 @@ public record SpherePixels(boolean[] mask, int count) {
 
     /** How {@code render} and {@code image} (both the size of the mask's region) agree on these pixels. */
     Match match(BufferedImage render, BufferedImage image) {
-        int[] a = pixels(render), b = pixels(image);
+        int[] a = RgbPixels.of(render), b = RgbPixels.of(image);
         int exact = 0, withinOne = 0;
         for (int i = 0; i < a.length; i++) {
             if (mask[i]) {
@@ -76,7 +77,7 @@ public record SpherePixels(boolean[] mask, int count) {
 
     /** How many pixels outside the sphere pixels are not {@code background} (0xRRGGBB) in {@code image}. */
     int notBackgroundOutside(BufferedImage image, int background) {
-        int[] b = pixels(image);
+        int[] b = RgbPixels.of(image);
         int stray = 0;
         for (int i = 0; i < b.length; i++) {
             if (!mask[i] && (b[i] & 0xFFFFFF) != background) {
@@ -84,10 +85,6 @@ public record SpherePixels(boolean[] mask, int count) {
             }
         }
         return stray;
-    }
-
-    private static int[] pixels(BufferedImage image) {
-        return image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());
     }
 
     private static int worstChannel(int a, int b) {

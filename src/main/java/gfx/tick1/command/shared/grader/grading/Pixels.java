@@ -1,7 +1,7 @@
 package gfx.tick1.command.shared.grader.grading;
 
+import gfx.tick1.engine.image.RgbPixels;
 import java.awt.image.BufferedImage;
-import java.awt.image.DataBufferInt;
 import java.util.Arrays;
 
 /** Whether two images have the same pixels: the pass path needs no difference figures. */
@@ -15,19 +15,6 @@ final class Pixels {
         if (a.getWidth() != b.getWidth() || a.getHeight() != b.getHeight()) {
             return false;
         }
-        return Arrays.equals(rgb(a), rgb(b));
-    }
-
-    private static int[] rgb(BufferedImage image) {
-        if (image.getType() == BufferedImage.TYPE_INT_RGB
-                && image.getRaster().getDataBuffer() instanceof DataBufferInt ints
-                && ints.getNumBanks() == 1 && ints.getData().length == image.getWidth() * image.getHeight()) {
-            return ints.getData();
-        }
-        int[] rgb = image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());
-        for (int i = 0; i < rgb.length; i++) {
-            rgb[i] &= 0xFFFFFF;
-        }
-        return rgb;
+        return Arrays.equals(RgbPixels.of(a), RgbPixels.of(b));
     }
 }
