@@ -74,18 +74,16 @@ class GradeCohortTest {
     }
 
     /**
-     * grade's arguments for a cohort: small images, and a time limit of {@value #TIME_LIMIT} s unless {@code more}
-     * gives one: short, as a student loops until it, but one that a job's first compile, which starts its compiler,
-     * keeps within on a loaded machine.
+     * grade's arguments for a cohort: small images, and a time limit of 20 s unless {@code more} gives one: short, as
+     * a student loops until it, but one that a job's first compile, which starts its compiler, keeps within on a
+     * loaded machine.
      */
-    static final String TIME_LIMIT = "30";
-
     static String[] gradeArguments(Path submissions, Path report, String... more) {
         List<String> args = new ArrayList<>(List.of("grade", "--submissions", submissions.toString(),
                 "--report", report.toString()));
         args.addAll(List.of(SMALL));
         if (!List.of(more).contains("--time-limit")) {
-            args.addAll(List.of("--time-limit", TIME_LIMIT));
+            args.addAll(List.of("--time-limit", "20"));
         }
         args.addAll(List.of(more));
         return args.toArray(String[]::new);
@@ -412,7 +410,7 @@ class GradeCohortTest {
         List<String> feedback = feedback("Loops Forever");
         assertThat(row("Loops Forever")).element(4).isEqualTo("0.00");
         assertThat(feedback).as(String.join("\n", feedback)).containsSubsequence("tick1.xml: failed",
-                "  no image within the time limit of " + TIME_LIMIT + " s (an infinite loop?); the program was stopped",
+                "  no image within the time limit of 20 s (an infinite loop?); the program was stopped",
                 "hidden scene 1: failed", "  " + HiddenVerdict.TIME_LIMIT.words());
     }
 
