@@ -1,6 +1,8 @@
 package gfx.tick1.engine.image;
 
+import java.awt.color.ColorSpace;
 import java.awt.image.BufferedImage;
+import java.awt.image.ColorModel;
 
 /**
  * An image's colours as packed 0xRRGGBB ints, row by row from the top, alpha left out: what
@@ -8,7 +10,7 @@ import java.awt.image.BufferedImage;
  * once per catalogue entry, and {@code getRGB} converts every pixel through the image's colour model
  * one call at a time; the images tick1 meets (its own renders, which are TYPE_INT_RGB, and PNGs as
  * ImageIO reads them, TYPE_3BYTE_BGR or TYPE_4BYTE_ABGR) are copied from their rasters instead.
- * In sRGB, those three types hold colours unpremultiplied, so the raster's samples are {@code getRGB}'s
+ * When their colours are sRGB's and unpremultiplied, the raster's samples are {@code getRGB}'s
  * channels; any other image goes through {@code getRGB}.
  */
 public final class RgbPixels {
@@ -20,8 +22,13 @@ public final class RgbPixels {
     public static int[] of(BufferedImage image) {
         int width = image.getWidth(), height = image.getHeight();
         int[] rgb = new int[width * height];
-        // The type alone does not say sRGB: an image of linear RGB bytes is TYPE_3BYTE_BGR too.
-        int type = image.getColorModel().getColorSpace().isCS_sRGB() ? image.getType() : BufferedImage.TYPE_CUSTOM;
+        // The type alone does not say sRGB or unpremultiplied: an image of linear RGB bytes is TYPE_3BYTE_BGR too,
+        // and coerceData(true) premultiplies an INT_ARGB image's colours without changing its type. getRGB takes
+        // the colour space as sRGB only when it is that instance, and a subclass may answer getRGB itself.
+        ColorModel model = image.getColorModel();
+        boolean plainSrgb = model.getColorSpace() == ColorSpace.getInstance(ColorSpace.CS_sRGB)
+                && !model.isAlphaPremultiplied() && image.getClass() == BufferedImage.class;
+        int type = plainSrgb ? image.getType() : BufferedImage.TYPE_CUSTOM;
         switch (type) {
             case BufferedImage.TYPE_INT_RGB, BufferedImage.TYPE_INT_ARGB -> {
                 // A pixel's data element is its packed int (alpha in the top byte for INT_ARGB).

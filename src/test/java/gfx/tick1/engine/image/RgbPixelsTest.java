@@ -2,10 +2,14 @@ package gfx.tick1.engine.image;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.awt.Transparency;
 import java.awt.color.ColorSpace;
+import java.awt.color.ICC_ColorSpace;
+import java.awt.color.ICC_Profile;
 import java.awt.image.BufferedImage;
 import java.awt.image.ComponentColorModel;
 import java.awt.image.DataBuffer;
+import java.awt.image.DataBufferByte;
 import java.awt.image.Raster;
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
@@ -16,6 +20,7 @@ import java.util.List;
 import java.util.Random;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -66,13 +71,41 @@ class RgbPixelsTest {
     void anImageInAnotherColourSpaceIsConvertedAsGetRgbConvertsIt(String name) {
         ColorSpace space = ColorSpace.getInstance(name.equals("linear RGB") ? ColorSpace.CS_LINEAR_RGB
                 : ColorSpace.CS_CIEXYZ);
-        ComponentColorModel model = new ComponentColorModel(space, false, false, java.awt.Transparency.OPAQUE,
+        ComponentColorModel model = new ComponentColorModel(space, false, false, Transparency.OPAQUE,
                 DataBuffer.TYPE_BYTE);
         BufferedImage image = new BufferedImage(model, Raster.createInterleavedRaster(DataBuffer.TYPE_BYTE, 17, 13,
                 17 * 3, 3, new int[] {2, 1, 0}, null), false, null);
-        byte[] samples = ((java.awt.image.DataBufferByte) image.getRaster().getDataBuffer()).getData();
+        byte[] samples = ((DataBufferByte) image.getRaster().getDataBuffer()).getData();
         new Random(7).nextBytes(samples);
         assertThat(RgbPixels.of(image)).as(name).isEqualTo(byGetRgb(image));
+    }
+
+    /** coerceData(true) premultiplies the colours but leaves the type INT_ARGB or 4BYTE_ABGR. */
+    @ParameterizedTest(name = "type {0}")
+    @ValueSource(ints = {BufferedImage.TYPE_INT_ARGB, BufferedImage.TYPE_4BYTE_ABGR})
+    void anImageCoercedToPremultipliedAlphaGivesGetRgbsColours(int type) {
+        BufferedImage image = random(type, 37, 23);
+        image.coerceData(true);
+        assertThat(image.getType()).as("the type after coerceData").isEqualTo(type);
+        assertThat(RgbPixels.of(image)).as("type %d, premultiplied", type).isEqualTo(byGetRgb(image));
+    }
+
+    /** A colour space that says it is sRGB but is not sRGB's own instance: getRGB converts through it. */
+    @Test
+    void aColourSpaceThatOnlyClaimsToBeSrgbIsConvertedAsGetRgbConvertsIt() {
+        ColorSpace claims = new ICC_ColorSpace(ICC_Profile.getInstance(ColorSpace.CS_LINEAR_RGB)) {
+            @Override
+            public boolean isCS_sRGB() {
+                return true;
+            }
+        };
+        ComponentColorModel model = new ComponentColorModel(claims, false, false, Transparency.OPAQUE,
+                DataBuffer.TYPE_BYTE);
+        BufferedImage image = new BufferedImage(model, Raster.createInterleavedRaster(DataBuffer.TYPE_BYTE, 17, 13,
+                17 * 3, 3, new int[] {2, 1, 0}, null), false, null);
+        new Random(7).nextBytes(((DataBufferByte) image.getRaster().getDataBuffer()).getData());
+        assertThat(image.getType()).as("the type").isEqualTo(BufferedImage.TYPE_3BYTE_BGR);
+        assertThat(RgbPixels.of(image)).as("linear RGB that claims to be sRGB").isEqualTo(byGetRgb(image));
     }
 
     static Stream<Path> referenceImages() throws IOException {
