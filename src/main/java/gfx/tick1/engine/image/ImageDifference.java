@@ -22,11 +22,11 @@ public final class ImageDifference {
     private final long sumOfSquares;
     private int minX = Integer.MAX_VALUE, minY = Integer.MAX_VALUE, maxX = -1, maxY = -1;
 
-    private ImageDifference(BufferedImage expectedImage, BufferedImage actualImage) {
-        width = expectedImage.getWidth();
-        height = expectedImage.getHeight();
-        expected = RgbPixels.of(expectedImage);
-        actual = RgbPixels.of(actualImage);
+    private ImageDifference(int width, int height, int[] expected, int[] actual) {
+        this.width = width;
+        this.height = height;
+        this.expected = expected;
+        this.actual = actual;
         long squares = 0;
         for (int y = 0; y < height; y++) {
             for (int x = 0; x < width; x++) {
@@ -57,7 +57,20 @@ public final class ImageDifference {
             throw new IllegalArgumentException("image sizes differ: expected " + expected.getWidth() + " x "
                     + expected.getHeight() + ", actual " + actual.getWidth() + " x " + actual.getHeight());
         }
-        return new ImageDifference(expected, actual);
+        return new ImageDifference(expected.getWidth(), expected.getHeight(), RgbPixels.of(expected),
+                RgbPixels.of(actual));
+    }
+
+    /**
+     * Compares two images of {@code width} x {@code height} given as their {@link RgbPixels}, so that a caller
+     * comparing one image with many reads it once.
+     */
+    public static ImageDifference between(int width, int height, int[] expected, int[] actual) {
+        if (expected.length != width * height || actual.length != width * height) {
+            throw new IllegalArgumentException("pixel counts differ from " + width + " x " + height + ": expected "
+                    + expected.length + ", actual " + actual.length);
+        }
+        return new ImageDifference(width, height, expected.clone(), actual.clone());
     }
 
     /** Channel 0 = red, 1 = green, 2 = blue of a packed 0xRRGGBB pixel. */

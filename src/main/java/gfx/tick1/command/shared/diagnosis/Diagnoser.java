@@ -3,11 +3,13 @@ package gfx.tick1.command.shared.diagnosis;
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.diagnosis.Diagnosis.Candidate;
 import gfx.tick1.engine.image.ImageDifference;
+import gfx.tick1.engine.image.RgbPixels;
 import gfx.tick1.engine.render.ReferenceRenderer;
 import gfx.tick1.engine.scene.BundledScenes;
 import gfx.tick1.engine.scene.Scene;
 import java.awt.image.BufferedImage;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.EnumSet;
 import java.util.List;
@@ -125,22 +127,26 @@ public final class Diagnoser {
         checkBorder(image);
         int width = image.getWidth(), height = image.getHeight();
         VariantRenderer renderer = new VariantRenderer(width, height);
-        BufferedImage inside = inner(image);
+        // The image, and each render, read once: every entry is compared with the same pixels twice.
+        int innerWidth = width - 2 * border, innerHeight = height - 2 * border;
+        int[] inside = RgbPixels.of(inner(image));
         Set<Variant> seen = EnumSet.copyOf(considered);
         seen.retainAll(Variant.seenInImages());
         seen.add(Variant.CORRECT);
         VariantRenderer.Renders renders = renderer.renders(scene, seen);
         SpherePixels spheres = SpherePixels.inside(renders.spheres(), width, height, border);
-        BufferedImage correct = inner(renders.images().get(Variant.CORRECT));
+        int[] correct = RgbPixels.of(inner(renders.images().get(Variant.CORRECT)));
         List<Candidate> candidates = new ArrayList<>();
         List<Variant> alikeCorrect = new ArrayList<>();
         renders.images().forEach((variant, render) -> {
+            int[] rendered = RgbPixels.of(inner(render));
             // A mistake that draws this scene exactly as the correct code does cannot be seen in it.
-            if (!variant.isCorrect() && ImageDifference.between(correct, inner(render)).differingPixels() == 0) {
+            if (!variant.isCorrect() && Arrays.equals(correct, rendered)) {
                 alikeCorrect.add(variant);
             } else {
-                candidates.add(new Candidate(variant, ImageDifference.between(inner(render), inside),
-                        spheres.match(inner(render), inside)));
+                candidates.add(new Candidate(variant,
+                        ImageDifference.between(innerWidth, innerHeight, rendered, inside),
+                        spheres.match(rendered, inside)));
             }
         });
         candidates.sort(CLOSEST_FIRST);
@@ -173,7 +179,7 @@ public final class Diagnoser {
 
     private static boolean samePixels(BufferedImage a, BufferedImage b) {
         int width = a.getWidth(), height = a.getHeight();
-        return java.util.Arrays.equals(a.getRGB(0, 0, width, height, null, 0, width),
+        return Arrays.equals(a.getRGB(0, 0, width, height, null, 0, width),
                 b.getRGB(0, 0, width, height, null, 0, width));
     }
 

@@ -1,7 +1,6 @@
 package gfx.tick1.command.shared.diagnosis;
 
 import gfx.tick1.engine.image.RgbPixels;
-import java.awt.image.BufferedImage;
 import java.util.Arrays;
 
 /**
@@ -61,9 +60,8 @@ public record SpherePixels(boolean[] mask, int count) {
         return new SpherePixels(mask, count);
     }
 
-    /** How {@code render} and {@code image} (both the size of the mask's region) agree on these pixels. */
-    Match match(BufferedImage render, BufferedImage image) {
-        int[] a = RgbPixels.of(render), b = RgbPixels.of(image);
+    /** How {@code a} and {@code b}, the {@link RgbPixels} of a render and an image of the mask's region, agree here. */
+    Match match(int[] a, int[] b) {
         int exact = 0, withinOne = 0;
         for (int i = 0; i < a.length; i++) {
             if (mask[i]) {
@@ -75,9 +73,8 @@ public record SpherePixels(boolean[] mask, int count) {
         return new Match(count, exact, withinOne);
     }
 
-    /** How many pixels outside the sphere pixels are not {@code background} (0xRRGGBB) in {@code image}. */
-    int notBackgroundOutside(BufferedImage image, int background) {
-        int[] b = RgbPixels.of(image);
+    /** How many pixels outside the sphere pixels are not {@code background} (0xRRGGBB) in {@code b}, an image's. */
+    int notBackgroundOutside(int[] b, int background) {
         int stray = 0;
         for (int i = 0; i < b.length; i++) {
             if (!mask[i] && (b[i] & 0xFFFFFF) != background) {
