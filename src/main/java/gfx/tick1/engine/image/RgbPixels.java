@@ -30,22 +30,16 @@ public final class RgbPixels {
                 && !model.isAlphaPremultiplied() && image.getClass() == BufferedImage.class;
         int type = plainSrgb ? image.getType() : BufferedImage.TYPE_CUSTOM;
         switch (type) {
-            case BufferedImage.TYPE_INT_RGB, BufferedImage.TYPE_INT_ARGB -> {
-                // A pixel's data element is its packed int (alpha in the top byte for INT_ARGB).
-                image.getRaster().getDataElements(0, 0, width, height, rgb);
-                for (int i = 0; i < rgb.length; i++) {
-                    rgb[i] &= 0xFFFFFF;
-                }
-            }
+            // A pixel's data element is its packed int (alpha in the top byte for INT_ARGB).
+            case BufferedImage.TYPE_INT_RGB, BufferedImage.TYPE_INT_ARGB ->
+                    image.getRaster().getDataElements(0, 0, width, height, rgb);
             // A pixel's data elements are its bands in the colour model's order: red, green, blue (then alpha).
             case BufferedImage.TYPE_3BYTE_BGR -> fromBytes(image, rgb, 3);
             case BufferedImage.TYPE_4BYTE_ABGR -> fromBytes(image, rgb, 4);
-            default -> {
-                image.getRGB(0, 0, width, height, rgb, 0, width);
-                for (int i = 0; i < rgb.length; i++) {
-                    rgb[i] &= 0xFFFFFF;
-                }
-            }
+            default -> image.getRGB(0, 0, width, height, rgb, 0, width);
+        }
+        for (int i = 0; i < rgb.length; i++) {
+            rgb[i] &= 0xFFFFFF;
         }
         return rgb;
     }
