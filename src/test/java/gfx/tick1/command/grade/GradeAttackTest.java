@@ -3,6 +3,7 @@ package gfx.tick1.command.grade;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
 
@@ -707,7 +708,8 @@ class GradeAttackTest {
 
     @Test
     void filesTheCodeMadeUnreadableAreTheStudentsFailureWhenGradingAsANormalUser() throws Exception {
-        assumeThat(root()).as("the tests run as root, who can grade as the user nobody (setpriv)").isTrue();
+        assumeThat(SandboxNeeded.root()).as("the tests run as root, who can grade as the user nobody (setpriv)")
+                .isTrue();
         Path home = Files.createDirectory(dir.resolve("normal-user"));
         Path classPath = Files.createDirectory(home.resolve("class-path"));
         List<String> entries = new ArrayList<>();
@@ -755,11 +757,6 @@ class GradeAttackTest {
         }
     }
 
-    /** Whether the tests run as root. */
-    private static boolean root() throws IOException {
-        return Integer.valueOf(0).equals(Files.getAttribute(Path.of("/proc/self"), "unix:uid"));
-    }
-
     /** Whether this machine gives each run a control group (the grade warns when it cannot). */
     private static boolean totalsEnforced() throws Sandbox.Unavailable, InterruptedException {
         return Sandbox.confined().enforcement().totalsNotEnforced() == null;
@@ -768,7 +765,7 @@ class GradeAttackTest {
     @Test
     void aTemporaryFolderTheSandboxCannotReachIsOneLineSayingWhatToDo() throws Exception {
         // Only root's sandbox runs as another user; a normal user's runs as that user, who reaches its own folders.
-        assumeThat(root()).as("the tests run as root, whose sandbox runs as another user").isTrue();
+        assumeThat(SandboxNeeded.root()).as("the tests run as root, whose sandbox runs as another user").isTrue();
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx------"));
         Path[] files = StudentSolution.correct().writeTo(Files.createDirectories(dir.resolve("student")));
         Grade grade = gradeFiles(files[0], files[1]);

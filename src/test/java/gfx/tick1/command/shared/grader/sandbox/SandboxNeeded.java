@@ -21,6 +21,11 @@ public final class SandboxNeeded implements ExecutionCondition {
     }
 
     /** Whether a sandbox can be made on this machine (asked once). */
+    /** Whether the tests run as root, whose sandbox runs the code as another user (tick1's own answer). */
+    public static boolean root() {
+        return ThisUser.root();
+    }
+
     public static boolean available() {
         return why() == null;
     }

@@ -54,7 +54,7 @@ class VplEvaluateTest {
 
     @BeforeAll
     static void writeTheActivitysExecutionFiles() throws IOException {
-        assumeTrue(isRoot() && Files.isExecutable(Path.of("/usr/bin/setpriv")) && Files.isExecutable(
+        assumeTrue(SandboxNeeded.root() && Files.isExecutable(Path.of("/usr/bin/setpriv")) && Files.isExecutable(
                 Path.of("/usr/bin/unshare")) && Files.isExecutable(Path.of("/usr/bin/bwrap")),
                 "needs root, setpriv, unshare and bubblewrap");
         assumeTrue(Files.isExecutable(BUILT.resolve("bin/tick1")), "needs tick1 installed (gradle installDist)");
@@ -87,14 +87,6 @@ class VplEvaluateTest {
             }
         }
         return to;
-    }
-
-    private static boolean isRoot() {
-        try {
-            return Integer.valueOf(0).equals(Files.getAttribute(Path.of("/proc/self"), "unix:uid"));
-        } catch (IOException | UnsupportedOperationException e) {
-            return false;
-        }
     }
 
     @BeforeEach
