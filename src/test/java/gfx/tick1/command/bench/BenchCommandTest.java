@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import gfx.tick1.CliRun;
 import gfx.tick1.command.render.RenderCommand;
 import gfx.tick1.Tick1;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
@@ -28,7 +27,6 @@ import picocli.CommandLine;
  * with no options but --quick. It writes the three files, with a row for every variant, into its default folder.
  * What the numbers are is the report's business, not a test's.
  */
-@SandboxProperties.Read
 class BenchCommandTest {
 
     @TempDir

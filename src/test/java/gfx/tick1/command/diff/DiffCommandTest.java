@@ -6,7 +6,6 @@ import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.behaviour.WrittenStyles;
 import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.javacode.JavaMembers;
 import gfx.tick1.command.shared.javacode.ReferenceMembers;
 import gfx.tick1.command.shared.kit.StarterKit;
@@ -23,7 +22,6 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /** {@code tick1 diff} through the real entry point. */
-@SandboxProperties.Read
 @org.junit.jupiter.api.Order(2)   // one of the longest classes: it starts early (junit-platform.properties)
 class DiffCommandTest {
 

@@ -3,7 +3,6 @@ package gfx.tick1.command.grade;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -28,7 +27,6 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * on a loaded machine a compile may take more than ten seconds by the clock.
  */
 @ExtendWith(SandboxNeeded.class)
-@SandboxProperties.Read
 class CompilingTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};

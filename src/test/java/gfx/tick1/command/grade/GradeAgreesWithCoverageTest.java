@@ -9,7 +9,6 @@ import gfx.tick1.command.shared.coverage.CatalogueOnScenes;
 import gfx.tick1.command.shared.coverage.Coverage;
 import gfx.tick1.command.shared.coverage.GradingScenes;
 import gfx.tick1.command.shared.grader.sandbox.Sandbox;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -25,7 +24,6 @@ import org.junit.jupiter.params.provider.MethodSource;
  * mistake fails a scene if and only if coverage says the scene catches it. A few mistakes, on
  * scenes where some catch them and some do not, at 160 x 120 to keep it quick.
  */
-@SandboxProperties.Read
 class GradeAgreesWithCoverageTest {
 
     @TempDir

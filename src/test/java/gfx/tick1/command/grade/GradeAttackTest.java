@@ -9,7 +9,6 @@ import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.kit.StarterKit;
 import java.io.ByteArrayOutputStream;
 import java.io.File;
@@ -60,7 +59,6 @@ import org.junit.jupiter.params.provider.CsvSource;
  * harm; the few tests that share more than that (the host's page cache, a file in /usr, the processes
  * an attack starts) take a lock.
  */
-@SandboxProperties.Read
 @Execution(ExecutionMode.CONCURRENT)
 @Order(1)   // the longest class: it starts first (junit-platform.properties)
 class GradeAttackTest {

@@ -6,7 +6,6 @@ import static org.assertj.core.api.Assumptions.assumeThat;
 import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
 import gfx.tick1.command.shared.grader.cohort.StoredCode;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -29,7 +28,6 @@ import org.junit.jupiter.api.io.TempDir;
  * of 64 MiB (a tmpfs this test mounts, so grading as root where mounting is allowed), less than
  * the 256 MiB one run's output folder may hold.
  */
-@SandboxProperties.Read
 class GradeCohortDiskTest {
 
     @TempDir

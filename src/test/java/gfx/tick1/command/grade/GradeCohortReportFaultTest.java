@@ -9,7 +9,6 @@ import static org.assertj.core.api.Assumptions.assumeThat;
 import gfx.tick1.CliRun;
 import gfx.tick1.command.grade.GradeCohortTest.Student;
 import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -27,7 +26,6 @@ import org.junit.jupiter.api.io.TempDir;
  * (as root, where mounting is allowed; skipped elsewhere), so that the rest of the report can be written.
  */
 @ExtendWith(SandboxNeeded.class)
-@SandboxProperties.Read
 class GradeCohortReportFaultTest {
 
     @TempDir

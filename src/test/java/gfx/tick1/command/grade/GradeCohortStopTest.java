@@ -10,7 +10,6 @@ import gfx.tick1.CliRun;
 import gfx.tick1.command.grade.GradeCohortTest.Student;
 import gfx.tick1.command.shared.grader.cohort.StoredCode;
 import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -33,7 +32,6 @@ import org.junit.jupiter.params.provider.CsvSource;
  * half-written stays in the report folder, and the same command again grades only the rest.
  */
 @ExtendWith(SandboxNeeded.class)
-@SandboxProperties.Read
 class GradeCohortStopTest {
 
     /** Time for the slow student to pass. */

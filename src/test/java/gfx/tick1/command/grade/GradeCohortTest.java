@@ -11,7 +11,6 @@ import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.report.Worksheet;
 import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -47,7 +46,6 @@ import org.openqa.selenium.support.ui.ExpectedConditions;
  * the cohort's options grade small cohorts of their own.
  */
 @ExtendWith(SandboxNeeded.class)
-@SandboxProperties.Read
 class GradeCohortTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};

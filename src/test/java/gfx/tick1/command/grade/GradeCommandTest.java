@@ -12,7 +12,6 @@ import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.shared.grader.grading.SubmissionGrader;
 import gfx.tick1.command.shared.grader.sandbox.RefusedNamespaces;
 import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -31,7 +30,6 @@ import org.junit.jupiter.api.io.TempDir;
  * keep the suite quick; every catalogue entry shows at that size (VariantRendererTest checks it).
  */
 @ExtendWith(SandboxNeeded.class)
-@SandboxProperties.Read
 class GradeCommandTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};

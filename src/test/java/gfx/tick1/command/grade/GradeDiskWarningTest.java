@@ -1,16 +1,15 @@
 package gfx.tick1.command.grade;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.CliRun;
-import gfx.tick1.command.shared.grader.sandbox.Sandbox;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
+import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
+import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
@@ -18,43 +17,35 @@ import org.junit.jupiter.api.io.TempDir;
  * (grading as a normal user, or where no tmpfs can be mounted), the grade says so in one warning
  * line, after its own answer, and grades; as it does of the sandbox's other weaknesses (no control
  * group). The system property tick1.grade.outputDisks=host makes such a sandbox on a machine that
- * could mount one.
+ * could mount one: it is given to a tick1 in a JVM of its own, so that the classes grading in the
+ * tests' JVM beside this one keep their output disks.
  */
-@SandboxProperties.Written
+@ExtendWith(SandboxNeeded.class)
 class GradeDiskWarningTest {
 
-    private static final String PROPERTY = "tick1.grade.outputDisks";
+    /** The start of the warning, whichever of the two reasons the machine gives. */
+    private static final String WARNING = "tick1 grade: warning: ";
+    private static final String HOST_DISK = "the output folder of each run is on the host's disk";
 
     @TempDir
     Path dir;
 
-    @BeforeEach
-    void noOutputDisks() throws InterruptedException {
-        System.setProperty(PROPERTY, "host");
-        try {
-            Sandbox.confined();
-        } catch (Sandbox.Unavailable e) {
-            assumeThat(e.getMessage()).as("bubblewrap is needed for the sandbox's warnings").isNull();
-        }
-    }
-
-    @AfterEach
-    void outputDisksAsTheMachineAllows() {
-        System.clearProperty(PROPERTY);
+    /** {@code tick1 args...} in a JVM of its own whose sandbox mounts no output disks. */
+    private CliRun withoutOutputDisks(String... args) throws IOException, InterruptedException {
+        return CliRun.inJvm(dir, List.of("-Dtick1.grade.outputDisks=host"), args);
     }
 
     @Test
     void withoutOutputDisksTheGradeSaysSoInOneWarningLineAndGrades() throws Exception {
         Path[] files = StudentSolution.correct().writeTo(dir.resolve("student"));
-        String warning = Sandbox.confined().enforcement().diskNotEnforced();
-        assertThat(warning).as("the sandbox's word that the output folder is on the host's disk").isNotNull();
 
-        CliRun run = CliRun.of("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
+        CliRun run = withoutOutputDisks("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
                 "--report", dir.resolve("report").toString(), "--width", "160", "--height", "120");
 
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_PASS);
-        assertThat(run.err().lines()).as("what the grade printed on stderr")
-                .containsOnlyOnce("tick1 grade: warning: " + warning);
+        assertThat(run.err().lines().filter(line -> line.contains(HOST_DISK)))
+                .as("what the grade printed on stderr: %s", run.transcript()).singleElement().asString()
+                .startsWith(WARNING);
     }
 
     /** The grade's own words come first (here, that a failure's images could not be written); the warning last. */
@@ -64,23 +55,25 @@ class GradeDiskWarningTest {
                 .writeTo(dir.resolve("student"));
         Files.writeString(dir.resolve("report"), "a file where the report folder should go");
 
-        CliRun run = CliRun.of("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
-                "--report", dir.resolve("report").toString(), "--width", "160", "--height", "120");
+        CliRun run = withoutOutputDisks("grade", "--sphere", files[0].toString(), "--renderer",
+                files[1].toString(), "--report", dir.resolve("report").toString(), "--width", "160", "--height", "120");
 
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_CANNOT_WRITE);
-        assertThat(run.err().lines().toList()).as("what the grade printed on stderr").hasSizeGreaterThan(1)
-                .endsWith("tick1 grade: warning: " + Sandbox.confined().enforcement().diskNotEnforced())
+        List<String> err = run.err().lines().toList();
+        assertThat(err).as("what the grade printed on stderr").hasSizeGreaterThan(1)
                 .first().asString().contains("exists and is not a folder");
+        assertThat(err.get(err.size() - 1)).as("the last line it printed on stderr").startsWith(WARNING)
+                .contains(HOST_DISK);
     }
 
     /** Nothing was graded, so there is nothing for a warning to qualify: the error is the one line. */
     @Test
-    void aOneLineErrorIsAllThatIsPrinted() {
-        CliRun run = CliRun.of("grade", "--sphere", dir.resolve("Sphere.java").toString(), "--renderer",
+    void aOneLineErrorIsAllThatIsPrinted() throws Exception {
+        CliRun run = withoutOutputDisks("grade", "--sphere", dir.resolve("Sphere.java").toString(), "--renderer",
                 dir.resolve("Renderer.java").toString(), "--report", dir.resolve("report").toString());
 
         assertThat(run.status()).as(run.transcript()).isEqualTo(GradeCommand.EXIT_USAGE);
         assertThat(run.err().lines()).as("what the grade printed on stderr").hasSize(1)
-                .allMatch(line -> line.startsWith("tick1 grade: ") && !line.startsWith("tick1 grade: warning:"));
+                .allMatch(line -> line.startsWith("tick1 grade: ") && !line.startsWith(WARNING));
     }
 }

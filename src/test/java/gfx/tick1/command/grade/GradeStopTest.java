@@ -3,7 +3,6 @@ package gfx.tick1.command.grade;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -19,7 +18,6 @@ import org.junit.jupiter.api.io.TempDir;
  * gives a stop.
  */
 @ExtendWith(SandboxNeeded.class)
-@SandboxProperties.Read
 class GradeStopTest {
 
     @TempDir

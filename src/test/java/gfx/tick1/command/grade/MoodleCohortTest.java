@@ -8,7 +8,6 @@ import static gfx.tick1.command.grade.GradeCohortTest.zip;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -26,7 +25,6 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * nothing is run in the sandbox.
  */
 @ExtendWith(SandboxNeeded.class)
-@SandboxProperties.Read
 class MoodleCohortTest {
 
     @Test

@@ -22,7 +22,6 @@ import org.junit.jupiter.api.io.TempDir;
  * answers each request as the harness's compile server does, after doing what the test says to
  * the request's folder.
  */
-@SandboxProperties.Read
 class CompileServerTest {
 
     private static final Duration LIMIT = Duration.ofSeconds(60);

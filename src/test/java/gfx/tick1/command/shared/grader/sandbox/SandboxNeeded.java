@@ -20,12 +20,12 @@ public final class SandboxNeeded implements ExecutionCondition {
                 : ConditionEvaluationResult.disabled("needs the sandbox: " + why);
     }
 
-    /** Whether a sandbox can be made on this machine (asked once). */
     /** Whether the tests run as root, whose sandbox runs the code as another user (tick1's own answer). */
     public static boolean root() {
         return ThisUser.root();
     }
 
+    /** Whether a sandbox can be made on this machine (asked once). */
     public static boolean available() {
         return why() == null;
     }

@@ -17,7 +17,6 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * Which of the organiser's scenes the sandbox refuses to hide because the runs need what is in
  * them; every other file of the host's the runs never see ({@link SystemFilesTest}).
  */
-@SandboxProperties.Read
 class SandboxTest {
 
     @TempDir

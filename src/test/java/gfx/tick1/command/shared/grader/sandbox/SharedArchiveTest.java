@@ -13,7 +13,6 @@ import org.junit.jupiter.api.io.TempDir;
  * The class data sharing archive a cohort's runs map is made by a run of the starter kit that
  * renders its scene, so that it holds the image classes and ImageIO's PNG writer as well as javac.
  */
-@SandboxProperties.Read
 class SharedArchiveTest {
 
     @TempDir

@@ -5,7 +5,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gfx.tick1.CliRun;
 import gfx.tick1.command.shared.grader.grading.HiddenVerdict;
 import gfx.tick1.command.grade.StudentSolution;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.vpl.VplParser.Annotation;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -23,7 +22,6 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * it ({@link VplParser}), after the jail's pseudo-terminal. Images are 160 x 120 to keep the suite quick.
  */
 @ExtendWith(SandboxNeeded.class)
-@SandboxProperties.Written
 class GradeVplFormatTest {
 
     private static final List<String> FILES = List.of("Sphere.java", "Renderer.java");
@@ -37,11 +35,15 @@ class GradeVplFormatTest {
     Path dir;
 
     private CliRun grade(String sphereName, String sphere, String renderer) throws IOException {
+        return CliRun.of(gradeArguments(sphereName, sphere, renderer));
+    }
+
+    private String[] gradeArguments(String sphereName, String sphere, String renderer) throws IOException {
         Path sphereFile = dir.resolve(sphereName), rendererFile = dir.resolve("Renderer.java");
         Files.writeString(sphereFile, sphere);
         Files.writeString(rendererFile, renderer);
-        return CliRun.of("grade", "--format", "vpl", "--grade-range", "0:10", "--sphere", sphereFile.toString(),
-                "--renderer", rendererFile.toString(), "--width", "160", "--height", "120");
+        return new String[] {"grade", "--format", "vpl", "--grade-range", "0:10", "--sphere", sphereFile.toString(),
+            "--renderer", rendererFile.toString(), "--width", "160", "--height", "120"};
     }
 
     private static String sphere() {
@@ -134,14 +136,10 @@ class GradeVplFormatTest {
     }
 
     @Test
-    void withoutASandboxNothingIsGradedAndTheReportSaysStaffMustLook() throws IOException {
-        System.setProperty("tick1.grade.bwrap", dir.resolve("no-bwrap").toString());
-        CliRun run;
-        try {
-            run = grade("Sphere.java", sphere(), renderer());
-        } finally {
-            System.clearProperty("tick1.grade.bwrap");
-        }
+    void withoutASandboxNothingIsGradedAndTheReportSaysStaffMustLook() throws IOException, InterruptedException {
+        // The missing bwrap is named to a tick1 in a JVM of its own, so that no other test's sandbox is affected.
+        CliRun run = CliRun.inJvm(dir, List.of("-Dtick1.grade.bwrap=" + dir.resolve("no-bwrap")),
+                gradeArguments("Sphere.java", sphere(), renderer()));
         String received = VplParser.throughPty(run.out());
 
         assertThat(VplParser.proposedGrade(received)).as(run.transcript()).isEmpty();

@@ -3,7 +3,6 @@ package gfx.tick1.command.shared.grader.vpl;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,7 +11,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** {@code tick1 vpl}: the files it writes, and what it refuses. */
-@SandboxProperties.Read
 class VplCommandTest {
 
     @TempDir

@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.command.grade.StudentSolution;
-import gfx.tick1.command.shared.grader.sandbox.SandboxProperties;
 import gfx.tick1.command.shared.grader.vpl.VplParser.Annotation;
 import java.io.IOException;
 import java.io.InputStream;
@@ -35,7 +34,6 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * otherwise.
  */
 @ExtendWith(SandboxNeeded.class)
-@SandboxProperties.Read
 class VplEvaluateTest {
 
     /** The jail's user: far from real users. */
