@@ -18,6 +18,7 @@ import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
@@ -27,6 +28,7 @@ import picocli.CommandLine;
  * with no options but --quick. It writes the three files, with a row for every variant, into its default folder.
  * What the numbers are is the report's business, not a test's.
  */
+@Order(18)   // one of the longest classes: it starts early (junit-platform.properties)
 class BenchCommandTest {
 
     @TempDir

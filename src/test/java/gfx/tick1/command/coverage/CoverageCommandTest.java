@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -18,6 +19,7 @@ import org.junit.jupiter.api.io.TempDir;
  * {@code tick1 coverage} through the real entry point: its table, CSV and page, and the catalogue's
  * column in the docs.
  */
+@Order(15)   // one of the longest classes: it starts early (junit-platform.properties)
 class CoverageCommandTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};

@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
@@ -27,6 +28,7 @@ import org.junit.jupiter.api.extension.ExtendWith;
  * on a loaded machine a compile may take more than ten seconds by the clock.
  */
 @ExtendWith(SandboxNeeded.class)
+@Order(13)   // one of the longest classes: it starts early (junit-platform.properties)
 class CompilingTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};

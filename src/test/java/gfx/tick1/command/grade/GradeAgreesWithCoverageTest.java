@@ -14,6 +14,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
@@ -24,6 +25,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * mistake fails a scene if and only if coverage says the scene catches it. A few mistakes, on
  * scenes where some catch them and some do not, at 160 x 120 to keep it quick.
  */
+@Order(11)   // one of the longest classes: it starts early (junit-platform.properties)
 class GradeAgreesWithCoverageTest {
 
     @TempDir

@@ -19,6 +19,7 @@ import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -28,6 +29,7 @@ import org.junit.jupiter.api.io.TempDir;
  * of 64 MiB (a tmpfs this test mounts, so grading as root where mounting is allowed), less than
  * the 256 MiB one run's output folder may hold.
  */
+@Order(6)   // one of the longest classes: it starts early (junit-platform.properties)
 class GradeCohortDiskTest {
 
     @TempDir

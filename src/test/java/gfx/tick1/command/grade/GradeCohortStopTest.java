@@ -20,6 +20,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
@@ -32,6 +33,7 @@ import org.junit.jupiter.params.provider.CsvSource;
  * half-written stays in the report folder, and the same command again grades only the rest.
  */
 @ExtendWith(SandboxNeeded.class)
+@Order(7)   // one of the longest classes: it starts early (junit-platform.properties)
 class GradeCohortStopTest {
 
     /** Time for the slow student to pass. */

@@ -28,6 +28,7 @@ import java.util.stream.Stream;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
@@ -46,6 +47,7 @@ import org.openqa.selenium.support.ui.ExpectedConditions;
  * the cohort's options grade small cohorts of their own.
  */
 @ExtendWith(SandboxNeeded.class)
+@Order(4)   // one of the longest classes: it starts early (junit-platform.properties)
 class GradeCohortTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};

@@ -17,6 +17,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
@@ -30,6 +31,7 @@ import org.junit.jupiter.api.io.TempDir;
  * keep the suite quick; every catalogue entry shows at that size (VariantRendererTest checks it).
  */
 @ExtendWith(SandboxNeeded.class)
+@Order(3)   // one of the longest classes: it starts early (junit-platform.properties)
 class GradeCommandTest {
 
     private static final String[] SMALL = {"--width", "160", "--height", "120"};

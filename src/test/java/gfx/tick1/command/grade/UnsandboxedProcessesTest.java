@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -14,6 +15,7 @@ import org.junit.jupiter.api.io.TempDir;
  * {@code grade --no-sandbox}: the Java process that runs the student's code stops the processes the code started
  * when it ends, and ends itself when tick1 is gone (killed with SIGKILL, which no clean-up of tick1's survives).
  */
+@Order(19)   // one of the longest classes: it starts early (junit-platform.properties)
 class UnsandboxedProcessesTest {
 
     /** The render's own sleep: far longer than any wait of these tests. */

@@ -24,6 +24,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.io.TempDir;
@@ -42,6 +43,7 @@ import picocli.CommandLine;
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 @ResourceLock(value = PreviewServerTest.RENDERS_ABANDONED, mode = ResourceAccessMode.READ)
+@Order(10)   // one of the longest classes: it starts early (junit-platform.properties)
 class PreviewPageTest {
 
     private static final Path TICK1_XML = Path.of("scenes", "tick1.xml");

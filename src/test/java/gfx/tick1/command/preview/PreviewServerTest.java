@@ -28,12 +28,14 @@ import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.api.parallel.ResourceLock;
 
 /** The previewer's HTTP answers, and whom it refuses: plain HTTP, no browser needed. */
 @ResourceLock(PreviewServerTest.RENDERS_ABANDONED)
+@Order(20)   // one of the longest classes: it starts early (junit-platform.properties)
 class PreviewServerTest {
 
     /**

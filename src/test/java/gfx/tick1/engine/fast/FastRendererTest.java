@@ -20,12 +20,14 @@ import java.nio.file.Path;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Random;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /** The fast kernel against its oracle, the readable Renderer: the same pixels, always. */
+@Order(9)   // one of the longest classes: it starts early (junit-platform.properties)
 class FastRendererTest {
 
     static List<Path> scenes() throws IOException {

@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.stream.Collectors;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -24,6 +25,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * The hard cases of {@code scenes/hard} (see docs/hard-cases.md) against the truth renderer.
  * Their golden images are checked by {@code GoldenImageTest} like every other scene's.
  */
+@Order(5)   // one of the longest classes: it starts early (junit-platform.properties)
 class HardCaseTest {
 
     private static final Path HARD = Path.of("scenes", "hard");

@@ -11,6 +11,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -18,6 +19,7 @@ import org.junit.jupiter.api.io.TempDir;
  * The loader's limits keep every legal scene within a 1 GiB heap (Java's default on a machine with
  * 4 GiB of memory), DOM and all: the largest scenes each limit allows load in a JVM given no more.
  */
+@Order(16)   // one of the longest classes: it starts early (junit-platform.properties)
 class SceneLoaderMemoryTest {
 
     private static final String HEAP = "-Xmx1g";

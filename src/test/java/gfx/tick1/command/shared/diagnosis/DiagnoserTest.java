@@ -16,6 +16,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Set;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -26,6 +27,7 @@ import org.junit.jupiter.params.provider.ValueSource;
  * The diagnosis names the handout's own figures, read from {@code ../shared/handout-figures}
  * when it exists (never copied in), and never calls a correct image a mistake.
  */
+@Order(14)   // one of the longest classes: it starts early (junit-platform.properties)
 class DiagnoserTest {
 
     private static final Path FIGURES = Path.of("..", "shared", "handout-figures");

@@ -15,6 +15,7 @@ import org.assertj.core.data.Offset;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.io.TempDir;
@@ -29,6 +30,7 @@ import org.openqa.selenium.support.ui.ExpectedConditions;
  * where Chromium is not installed.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
+@Order(21)   // one of the longest classes: it starts early (junit-platform.properties)
 class CohortPageBrowserTest {
 
     private static final Duration PATIENCE = Duration.ofSeconds(60);   // a slow shared CI machine

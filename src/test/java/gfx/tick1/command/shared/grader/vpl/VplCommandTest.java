@@ -7,10 +7,12 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** {@code tick1 vpl}: the files it writes, and what it refuses. */
+@Order(17)   // one of the longest classes: it starts early (junit-platform.properties)
 class VplCommandTest {
 
     @TempDir
