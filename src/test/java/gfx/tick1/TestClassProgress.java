@@ -96,7 +96,8 @@ public final class TestClassProgress implements TestExecutionListener {
             testClassOf(id).ifPresent(c -> counts.computeIfAbsent(c.getUniqueId(), k -> new long[4])[2] += count);
             tests += count;
             skippedTests += count;
-            skipped.add(name(id) + (id.isTest() ? "" : " (" + count + " tests)") + ": " + reason);
+            String tally = id.isTest() ? "" : " (" + count + (count == 1 ? " test)" : " tests)");
+            skipped.add(name(id) + tally + ": " + reason);
             if (isTestClass(id)) {
                 print(id);
             }
