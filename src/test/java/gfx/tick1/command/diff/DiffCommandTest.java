@@ -160,16 +160,16 @@ class DiffCommandTest {
         assertThat(run.err()).isEmpty();
     }
 
-    /**
-     * {@code tick1 diff} of a style's two files, run once per style, on first use, for the tests that
-     * read its differences and its hints: each run compiles and probes the files in the sandbox.
-     */
     /** {@link #diffOf}, where the sandbox can be made (else the test is skipped): the methods' behaviour is said. */
     private static CliRun sandboxedDiffOf(CorrectStyles.Style style) throws IOException, InterruptedException {
         org.junit.jupiter.api.Assumptions.assumeTrue(sandboxHere(), "the sandbox can be made here");
         return diffOf(style);
     }
 
+    /**
+     * {@code tick1 diff} of a style's two files, run once per style, on first use, for the tests that
+     * read its differences and its hints: each run compiles and probes the files in the sandbox.
+     */
     private static synchronized CliRun diffOf(CorrectStyles.Style style) throws IOException {
         CliRun run = STYLE_RUNS.get(style);
         if (run == null) {
