@@ -12,9 +12,9 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * The fuzz tests' two properties ({@link SceneFuzzTest}) on every seed Jazzer starts from: the files of
- * the bad-input corpus, the example scenes and any finding saved, which the build puts into the resource
- * folder gfx/tick1/fuzz/SceneFuzzTestInputs.
+ * The fuzz tests' two properties ({@link SceneFuzzTest}) on every file below the resource folder
+ * gfx/tick1/fuzz/SceneFuzzTestInputs, each seed Jazzer starts from among them: the bad-input corpus, the
+ * example scenes (the hard cases too) and any finding saved, which the build puts there.
  */
 class SceneSeedsTest {
 
