@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import picocli.CommandLine;
 
 /**
@@ -18,6 +19,9 @@ import picocli.CommandLine;
  * and error, and the bytes written to standard output (the image, for {@code -o -}).
  */
 public record CliRun(int status, String out, String err, byte[] stdout) {
+
+    /** How long a tick1 in a JVM of its own may take: far more than any test's command needs, so a hang fails. */
+    private static final int MINUTES_AT_MOST = 10;
 
     public static CliRun of(String... args) {
         ByteArrayOutputStream binary = new ByteArrayOutputStream();
@@ -53,8 +57,12 @@ public record CliRun(int status, String out, String err, byte[] stdout) {
             Process process = new ProcessBuilder(command).directory(folder.toFile())
                     .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")))
                     .redirectOutput(out.toFile()).redirectError(err.toFile()).start();
-            int status = process.waitFor();
-            return new CliRun(status, Files.readString(out), Files.readString(err), new byte[0]);
+            if (!process.waitFor(MINUTES_AT_MOST, TimeUnit.MINUTES)) {
+                process.destroyForcibly().waitFor();
+                throw new AssertionError("tick1 " + String.join(" ", args) + " did not end within " + MINUTES_AT_MOST
+                        + " minutes, and was killed; it printed:\n" + Files.readString(out) + Files.readString(err));
+            }
+            return new CliRun(process.exitValue(), Files.readString(out), Files.readString(err), new byte[0]);
         } finally {
             Files.delete(out);
             Files.delete(err);
