@@ -39,11 +39,10 @@ public final class SceneLoader {
     /** Files larger than this are refused before parsing. */
     public static final long MAX_FILE_BYTES = 64L * 1024 * 1024;
     /**
-     * Scenes with more elements than this are refused rather than exhausting memory. A sphere
-     * element with its five attributes and recorded position takes about 1 KB of heap, so a scene
-     * at this limit peaks at about 350 MiB (250 MiB of it live): with the 64 MiB file limit, every
-     * legal scene loads in a 1 GiB heap, Java's default on a machine with 4 GiB of memory. (Tick
-     * 1's scenes have a handful of spheres; the benchmark's largest crowd has 10,000.)
+     * Scenes with more elements than this are refused rather than exhausting memory: with the 64 MiB
+     * file limit, every legal scene loads in a 1 GiB heap, Java's default on a machine with 4 GiB of
+     * memory (SceneLoaderMemoryTest holds it; docs/hostile-input.md gives the peaks). Tick 1's scenes
+     * have a handful of spheres; the benchmark's largest crowd has 10,000.
      */
     public static final int MAX_ELEMENTS = 250_000;
     /**
