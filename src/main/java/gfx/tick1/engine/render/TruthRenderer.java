@@ -26,7 +26,7 @@ import java.util.stream.IntStream;
  * pixel needs; {@code TruthRendererTest} checks it against closed-form answers and against
  * {@link java.math.BigDecimal} arithmetic.
  *
- * <p>It is slow (about 30 times the double renderer) and meant to be.
+ * <p>It is slow, many times the double renderer, and meant to be: each operation is a few on doubles.
  */
 public final class TruthRenderer {
 
