@@ -63,14 +63,15 @@ public final class ImageDifference {
 
     /**
      * Compares two images of {@code width} x {@code height} given as their {@link RgbPixels}, so that a caller
-     * comparing one image with many reads it once.
+     * comparing one image with many reads it once. The difference keeps the arrays, and only reads them: they must
+     * not change afterwards.
      */
     public static ImageDifference between(int width, int height, int[] expected, int[] actual) {
         if (expected.length != width * height || actual.length != width * height) {
             throw new IllegalArgumentException("pixel counts differ from " + width + " x " + height + ": expected "
                     + expected.length + ", actual " + actual.length);
         }
-        return new ImageDifference(width, height, expected.clone(), actual.clone());
+        return new ImageDifference(width, height, expected, actual);
     }
 
     /** Channel 0 = red, 1 = green, 2 = blue of a packed 0xRRGGBB pixel. */
