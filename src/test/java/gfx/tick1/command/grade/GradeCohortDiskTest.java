@@ -1,9 +1,9 @@
 package gfx.tick1.command.grade;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.TestTmpfs;
 import gfx.tick1.Tick1;
 import gfx.tick1.command.shared.grader.cohort.StoredCode;
 import java.io.ByteArrayOutputStream;
@@ -45,8 +45,7 @@ class GradeCohortDiskTest {
     @AfterEach
     void unmount() throws Exception {
         if (mounted != null) {
-            // Lazily: a process another test starts meanwhile can hold the mount a moment ("target is busy").
-            new ProcessBuilder("/bin/umount", "--lazy", mounted.toString()).inheritIO().start().waitFor();
+            TestTmpfs.unmount(mounted);
         }
     }
 
@@ -154,9 +153,7 @@ class GradeCohortDiskTest {
     private Path temporaryFolder(String name, String options) throws IOException, InterruptedException {
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
         Path folder = Files.createDirectory(dir.resolve(name));
-        Process mount = new ProcessBuilder("/bin/mount", "-t", "tmpfs", "-o", options + ",mode=0711", "tick1-test",
-                folder.toString()).redirectErrorStream(true).start();
-        assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
+        TestTmpfs.mount(folder, options + ",mode=0711");
         mounted = folder;
         return folder;
     }

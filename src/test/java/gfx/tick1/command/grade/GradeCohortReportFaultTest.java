@@ -7,6 +7,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.CliRun;
+import gfx.tick1.TestTmpfs;
 import gfx.tick1.command.grade.GradeCohortTest.Student;
 import gfx.tick1.command.shared.grader.sandbox.SandboxNeeded;
 import java.io.IOException;
@@ -38,17 +39,14 @@ class GradeCohortReportFaultTest {
     @AfterAll
     static void unmount() throws Exception {
         for (Path folder : MOUNTED) {
-            // Lazily: a process another test starts meanwhile can hold the mount a moment ("target is busy").
-            new ProcessBuilder("/bin/umount", "--lazy", folder.toString()).inheritIO().start().waitFor();
+            TestTmpfs.unmount(folder);
         }
     }
 
     /** The report folder {@code name}, its state folder a tmpfs mounted with {@code options}. */
     private static Path reportWithState(String name, String options) throws IOException, InterruptedException {
         Path state = Files.createDirectories(dir.resolve(name).resolve(CohortCommand.STATE_FOLDER));
-        Process mount = new ProcessBuilder("/bin/mount", "-t", "tmpfs", "-o", options, "tick1-test", state.toString())
-                .redirectErrorStream(true).start();
-        assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
+        TestTmpfs.mount(state, options);
         MOUNTED.add(state);
         return state.getParent();
     }

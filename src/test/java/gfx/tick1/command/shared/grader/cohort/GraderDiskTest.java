@@ -3,6 +3,7 @@ package gfx.tick1.command.shared.grader.cohort;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
 
+import gfx.tick1.TestTmpfs;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -117,9 +118,7 @@ class GraderDiskTest {
     @Test
     void aDiskWithLessRoomThanARunMayWriteIsShortOnlyOnceARunHasFilledIt() throws Exception {
         Path small = Files.createDirectory(dir.resolve("small"));
-        Process mount = new ProcessBuilder("/bin/mount", "-t", "tmpfs", "-o", "size=64m", "tick1-test",
-                small.toString()).redirectErrorStream(true).start();
-        assumeThat(mount.waitFor()).as("a tmpfs can be mounted here (as root)").isZero();
+        TestTmpfs.mount(small, "size=64m");
         try {
             assertThat(GraderDisk.shortOfSpace(small)).as("64 MiB free: less than a run may write, but not full")
                     .isNull();
@@ -127,8 +126,7 @@ class GraderDiskTest {
             assertThat(GraderDisk.shortOfSpace(small)).as("8 MiB free, after a run wrote the rest")
                     .contains("was full when its run failed");
         } finally {
-            // Lazily: a process another test starts meanwhile can hold the mount a moment ("target is busy").
-            new ProcessBuilder("/bin/umount", "--lazy", small.toString()).inheritIO().start().waitFor();
+            TestTmpfs.unmount(small);
         }
     }
 }
