@@ -8,7 +8,9 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -181,6 +183,23 @@ final class SystemFiles {
      * (its own included); none that ldd cannot find.
      */
     private static List<Path> librariesLoadedBy(List<Path> programs) throws IOException, InterruptedException {
+        List<Path> known = LOADED_BY.get(programs);
+        if (known == null) {
+            known = askLdd(programs);
+            LOADED_BY.put(List.copyOf(programs), known);
+        }
+        return known;
+    }
+
+    /**
+     * What ldd said of each list of programs in this JVM: their libraries do not change while tick1 runs, and
+     * ldd starts the loader anew for each program, which costs more than the rest of finding the host's files.
+     * A process that makes many sandboxes (the tests' own JVM, running diffs in-process) asks it once.
+     */
+    private static final Map<List<Path>, List<Path>> LOADED_BY = new ConcurrentHashMap<>();
+
+    /** The libraries ldd says {@code programs} load, as {@link #librariesLoadedBy}, asked anew. */
+    private static List<Path> askLdd(List<Path> programs) throws IOException, InterruptedException {
         if (programs.isEmpty()) {
             return List.of();
         }
@@ -207,6 +226,6 @@ final class SystemFiles {
         if (libraries.isEmpty()) {
             throw new IOException("ldd listed no library that java loads");
         }
-        return libraries;
+        return List.copyOf(libraries);
     }
 }
