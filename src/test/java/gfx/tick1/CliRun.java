@@ -1,7 +1,6 @@
 package gfx.tick1;
 
 import gfx.tick1.command.render.RenderCommand;
-import gfx.tick1.command.shared.cli.MainClass;
 import java.io.ByteArrayOutputStream;
 import java.io.File;
 import java.io.IOException;
@@ -50,7 +49,7 @@ public record CliRun(int status, String out, String err, byte[] stdout) {
             throws IOException, InterruptedException {
         List<String> command = java();
         command.addAll(jvmOptions);
-        command.addAll(List.of("-cp", System.getProperty("java.class.path"), MainClass.NAME));
+        command.addAll(Tick1Jvm.mainClass());
         command.addAll(List.of(args));
         Path out = Files.createTempFile("tick1-out", ".txt"), err = Files.createTempFile("tick1-err", ".txt");
         try {

@@ -9,6 +9,7 @@ import static org.assertj.core.api.Assumptions.assumeThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.Tick1;
+import gfx.tick1.Tick1Jvm;
 import gfx.tick1.command.shared.kit.StarterKit;
 import java.io.ByteArrayOutputStream;
 import java.io.File;
@@ -206,7 +207,7 @@ class GradeAttackTest {
             Files.writeString(sphere, toTheListener(resourceOr(folder + "Sphere.java", StarterKit.source("Sphere"))));
             Files.writeString(renderer, toTheListener(resourceOr(folder + "Renderer.java", null)));
         }
-        return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary,
+        return gradeFilesAs(List.of(), null, temporary,
                 STARTS_PROGRAMS.contains(attack), sphere, renderer, options);
     }
 
@@ -241,11 +242,14 @@ class GradeAttackTest {
     private static final String RENDER = "    public BufferedImage render(Scene scene) {\n";
 
     private Grade gradeFiles(Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
-        return gradeFilesAs(List.of(), System.getProperty("java.class.path"), temporary, false, sphere, renderer,
+        return gradeFilesAs(List.of(), null, temporary, false, sphere, renderer,
                 options);
     }
 
-    /** A grade started by {@code launcher} (setpriv: as another user), with this class path and temporary folder. */
+    /**
+     * A grade started by {@code launcher} (setpriv: as another user), with this class path (null: the tests' own, as
+     * {@link Tick1Jvm} starts tick1) and temporary folder.
+     */
     private Grade gradeFilesAs(List<String> launcher, String classPath, Path temporaryFolder, boolean processes,
             Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(launcher);
@@ -253,9 +257,9 @@ class GradeAttackTest {
         command.addAll(List.of(
                 GRADER_HEAP, "-Djava.awt.headless=true", "-Djava.io.tmpdir=" + temporaryFolder,
                 "-Dtick1.grade.sandboxAlsoShows=" + String.join(File.pathSeparator, ATTACK_TOOLS),
-                "-Dtick1.grade.sandboxAllowsProcesses=" + processes,
-                "-cp", classPath,
-                Tick1.class.getName(), "grade", "--sphere", sphere.toString(), "--renderer", renderer.toString()));
+                "-Dtick1.grade.sandboxAllowsProcesses=" + processes));
+        command.addAll(classPath == null ? Tick1Jvm.mainClass() : List.of("-cp", classPath, Tick1.class.getName()));
+        command.addAll(List.of("grade", "--sphere", sphere.toString(), "--renderer", renderer.toString()));
         if (!List.of(options).contains("--report")) {
             command.addAll(List.of("--report", dir.resolve("report").toString()));
         }
@@ -806,10 +810,10 @@ class GradeAttackTest {
         Path[] files = StudentSolution.correct().editSphere("double s = s1 > 0 ? s1 : s2;",
                 "double s = s1 > 0 ? s1 : s2; while (s > 0) { }").writeTo(student);
         List<String> command = CliRun.java();
-        command.addAll(List.of(GRADER_HEAP, "-Djava.io.tmpdir=" + temporary, "-cp",
-                System.getProperty("java.class.path"), Tick1.class.getName(), "grade",
-                "--sphere", files[0].toString(), "--renderer", files[1].toString(), "--time-limit", "600",
-                "--width", "16", "--height", "12"));
+        command.addAll(List.of(GRADER_HEAP, "-Djava.io.tmpdir=" + temporary));
+        command.addAll(Tick1Jvm.mainClass());
+        command.addAll(List.of("grade", "--sphere", files[0].toString(), "--renderer", files[1].toString(),
+                "--time-limit", "600", "--width", "16", "--height", "12"));
         Process grade = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
         // The student's code runs in a JVM whose class path is /harness.
         for (int i = 0; i < 600 && grade.descendants().noneMatch(p -> p.info().commandLine().orElse("")

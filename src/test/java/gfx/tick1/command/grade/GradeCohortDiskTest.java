@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
 import gfx.tick1.TestTmpfs;
-import gfx.tick1.Tick1;
+import gfx.tick1.Tick1Jvm;
 import gfx.tick1.command.shared.grader.cohort.StoredCode;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -189,8 +189,9 @@ class GradeCohortDiskTest {
     private static String grade(Path temporary, Path zip, Path report, int jobs)
             throws IOException, InterruptedException {
         List<String> command = CliRun.java();
-        command.addAll(List.of("-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
-                Tick1.class.getName(), "grade", "--submissions", zip.toString(), "--report", report.toString(),
+        command.add("-Djava.io.tmpdir=" + temporary);
+        command.addAll(Tick1Jvm.mainClass());
+        command.addAll(List.of("grade", "--submissions", zip.toString(), "--report", report.toString(),
                 "--width", "160", "--height", "120", "--time-limit", "30", "--jobs", Integer.toString(jobs),
                 "--no-lookalikes"));
         Process grade = new ProcessBuilder(command).redirectErrorStream(true).start();
