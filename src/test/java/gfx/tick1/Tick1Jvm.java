@@ -26,6 +26,9 @@ import java.util.stream.Stream;
  * name in a later one as on the class path. The jar and the archive are made once, the first time a test asks, in
  * a folder of build/ removed when the tests' JVM ends. Where either cannot be made, tick1 starts from the class
  * path as it is; a JVM that cannot map the archive starts without it, silently.
+ *
+ * <p>A cohort's stored results are keyed by the code that graded them, here the jar: a grade resumed in the tests'
+ * own JVM, which reads the folders, grades again what a tick1 started so had stored.
  */
 public final class Tick1Jvm {
 

@@ -3,7 +3,7 @@ package gfx.tick1.command.grade;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gfx.tick1.CliRun;
-import gfx.tick1.Tick1Jvm;
+import gfx.tick1.Tick1;
 import gfx.tick1.command.preview.HeadlessChromium;
 import gfx.tick1.command.shared.behaviour.Variant;
 import gfx.tick1.command.shared.grader.cohort.StoredCode;
@@ -620,8 +620,10 @@ class GradeCohortTest {
                 dir.resolve("tmp"), PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx--x--x")));
         List<String> command = CliRun.java();
         command.addAll(jvmOptions);
-        command.add("-Djava.io.tmpdir=" + temporary);
-        command.addAll(Tick1Jvm.mainClass());
+        // The class path's folders, not Tick1Jvm's jar: a grade stopped here is resumed in the tests' own JVM, and
+        // a stored result is another build's (graded again) unless the code it was graded by is the same files.
+        command.addAll(List.of("-Djava.io.tmpdir=" + temporary, "-cp", System.getProperty("java.class.path"),
+                Tick1.class.getName()));
         command.addAll(List.of(args));
         return new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve("grade.log").toFile())
                 .start();
