@@ -247,8 +247,8 @@ class GradeAttackTest {
     }
 
     /**
-     * A grade started by {@code launcher} (setpriv: as another user), with this class path (null: the tests' own, as
-     * {@link Tick1Jvm} starts tick1) and temporary folder.
+     * A grade started by {@code launcher} (setpriv: as another user), with this class path and temporary folder; with
+     * a null class path, as {@link Tick1Jvm} starts tick1, whose folder in build/ only the tests' user can read.
      */
     private Grade gradeFilesAs(List<String> launcher, String classPath, Path temporaryFolder, boolean processes,
             Path sphere, Path renderer, String... options) throws IOException, InterruptedException {
