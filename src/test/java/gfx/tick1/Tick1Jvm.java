@@ -1,6 +1,7 @@
 package gfx.tick1;
 
 import gfx.tick1.command.shared.cli.MainClass;
+import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
@@ -8,7 +9,6 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
@@ -28,9 +28,9 @@ import java.util.stream.Stream;
  * kept, and tick1 starts from the class path as it is. The archive is dynamic, written at the end of a grade of
  * the course's correct solution: unlike the installed launcher's static one, it leaves out the classes of old
  * bytecode (picocli's annotations), which load from the jar as before. Both are made once, the first time a test
- * asks, in build/tick1-jvm-PID, removed when the tests' JVM ends (or by the next run, when it was killed). Where
- * the jar cannot be made, tick1 starts from the class path as it is; where the archive cannot, from the jar alone;
- * a JVM that cannot map the archive starts without it, silently.
+ * asks, in build/tick1-jvm-PID, which {@link WorkFolder#delete} removes when the tests' JVM ends (or the next run
+ * does, when it was killed). Where the jar cannot be made, tick1 starts from the class path as it is; where the
+ * archive cannot, from the jar alone; a JVM that cannot map the archive starts without it, silently.
  *
  * <p>A cohort's stored results are keyed by the code that graded them, here the jar: a grade resumed in the tests'
  * own JVM, which reads the folders, grades again what a tick1 started so had stored.
@@ -62,7 +62,7 @@ public final class Tick1Jvm {
         List<String> asItIs = List.of("-cp", System.getProperty("java.class.path"), MainClass.NAME);
         try {
             Path folder = freshFolder();
-            Runtime.getRuntime().addShutdownHook(new Thread(() -> deleteQuietly(folder)));
+            Runtime.getRuntime().addShutdownHook(new Thread(() -> WorkFolder.delete(folder)));
             String classPath = jarredClassPath(folder.resolve("classes.jar"));
             if (classPath == null) {
                 return asItIs;
@@ -89,10 +89,10 @@ public final class Tick1Jvm {
         try (Stream<Path> folders = Files.list(under)) {
             for (Path old : folders.filter(path -> path.getFileName().toString().startsWith(FOLDER_PREFIX)).toList()) {
                 String pid = old.getFileName().toString().substring(FOLDER_PREFIX.length());
-                boolean ended = !pid.matches("[0-9]{1,18}") || ProcessHandle.of(Long.parseLong(pid)).isEmpty()
-                        || Long.parseLong(pid) == ProcessHandle.current().pid();
-                if (ended) {
-                    deleteQuietly(old);
+                // Another run's while its JVM lives; an ended run's, or this pid's from a run before, goes.
+                if (!pid.matches("[0-9]{1,18}") || ProcessHandle.of(Long.parseLong(pid))
+                        .filter(process -> process.pid() != ProcessHandle.current().pid()).isEmpty()) {
+                    WorkFolder.delete(old);
                 }
             }
         }
@@ -172,13 +172,5 @@ public final class Tick1Jvm {
             }
         }
         return Files.isRegularFile(archive) && Files.size(archive) > 0;
-    }
-
-    private static void deleteQuietly(Path folder) {
-        try (Stream<Path> all = Files.walk(folder)) {
-            all.sorted(Comparator.reverseOrder()).forEach(path -> path.toFile().delete());
-        } catch (IOException | UncheckedIOException e) {
-            // Left in build/, which the next run's freshFolder or a clean removes.
-        }
     }
 }

@@ -53,6 +53,13 @@ final class SystemFiles {
     /** More links than this on the way to one file is a loop. */
     private static final int MOST_LINKS = 40;
 
+    /**
+     * What ldd said of each list of programs in this JVM: their libraries do not change while tick1 runs, and
+     * ldd starts the loader anew for each program, which costs more than the rest of finding the host's files.
+     * A process that makes many sandboxes (the tests' own JVM, running diffs in-process) asks it once.
+     */
+    private static final Map<List<Path>, List<Path>> LOADED_BY = new ConcurrentHashMap<>();
+
     /** A symbolic link of the host's to a folder on the way to a file, made the same in the run's root. */
     record Link(Path at, String target) {
     }
@@ -190,13 +197,6 @@ final class SystemFiles {
         }
         return known;
     }
-
-    /**
-     * What ldd said of each list of programs in this JVM: their libraries do not change while tick1 runs, and
-     * ldd starts the loader anew for each program, which costs more than the rest of finding the host's files.
-     * A process that makes many sandboxes (the tests' own JVM, running diffs in-process) asks it once.
-     */
-    private static final Map<List<Path>, List<Path>> LOADED_BY = new ConcurrentHashMap<>();
 
     /** The libraries ldd says {@code programs} load, as {@link #librariesLoadedBy}, asked anew. */
     private static List<Path> askLdd(List<Path> programs) throws IOException, InterruptedException {
