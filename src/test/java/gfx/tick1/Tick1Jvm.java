@@ -1,6 +1,7 @@
 package gfx.tick1;
 
 import gfx.tick1.command.shared.cli.MainClass;
+import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
 import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import java.io.File;
 import java.io.IOException;
@@ -50,12 +51,22 @@ public final class Tick1Jvm {
     private Tick1Jvm() {
     }
 
-    /** The arguments after the JVM's own options that start tick1: the archive's, the class path and the main class. */
+    /**
+     * The arguments after the JVM's own options that start tick1: the archive's, the class path and the main class;
+     * first, the harness's archive the tests' grades map ({@link HarnessArchiveSession}), when there is one.
+     */
     public static synchronized List<String> mainClass() {
         if (made == null) {
             made = make();
         }
-        return made;
+        String harnessArchive = System.getProperty(StudentProcess.KEPT_ARCHIVE_PROPERTY);
+        if (harnessArchive == null) {
+            return made;
+        }
+        List<String> arguments = new ArrayList<>(List.of("-D" + StudentProcess.KEPT_ARCHIVE_PROPERTY + "="
+                + harnessArchive));
+        arguments.addAll(made);
+        return arguments;
     }
 
     private static List<String> make() {

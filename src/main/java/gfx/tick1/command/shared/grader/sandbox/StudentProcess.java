@@ -18,8 +18,10 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.jar.JarEntry;
@@ -42,6 +44,17 @@ public final class StudentProcess implements AutoCloseable {
             + "<point-light x=\"1\" y=\"1\" colour=\"#FFFFFF\"/><sphere z=\"4\" colour=\"#FF0000\"/></scene>\n";
     /** How long making the shared archive may take. */
     private static final Duration ARCHIVE_TIME_LIMIT = Duration.ofSeconds(60);
+    /**
+     * A folder holding an archive that {@link #withSharedArchive} made, which every confined run then maps: for the
+     * tests, which grade hundreds of times in one run and make one archive for them all. A grade alone would spend
+     * more making one than mapping it saves.
+     */
+    public static final String KEPT_ARCHIVE_PROPERTY = "tick1.grade.harnessArchive";
+    /**
+     * The time of the harness's jar and of its entries: the same for every grade, so that with the same classes
+     * every jar is the same file to Java, which checks a mapped archive's jar by its size and time.
+     */
+    private static final FileTime HARNESS_TIME = FileTime.from(Instant.parse("2000-01-01T00:00:00Z"));
 
     /** What became of one scene. */
     public sealed interface Outcome {
@@ -97,7 +110,16 @@ public final class StudentProcess implements AutoCloseable {
      * {@code memoryMegabytes} of heap.
      */
     public StudentProcess(Sandbox sandbox, Path harness, int memoryMegabytes) {
-        this(new HarnessJvm(sandbox, harness, memoryMegabytes, null), null);
+        this(new HarnessJvm(sandbox, harness, memoryMegabytes, keptArchive(sandbox)), null);
+    }
+
+    /**
+     * The folder named by {@link #KEPT_ARCHIVE_PROPERTY}, for a confined run; otherwise null. Outside a sandbox each
+     * grade's jar is at a path of its own, which an archive made for another jar's never fits.
+     */
+    private static Path keptArchive(Sandbox sandbox) {
+        String folder = System.getProperty(KEPT_ARCHIVE_PROPERTY);
+        return folder == null || !sandbox.isConfined() ? null : Path.of(folder);
     }
 
     private StudentProcess(HarnessJvm jvm, Path compilerFolder) {
@@ -258,13 +280,16 @@ public final class StudentProcess implements AutoCloseable {
                         if (in == null) {
                             throw new IOException("cannot find this program's own class " + file);
                         }
-                        jar.putNextEntry(new JarEntry(file));
+                        JarEntry entry = new JarEntry(file);
+                        entry.setLastModifiedTime(HARNESS_TIME);
+                        jar.putNextEntry(entry);
                         jar.write(in.readAllBytes());
                         jar.closeEntry();
                     }
                 }
             }
         }
+        Files.setLastModifiedTime(folder.resolve(HARNESS_JAR), HARNESS_TIME);
     }
 
     /**

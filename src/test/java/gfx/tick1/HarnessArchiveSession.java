@@ -1,0 +1,88 @@
+package gfx.tick1;
+
+import gfx.tick1.command.shared.grader.sandbox.Leftovers;
+import gfx.tick1.command.shared.grader.sandbox.Sandbox;
+import gfx.tick1.command.shared.grader.sandbox.StudentProcess;
+import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import org.junit.platform.launcher.LauncherSession;
+import org.junit.platform.launcher.LauncherSessionListener;
+
+/**
+ * One class data sharing archive of tick1's harness for the whole test run, as a cohort makes one for its jobs: made
+ * as the tests start, by a sandboxed run of the starter kit ({@link StudentProcess#withSharedArchive}), and named to
+ * every grade through {@link StudentProcess#KEPT_ARCHIVE_PROPERTY}, in the tests' JVM and, through {@link Tick1Jvm},
+ * in the tick1s it starts. The tests grade hundreds of times, and each sandboxed JVM then finds javac's classes and
+ * the harness's already parsed. Where there is no sandbox, or the archive cannot be made, the runs start without
+ * one, as a single grade's do.
+ *
+ * <p>The archive sits in a work folder of tick1's ({@link Leftovers#newWorkFolder}), readable by every user a
+ * cohort's jobs run as; it goes when the tests end, or, when their JVM was killed, with the next grade's leftovers.
+ * Found by the JUnit Platform through {@code META-INF/services}.
+ */
+public final class HarnessArchiveSession implements LauncherSessionListener {
+
+    /** The heap of the run that makes the archive: the compiler's, which the archive's run uses. */
+    private static final int MEMORY_MEGABYTES = 256;
+
+    private Path folder;
+
+    @Override
+    public void launcherSessionOpened(LauncherSession session) {
+        if (System.getProperty(StudentProcess.KEPT_ARCHIVE_PROPERTY) != null) {
+            return;   // named by whoever started this JVM
+        }
+        try {
+            folder = Leftovers.newWorkFolder("grade");
+            Path archive = made(folder);
+            if (archive != null) {
+                System.setProperty(StudentProcess.KEPT_ARCHIVE_PROPERTY, archive.toString());
+            }
+        } catch (IOException e) {
+            // The runs start without an archive.
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    @Override
+    public void launcherSessionClosed(LauncherSession session) {
+        if (folder != null) {
+            System.clearProperty(StudentProcess.KEPT_ARCHIVE_PROPERTY);
+            WorkFolder.delete(folder);
+            folder = null;
+        }
+    }
+
+    /** The folder in {@code folder} that holds the archive, or null where it could not be made. */
+    private static Path made(Path folder) throws IOException, InterruptedException {
+        Sandbox sandbox;
+        try {
+            sandbox = Sandbox.confined();
+        } catch (Sandbox.Unavailable e) {
+            return null;
+        }
+        readableByAll(folder);
+        Path harness = readableByAll(Files.createDirectory(folder.resolve("harness")));
+        StudentProcess.writeHarness(harness);
+        try (var files = Files.list(harness)) {
+            for (Path file : files.toList()) {
+                Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("r--r--r--"));
+            }
+        }
+        Path archive = readableByAll(Files.createDirectory(folder.resolve("archive")));
+        Path run = Files.createDirectory(folder.resolve("run"));
+        StudentProcess process = new StudentProcess(sandbox, harness, MEMORY_MEGABYTES);
+        boolean made = process.withSharedArchive(archive, run) != process;
+        WorkFolder.delete(run);
+        return made ? archive : null;
+    }
+
+    private static Path readableByAll(Path folder) throws IOException {
+        Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));
+        return folder;
+    }
+}
