@@ -14,34 +14,45 @@ import org.junit.platform.launcher.LauncherSessionListener;
 /**
  * One class data sharing archive of tick1's harness for the whole test run, as a cohort makes one for its jobs: made
  * as the tests start, by a sandboxed run of the starter kit ({@link StudentProcess#withSharedArchive}), and named to
- * every grade through {@link StudentProcess#KEPT_ARCHIVE_PROPERTY}, in the tests' JVM and, through {@link Tick1Jvm},
- * in the tick1s it starts. The tests grade hundreds of times, and each sandboxed JVM then finds javac's classes and
- * the harness's already parsed. Where there is no sandbox, or the archive cannot be made, the runs start without
- * one, as a single grade's do.
+ * the grades through {@link StudentProcess#KEPT_ARCHIVE_PROPERTY}: the tests' own, and those of the tick1s that
+ * {@link Tick1Jvm} starts. The tests grade hundreds of times, and each sandboxed JVM then finds javac's classes and
+ * the harness's already parsed. Tick1 started as users start it (the README's commands, the students' jar, VPL's
+ * evaluation) maps none, as a single grade of theirs does not. Where there is no sandbox, or the archive cannot be
+ * made, the runs start without one.
  *
- * <p>The archive sits in a work folder of tick1's ({@link Leftovers#newWorkFolder}), readable by every user a
- * cohort's jobs run as; it goes when the tests end, or, when their JVM was killed, with the next grade's leftovers.
- * Found by the JUnit Platform through {@code META-INF/services}.
+ * <p>Made once per JVM: a test that runs the JUnit Platform itself opens a session of its own inside this one. The
+ * archive sits in a work folder of tick1's ({@link Leftovers#newWorkFolder}), readable by every user a cohort's jobs
+ * run as; it goes when the session that made it ends, or the JVM does, or, when the JVM was killed, with the
+ * leftovers of the next grade. Found by the JUnit Platform through {@code META-INF/services}.
  */
 public final class HarnessArchiveSession implements LauncherSessionListener {
 
     /** The heap of the run that makes the archive: the compiler's, which the archive's run uses. */
     private static final int MEMORY_MEGABYTES = 256;
 
+    /** Whether a session of this JVM has tried to make the archive. */
+    private static boolean tried;
+
+    /** The work folder this session made, or null. */
     private Path folder;
 
     @Override
     public void launcherSessionOpened(LauncherSession session) {
-        if (System.getProperty(StudentProcess.KEPT_ARCHIVE_PROPERTY) != null) {
-            return;   // named by whoever started this JVM
+        synchronized (HarnessArchiveSession.class) {
+            if (tried) {
+                return;
+            }
+            tried = true;
         }
         try {
-            folder = Leftovers.newWorkFolder("grade");
-            Path archive = made(folder);
+            Path made = Leftovers.newWorkFolder("grade");
+            folder = made;
+            Runtime.getRuntime().addShutdownHook(new Thread(() -> WorkFolder.delete(made)));
+            Path archive = archiveIn(made);
             if (archive != null) {
                 System.setProperty(StudentProcess.KEPT_ARCHIVE_PROPERTY, archive.toString());
             }
-        } catch (IOException e) {
+        } catch (IOException | RuntimeException e) {
             // The runs start without an archive.
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -58,7 +69,7 @@ public final class HarnessArchiveSession implements LauncherSessionListener {
     }
 
     /** The folder in {@code folder} that holds the archive, or null where it could not be made. */
-    private static Path made(Path folder) throws IOException, InterruptedException {
+    private static Path archiveIn(Path folder) throws IOException, InterruptedException {
         Sandbox sandbox;
         try {
             sandbox = Sandbox.confined();

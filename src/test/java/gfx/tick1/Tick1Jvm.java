@@ -52,8 +52,8 @@ public final class Tick1Jvm {
     }
 
     /**
-     * The arguments after the JVM's own options that start tick1: the archive's, the class path and the main class;
-     * first, the harness's archive the tests' grades map ({@link HarnessArchiveSession}), when there is one.
+     * The arguments after the test's JVM options that start tick1: the harness's archive that the tests' grades map
+     * ({@link HarnessArchiveSession}), when there is one; this class's archive; the class path and the main class.
      */
     public static synchronized List<String> mainClass() {
         if (made == null) {
@@ -66,7 +66,7 @@ public final class Tick1Jvm {
         List<String> arguments = new ArrayList<>(List.of("-D" + StudentProcess.KEPT_ARCHIVE_PROPERTY + "="
                 + harnessArchive));
         arguments.addAll(made);
-        return arguments;
+        return List.copyOf(arguments);
     }
 
     private static List<String> make() {

@@ -82,10 +82,14 @@ record HarnessJvm(Sandbox sandbox, Path harness, int memoryMegabytes, Path share
         return sandbox.isConfined() ? insideName : folder.toString();
     }
 
-    /** The JVM option that maps the class data sharing archive, when there is one. */
+    /**
+     * The JVM options that map the class data sharing archive, when there is one; silently, as a JVM that cannot
+     * map it starts without it, and a newer Java would say so among what the student's code printed.
+     */
     private List<String> archiveOption() {
         return sharedArchive == null ? List.of()
-                : List.of("-XX:SharedArchiveFile=" + inside(sharedArchive, ARCHIVE) + "/" + SHARED_ARCHIVE);
+                : List.of("-XX:SharedArchiveFile=" + inside(sharedArchive, ARCHIVE) + "/" + SHARED_ARCHIVE,
+                        "-Xlog:cds=off", "-Xlog:cds+dynamic=off");
     }
 
     /** The JVM's command line for {@code request}, as outside the sandbox. */

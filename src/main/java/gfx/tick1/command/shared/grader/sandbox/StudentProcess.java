@@ -23,9 +23,12 @@ import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.jar.JarEntry;
 import java.util.jar.JarOutputStream;
+import java.util.zip.CRC32;
 
 /**
  * Runs {@link StudentHarness} in a JVM of its own inside the {@link Sandbox} ({@link HarnessJvm}), with a
@@ -50,11 +53,9 @@ public final class StudentProcess implements AutoCloseable {
      * more making one than mapping it saves.
      */
     public static final String KEPT_ARCHIVE_PROPERTY = "tick1.grade.harnessArchive";
-    /**
-     * The time of the harness's jar and of its entries: the same for every grade, so that with the same classes
-     * every jar is the same file to Java, which checks a mapped archive's jar by its size and time.
-     */
-    private static final FileTime HARNESS_TIME = FileTime.from(Instant.parse("2000-01-01T00:00:00Z"));
+    /** The earliest time a harness's jar is given ({@link #writeHarness}), and the span of those times, in seconds. */
+    private static final Instant HARNESS_EPOCH = Instant.parse("2000-01-01T00:00:00Z");
+    private static final long HARNESS_TIMES = 20L * 365 * 24 * 60 * 60;
 
     /** What became of one scene. */
     public sealed interface Outcome {
@@ -118,8 +119,8 @@ public final class StudentProcess implements AutoCloseable {
      * grade's jar is at a path of its own, which an archive made for another jar's never fits.
      */
     private static Path keptArchive(Sandbox sandbox) {
-        String folder = System.getProperty(KEPT_ARCHIVE_PROPERTY);
-        return folder == null || !sandbox.isConfined() ? null : Path.of(folder);
+        String folder = System.getProperty(KEPT_ARCHIVE_PROPERTY, "");
+        return folder.isBlank() || !sandbox.isConfined() ? null : Path.of(folder);
     }
 
     private StudentProcess(HarnessJvm jvm, Path compilerFolder) {
@@ -272,24 +273,38 @@ public final class StudentProcess implements AutoCloseable {
      * the student's code to use). A jar, not a folder, as Java's class data sharing needs one.
      */
     public static void writeHarness(Path folder) throws IOException {
-        try (JarOutputStream jar = new JarOutputStream(Files.newOutputStream(folder.resolve(HARNESS_JAR)))) {
-            for (Class<?> top : StudentHarness.CLASSES) {
-                for (Class<?> type : top.getNestMembers()) {
-                    String file = type.getName().replace('.', '/') + ".class";
-                    try (InputStream in = type.getResourceAsStream("/" + file)) {
-                        if (in == null) {
-                            throw new IOException("cannot find this program's own class " + file);
-                        }
-                        JarEntry entry = new JarEntry(file);
-                        entry.setLastModifiedTime(HARNESS_TIME);
-                        jar.putNextEntry(entry);
-                        jar.write(in.readAllBytes());
-                        jar.closeEntry();
+        Map<String, byte[]> classes = new LinkedHashMap<>();
+        CRC32 checksum = new CRC32();
+        for (Class<?> top : StudentHarness.CLASSES) {
+            for (Class<?> type : top.getNestMembers()) {
+                String file = type.getName().replace('.', '/') + ".class";
+                try (InputStream in = type.getResourceAsStream("/" + file)) {
+                    if (in == null) {
+                        throw new IOException("cannot find this program's own class " + file);
                     }
+                    byte[] bytes = in.readAllBytes();
+                    classes.put(file, bytes);
+                    checksum.update(file.getBytes(StandardCharsets.UTF_8));
+                    checksum.update(bytes);
                 }
             }
         }
-        Files.setLastModifiedTime(folder.resolve(HARNESS_JAR), HARNESS_TIME);
+        // Java checks a mapped archive's jar by its size and its time in seconds alone. A time that follows from
+        // the classes makes every jar of the same classes the same file to it, grade after grade, so that one
+        // archive serves them all (the tests', StudentProcess#KEPT_ARCHIVE_PROPERTY), and a jar of other classes,
+        // all but surely, another file, whose stale archive Java then refuses.
+        FileTime time = FileTime.from(HARNESS_EPOCH.plusSeconds(checksum.getValue() % HARNESS_TIMES));
+        Path jarFile = folder.resolve(HARNESS_JAR);
+        try (JarOutputStream jar = new JarOutputStream(Files.newOutputStream(jarFile))) {
+            for (Map.Entry<String, byte[]> file : classes.entrySet()) {
+                JarEntry entry = new JarEntry(file.getKey());
+                entry.setLastModifiedTime(time);
+                jar.putNextEntry(entry);
+                jar.write(file.getValue());
+                jar.closeEntry();
+            }
+        }
+        Files.setLastModifiedTime(jarFile, time);
     }
 
     /**

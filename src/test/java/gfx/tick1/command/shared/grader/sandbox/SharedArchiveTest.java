@@ -12,6 +12,7 @@ import java.nio.file.attribute.FileTime;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -57,7 +58,8 @@ class SharedArchiveTest {
         Path jar = harness.resolve(HarnessJvm.HARNESS_JAR);
         Path archive = dir.resolve(HarnessJvm.SHARED_ARCHIVE);
         StudentProcess.writeHarness(harness);
-        // The harness with no arguments loads its classes and exits; the archive is written as the JVM ends.
+        // The harness with no arguments stops at the first it reads, having loaded its class from the jar; the
+        // archive is written as the JVM ends, and names the jar.
         java("-XX:ArchiveClassesAtExit=" + archive, "-Xlog:cds=off", "-cp", jar.toString(),
                 StudentHarness.class.getName());
         assertThat(archive).as("the archive made with the first jar").isRegularFile();
@@ -83,9 +85,16 @@ class SharedArchiveTest {
         List<String> command = new ArrayList<>(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString()));
         command.addAll(List.of(arguments));
-        Process process = new ProcessBuilder(command).redirectErrorStream(true)
+        Path output = dir.resolve("java.txt");
+        Process process = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(output.toFile())
                 .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null"))).start();
-        String printed = new String(process.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        return new Run(process.waitFor(), printed);
+        // Not a timing check: a bound on how long to wait for a JVM that may hang.
+        boolean ended = process.waitFor(2, TimeUnit.MINUTES);
+        if (!ended) {
+            process.destroyForcibly().waitFor();
+        }
+        String printed = Files.readString(output, StandardCharsets.UTF_8);
+        assertThat(ended).as("java %s ended; it printed:%n%s", command, printed).isTrue();
+        return new Run(process.exitValue(), printed);
     }
 }
