@@ -16,14 +16,16 @@ import org.junit.platform.launcher.LauncherSessionListener;
  * as the tests start, by a sandboxed run of the starter kit ({@link StudentProcess#withSharedArchive}), and named to
  * the grades through {@link StudentProcess#KEPT_ARCHIVE_PROPERTY}: the tests' own, and those of the tick1s that
  * {@link Tick1Jvm} starts. The tests grade hundreds of times, and each sandboxed JVM then finds javac's classes and
- * the harness's already parsed. Tick1 started as users start it (the README's commands, the students' jar, VPL's
- * evaluation) maps none, as a single grade of theirs does not. Where there is no sandbox, or the archive cannot be
- * made, the runs start without one.
+ * the harness's already parsed. A tick1 started as users start it (the README's student commands, VPL's evaluation)
+ * or from the class path (the cohort tests that stop and resume a grade, the grades as another user) maps none, as a
+ * user's single grade does not. Where there is no sandbox, or the archive cannot be made, the runs start without
+ * one.
  *
- * <p>Made once per JVM: a test that runs the JUnit Platform itself opens a session of its own inside this one. The
- * archive sits in a work folder of tick1's ({@link Leftovers#newWorkFolder}), readable by every user a cohort's jobs
- * run as; it goes when the session that made it ends, or the JVM does, or, when the JVM was killed, with the
- * leftovers of the next grade. Found by the JUnit Platform through {@code META-INF/services}.
+ * <p>Made once per JVM, and kept while it runs: a test that runs the JUnit Platform itself opens a session of its own
+ * inside the run's, and a runner may open one session after another. The archive sits in a work folder of tick1's
+ * ({@link Leftovers#newWorkFolder}), readable by every user a cohort's jobs run as; it goes when the JVM ends, or,
+ * when the JVM was killed, with the leftovers of the next grade. Found by the JUnit Platform through
+ * {@code META-INF/services}.
  */
 public final class HarnessArchiveSession implements LauncherSessionListener {
 
@@ -33,22 +35,19 @@ public final class HarnessArchiveSession implements LauncherSessionListener {
     /** Whether a session of this JVM has tried to make the archive. */
     private static boolean tried;
 
-    /** The work folder this session made, or null. */
-    private Path folder;
-
     @Override
     public void launcherSessionOpened(LauncherSession session) {
         synchronized (HarnessArchiveSession.class) {
-            if (tried) {
+            // Once; and not where whoever started the JVM named an archive, or none (a blank name).
+            if (tried || System.getProperty(StudentProcess.KEPT_ARCHIVE_PROPERTY) != null) {
                 return;
             }
             tried = true;
         }
         try {
-            Path made = Leftovers.newWorkFolder("grade");
-            folder = made;
-            Runtime.getRuntime().addShutdownHook(new Thread(() -> WorkFolder.delete(made)));
-            Path archive = archiveIn(made);
+            Path folder = Leftovers.newWorkFolder("grade");
+            Runtime.getRuntime().addShutdownHook(new Thread(() -> WorkFolder.delete(folder)));
+            Path archive = archiveIn(folder);
             if (archive != null) {
                 System.setProperty(StudentProcess.KEPT_ARCHIVE_PROPERTY, archive.toString());
             }
@@ -56,15 +55,6 @@ public final class HarnessArchiveSession implements LauncherSessionListener {
             // The runs start without an archive.
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-        }
-    }
-
-    @Override
-    public void launcherSessionClosed(LauncherSession session) {
-        if (folder != null) {
-            System.clearProperty(StudentProcess.KEPT_ARCHIVE_PROPERTY);
-            WorkFolder.delete(folder);
-            folder = null;
         }
     }
 

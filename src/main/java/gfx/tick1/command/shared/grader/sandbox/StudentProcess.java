@@ -23,12 +23,12 @@ import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.jar.JarEntry;
 import java.util.jar.JarOutputStream;
-import java.util.zip.CRC32;
 
 /**
  * Runs {@link StudentHarness} in a JVM of its own inside the {@link Sandbox} ({@link HarnessJvm}), with a
@@ -53,8 +53,12 @@ public final class StudentProcess implements AutoCloseable {
      * more making one than mapping it saves.
      */
     public static final String KEPT_ARCHIVE_PROPERTY = "tick1.grade.harnessArchive";
-    /** The earliest time a harness's jar is given ({@link #writeHarness}), and the span of those times, in seconds. */
+    /** The earliest time a harness's jar is given ({@link #writeHarness}). */
     private static final Instant HARNESS_EPOCH = Instant.parse("2000-01-01T00:00:00Z");
+    /**
+     * How many seconds after {@link #HARNESS_EPOCH} a harness's jar may be given: twenty years, which keeps every
+     * such time in the past and within what a zip entry's date and a 32-bit time in seconds can hold.
+     */
     private static final long HARNESS_TIMES = 20L * 365 * 24 * 60 * 60;
 
     /** What became of one scene. */
@@ -115,8 +119,9 @@ public final class StudentProcess implements AutoCloseable {
     }
 
     /**
-     * The folder named by {@link #KEPT_ARCHIVE_PROPERTY}, for a confined run; otherwise null. Outside a sandbox each
-     * grade's jar is at a path of its own, which an archive made for another jar's never fits.
+     * The folder named by {@link #KEPT_ARCHIVE_PROPERTY}, for a confined run; otherwise, or when the property is
+     * blank, null. Outside a sandbox each grade's jar is at a path of its own, which an archive made for another
+     * jar's never fits.
      */
     private static Path keptArchive(Sandbox sandbox) {
         String folder = System.getProperty(KEPT_ARCHIVE_PROPERTY, "");
@@ -274,7 +279,7 @@ public final class StudentProcess implements AutoCloseable {
      */
     public static void writeHarness(Path folder) throws IOException {
         Map<String, byte[]> classes = new LinkedHashMap<>();
-        CRC32 checksum = new CRC32();
+        int hash = 0;
         for (Class<?> top : StudentHarness.CLASSES) {
             for (Class<?> type : top.getNestMembers()) {
                 String file = type.getName().replace('.', '/') + ".class";
@@ -284,16 +289,15 @@ public final class StudentProcess implements AutoCloseable {
                     }
                     byte[] bytes = in.readAllBytes();
                     classes.put(file, bytes);
-                    checksum.update(file.getBytes(StandardCharsets.UTF_8));
-                    checksum.update(bytes);
+                    hash = 31 * (31 * hash + file.hashCode()) + Arrays.hashCode(bytes);
                 }
             }
         }
         // Java checks a mapped archive's jar by its size and its time in seconds alone. A time that follows from
-        // the classes makes every jar of the same classes the same file to it, grade after grade, so that one
-        // archive serves them all (the tests', StudentProcess#KEPT_ARCHIVE_PROPERTY), and a jar of other classes,
-        // all but surely, another file, whose stale archive Java then refuses.
-        FileTime time = FileTime.from(HARNESS_EPOCH.plusSeconds(checksum.getValue() % HARNESS_TIMES));
+        // the classes (a hash of their names and bytes) makes every jar of the same classes the same file to it,
+        // grade after grade, so that one archive serves them all (the tests', KEPT_ARCHIVE_PROPERTY), and a jar of
+        // other classes, all but surely, another file, whose stale archive Java then refuses.
+        FileTime time = FileTime.from(HARNESS_EPOCH.plusSeconds(Integer.toUnsignedLong(hash) % HARNESS_TIMES));
         Path jarFile = folder.resolve(HARNESS_JAR);
         try (JarOutputStream jar = new JarOutputStream(Files.newOutputStream(jarFile))) {
             for (Map.Entry<String, byte[]> file : classes.entrySet()) {

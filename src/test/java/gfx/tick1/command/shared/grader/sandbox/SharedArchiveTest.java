@@ -58,8 +58,8 @@ class SharedArchiveTest {
         Path jar = harness.resolve(HarnessJvm.HARNESS_JAR);
         Path archive = dir.resolve(HarnessJvm.SHARED_ARCHIVE);
         StudentProcess.writeHarness(harness);
-        // The harness with no arguments stops at the first it reads, having loaded its class from the jar; the
-        // archive is written as the JVM ends, and names the jar.
+        // The harness, given no arguments, fails as it reads the first (its exit status is not checked), its class
+        // loaded from the jar by then; the archive is written as the JVM ends, and names the jar.
         java("-XX:ArchiveClassesAtExit=" + archive, "-Xlog:cds=off", "-cp", jar.toString(),
                 StudentHarness.class.getName());
         assertThat(archive).as("the archive made with the first jar").isRegularFile();
