@@ -7,7 +7,6 @@ import gfx.tick1.command.shared.grader.sandbox.WorkFolder;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.attribute.PosixFilePermissions;
 import org.junit.platform.launcher.LauncherSession;
 import org.junit.platform.launcher.LauncherSessionListener;
 
@@ -66,24 +65,16 @@ public final class HarnessArchiveSession implements LauncherSessionListener {
         } catch (Sandbox.Unavailable e) {
             return null;
         }
-        readableByAll(folder);
-        Path harness = readableByAll(Files.createDirectory(folder.resolve("harness")));
+        WorkFolder.readableByAll(folder);   // empty yet: only the folder itself
+        Path harness = Files.createDirectory(folder.resolve("harness"));
         StudentProcess.writeHarness(harness);
-        try (var files = Files.list(harness)) {
-            for (Path file : files.toList()) {
-                Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("r--r--r--"));
-            }
-        }
-        Path archive = readableByAll(Files.createDirectory(folder.resolve("archive")));
+        WorkFolder.readableByAll(harness);
+        Path archive = Files.createDirectory(folder.resolve("archive"));
         Path run = Files.createDirectory(folder.resolve("run"));
         StudentProcess process = new StudentProcess(sandbox, harness, MEMORY_MEGABYTES);
         boolean made = process.withSharedArchive(archive, run) != process;
         WorkFolder.delete(run);
+        WorkFolder.readableByAll(archive);
         return made ? archive : null;
-    }
-
-    private static Path readableByAll(Path folder) throws IOException {
-        Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));
-        return folder;
     }
 }

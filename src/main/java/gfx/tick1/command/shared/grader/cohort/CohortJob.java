@@ -12,7 +12,6 @@ import java.io.PrintWriter;
 import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.attribute.PosixFilePermissions;
 
 /**
  * One job: a folder, a sandbox user and a process of its own, made when it first grades, with
@@ -124,7 +123,7 @@ final class CohortJob {
             throws IOException, InterruptedException {
         Path harness = Files.createDirectory(work.resolve("harness"));
         StudentProcess.writeHarness(harness);
-        readableByAll(harness);
+        WorkFolder.readableByAll(harness);
         StudentProcess process = new StudentProcess(cohort.sandbox.forJob(0), harness,
                 cohort.grading.limits().memoryMegabytes());
         if (submissions < ARCHIVE_PAYS_FROM) {
@@ -140,16 +139,7 @@ final class CohortJob {
             cohort.ended(process);
             WorkFolder.delete(archiveWork);
         }
-        readableByAll(archive);
+        WorkFolder.readableByAll(archive);
         return withArchive;
-    }
-
-    private static void readableByAll(Path folder) throws IOException {
-        Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));
-        try (var files = Files.list(folder)) {
-            for (Path file : files.toList()) {
-                Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("r--r--r--"));
-            }
-        }
     }
 }

@@ -42,6 +42,19 @@ public final class WorkFolder {
     }
 
     /**
+     * Lets every user read {@code folder} and the files in it, and none write those files: for the harness's jar
+     * and its archive, which the runs of other users (a cohort's jobs) read.
+     */
+    public static void readableByAll(Path folder) throws IOException {
+        Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));
+        try (var files = Files.list(folder)) {
+            for (Path file : files.toList()) {
+                Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("r--r--r--"));
+            }
+        }
+    }
+
+    /**
      * Deletes {@code folder} and everything in it, following no link, and whatever the student's
      * process did to the permissions of what it wrote. Never throws: it runs on the way out,
      * Ctrl-C and SIGTERM included; it may run twice at once (the shutdown hook and the command).

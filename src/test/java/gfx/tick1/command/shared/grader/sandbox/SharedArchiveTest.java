@@ -39,9 +39,7 @@ class SharedArchiveTest {
         Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwx--x--x"));
         Path harness = Files.createDirectory(dir.resolve("harness"));
         StudentProcess.writeHarness(harness);
-        Files.setPosixFilePermissions(harness, PosixFilePermissions.fromString("rwxr-xr-x"));
-        Files.setPosixFilePermissions(harness.resolve(HarnessJvm.HARNESS_JAR),
-                PosixFilePermissions.fromString("r--r--r--"));
+        WorkFolder.readableByAll(harness);
         Path archive = Files.createDirectory(dir.resolve("archive"));
         StudentProcess process = new StudentProcess(sandbox, harness, 512);
 
