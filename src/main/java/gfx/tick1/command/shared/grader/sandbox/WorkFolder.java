@@ -43,7 +43,8 @@ public final class WorkFolder {
 
     /**
      * Lets every user read {@code folder} and the files in it, and none write those files: for the harness's jar
-     * and its archive, which the runs of other users (a cohort's jobs) read.
+     * and its archive, which the runs of other users (a cohort's jobs) read. Only for a folder that tick1 alone wrote,
+     * of files and nothing secret: it follows links, and a folder inside would become one nobody can enter.
      */
     public static void readableByAll(Path folder) throws IOException {
         Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));
